@@ -1,0 +1,174 @@
+#pragma once
+// The abstract syntax tree: our own plain types, built from the ANTLR parse
+// tree by compiler/parse and read by compiler/sema. Nothing here knows ANTLR.
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "diag/source.hpp"
+
+namespace g2d::ast {
+
+struct Ident {
+    std::string name;
+    Span span;
+};
+
+// ---- expressions -----------------------------------------------------------
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+
+enum class UnaryOp { Neg, Plus, Not };
+enum class BinaryOp { Add, Sub, Mul, Div, Mod, Lt, Le, Gt, Ge, Eq, Ne, And, Or };
+
+struct IntLit { long long value; bool overflow = false; };
+struct FloatLit { double value; };
+struct StringLit { std::string value; };
+struct BoolLit { bool value; };
+struct Name { std::string name; };
+struct Member { ExprPtr object; Ident member; };
+struct Call { Ident callee; std::vector<ExprPtr> args; };
+struct VecLit { ExprPtr x, y; };
+struct Unary { UnaryOp op; ExprPtr operand; };
+struct Binary { BinaryOp op; ExprPtr lhs, rhs; Span opSpan; };
+struct Conditional { ExprPtr cond, then, otherwise; };
+
+struct Expr {
+    Span span;
+    std::variant<IntLit, FloatLit, StringLit, BoolLit, Name, Member, Call, VecLit, Unary, Binary,
+                 Conditional> node;
+};
+
+struct TypeRef {
+    Ident name;
+};
+
+// ---- graphs ----------------------------------------------------------------
+struct Assignment {
+    bool isStyle = false;     // `style.NAME = expr`
+    Ident name;
+    ExprPtr value;
+};
+
+struct Sketch {
+    double x = 0, y = 0;
+    Span span;
+};
+
+// `name: Kind @ (x, y) at expr { a = 1 } where cond;`
+struct NodeStmt {
+    Ident name;
+    std::optional<Ident> kind;      // absent: refers to an existing element
+    bool wildcard = false;          // `name: *`
+    Span kindSpan;
+    std::optional<Sketch> sketch;
+    ExprPtr position;               // `at expr`
+    std::vector<Assignment> assigns;
+    bool hasAssignBlock = false;
+    ExprPtr where;
+    Span span;
+};
+
+// `name: a -[Kind {..}]-> b where cond;`
+struct EdgeStmt {
+    std::optional<Ident> name;
+    Ident src, dst;
+    Ident kind;
+    enum class Arrow { Forward, Backward, Undirected } arrow = Arrow::Forward;
+    std::vector<Assignment> assigns;
+    ExprPtr where;
+    Span span;
+};
+
+struct GraphStmt {
+    std::variant<NodeStmt, EdgeStmt> stmt;
+};
+
+struct MatchStmt;
+struct WhereStmt { ExprPtr cond; Span span; };
+struct NacBlock { std::vector<MatchStmt> body; Span span; };
+struct MatchStmt {
+    std::variant<GraphStmt, WhereStmt, NacBlock> stmt;
+};
+
+struct LetStmt {
+    Ident name;
+    std::optional<TypeRef> type;
+    ExprPtr value;
+    Span span;
+};
+
+struct ProduceStmt {
+    std::variant<LetStmt, GraphStmt> stmt;
+};
+
+struct ProduceBlock {
+    ExprPtr weight;                 // absent: 1
+    std::vector<ProduceStmt> body;
+    Span span;
+};
+
+struct RuleItem {
+    std::variant<LetStmt, ProduceBlock> item;
+};
+
+struct RuleOption {
+    enum class Kind { Priority, Pick, Ordered, Parallel } kind;
+    long long priority = 0;
+    Ident pick;
+    Span span;
+};
+
+struct RuleDecl {
+    Ident name;
+    std::vector<RuleOption> options;
+    std::vector<MatchStmt> match;
+    Span matchSpan;
+    std::vector<RuleItem> items;
+    Span span;
+};
+
+// ---- declarations ----------------------------------------------------------
+struct ImportDecl { std::string path; Span span; };
+struct ParamDecl { Ident name; TypeRef type; ExprPtr value; Span span; };
+struct ConstDecl { Ident name; std::optional<TypeRef> type; ExprPtr value; Span span; };
+struct EnumDecl { Ident name; std::vector<Ident> values; Span span; };
+struct FnParam { Ident name; TypeRef type; };
+struct FnDecl { Ident name; std::vector<FnParam> params; TypeRef result; ExprPtr body; Span span; };
+
+struct AttrDecl { Ident name; TypeRef type; ExprPtr value; Span span; };
+struct StyleProp { Ident name; ExprPtr value; Span span; };
+struct KindDecl {
+    bool isEdge = false;
+    std::optional<bool> directed;   // edges: `directed` / `undirected` / unspecified
+    Ident name;
+    std::vector<AttrDecl> attrs;
+    std::vector<StyleProp> style;
+    Span span;
+};
+
+struct AxiomDecl { std::vector<GraphStmt> body; Span span; };
+struct LimitDecl { ExprPtr value; Span span; };
+struct PriorityDecl {
+    long long priority = 0;
+    Span prioritySpan;
+    ExprPtr limit;
+    bool parallel = false;
+    Span span;
+};
+struct DefsDecl { std::string svg; Span span; };
+
+struct Decl {
+    std::variant<ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
+                 PriorityDecl, DefsDecl, RuleDecl> decl;
+};
+
+// One parsed file.
+struct Program {
+    FileId file = kNoFile;
+    std::vector<Decl> decls;
+};
+
+}  // namespace g2d::ast

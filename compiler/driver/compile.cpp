@@ -1,0 +1,58 @@
+#include "driver/compile.hpp"
+
+#include <filesystem>
+
+#include "parse/parser.hpp"
+#include "sema/sema.hpp"
+
+namespace g2d {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::optional<ir::Program> analyzeAll(const std::vector<ast::Program>& imported, const ast::Program* main,
+                                      Diagnostics& diags) {
+    std::vector<const ast::Program*> ptrs;
+    for (const auto& p : imported) ptrs.push_back(&p);
+    if (main) ptrs.push_back(main);
+    return analyze(ptrs, diags);
+}
+
+}  // namespace
+
+CompileResult compileFile(const std::string& path, const LoadOptions& options) {
+    CompileResult r;
+    std::vector<ast::Program> programs;
+    if (loadGrammar(path, options, r.sources, r.diags, programs)) r.program = analyzeAll(programs, nullptr, r.diags);
+    return r;
+}
+
+CompileResult compileSource(const std::string& path, const std::string& text, const LoadOptions& options) {
+    CompileResult r;
+    FileId id = r.sources.add(path, text);
+    auto main = parseFile(r.sources, id, r.diags);
+    if (!main) return r;
+    std::vector<ast::Program> imported;
+    bool ok = true;
+    for (const auto& d : main->decls) {
+        const auto* imp = std::get_if<ast::ImportDecl>(&d.decl);
+        if (!imp) continue;
+        std::vector<fs::path> candidates = {fs::path(path).parent_path() / imp->path};
+        for (const auto& dir : options.importDirs) candidates.push_back(fs::path(dir) / imp->path);
+        std::string resolved;
+        std::error_code ec;
+        for (const auto& c : candidates)
+            if (resolved.empty() && fs::exists(c, ec)) resolved = c.string();
+        if (resolved.empty()) {
+            r.diags.error(imp->span, "cannot find imported file `" + imp->path + "`");
+            ok = false;
+            continue;
+        }
+        ok = loadGrammar(resolved, options, r.sources, r.diags, imported) && ok;
+    }
+    if (ok) r.program = analyzeAll(imported, &*main, r.diags);
+    return r;
+}
+
+}  // namespace g2d

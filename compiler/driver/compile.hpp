@@ -1,0 +1,23 @@
+#pragma once
+// The whole front end for one grammar file: load, parse, analyse.
+#include <optional>
+#include <string>
+
+#include "diag/diagnostic.hpp"
+#include "driver/loader.hpp"
+#include "ir/ir.hpp"
+
+namespace g2d {
+
+struct CompileResult {
+    SourceManager sources;
+    Diagnostics diags;
+    std::optional<ir::Program> program;   // present when there are no errors
+};
+
+CompileResult compileFile(const std::string& path, const LoadOptions& options);
+// For tests and editors: compiles source text given directly (imports resolve
+// relative to `path`'s folder).
+CompileResult compileSource(const std::string& path, const std::string& text, const LoadOptions& options);
+
+}  // namespace g2d

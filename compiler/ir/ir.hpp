@@ -1,0 +1,312 @@
+#pragma once
+// The typed intermediate representation: the contract between the front end
+// (compiler/sema) and both back ends (the interpreter and the C++ emitter).
+// Plain data: names are resolved to indices, every expression carries its type.
+//
+// Graph elements are addressed by (ElemClass, index) so that faces (and 3D
+// volumes) can join nodes and edges later without changing the addressing.
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "diag/source.hpp"
+
+namespace g2d::ir {
+
+// ---- types and values --------------------------------------------------------
+enum class TypeKind { Int, Float, Bool, String, Vec2, Enum, Void };
+
+struct Type {
+    TypeKind kind = TypeKind::Void;
+    int enumId = -1;  // for Enum
+    static Type of(TypeKind k) { return Type{k, -1}; }
+    static Type enumeration(int id) { return Type{TypeKind::Enum, id}; }
+    bool operator==(const Type&) const = default;
+    bool isNumeric() const { return kind == TypeKind::Int || kind == TypeKind::Float; }
+};
+
+struct Vec2 {
+    double x = 0, y = 0;
+    bool operator==(const Vec2&) const = default;
+};
+
+struct EnumValue {
+    int enumId = -1;
+    int index = -1;
+    bool operator==(const EnumValue&) const = default;
+};
+
+using Value = std::variant<long long, double, bool, std::string, Vec2, EnumValue>;
+
+// ---- elements ------------------------------------------------------------------
+enum class ElemClass { Node, Edge };
+
+struct ElemRef {
+    ElemClass cls = ElemClass::Node;
+    int index = -1;
+    bool operator==(const ElemRef&) const = default;
+    bool operator<(const ElemRef& o) const {
+        return cls != o.cls ? cls < o.cls : index < o.index;
+    }
+};
+
+// Facts every element has, besides its declared attributes.
+enum class ElemFact { Pos, Age, Id, Degree, InDegree, OutDegree };
+
+// ---- expressions -----------------------------------------------------------------
+enum class Builtin {
+    // math
+    Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Min, Max, Floor, Ceil, Round, Pow, Exp, Log,
+    Clamp, Sign, Radians, Degrees, Hypot,
+    // vectors
+    MakeVec2, Dot, Cross, Length, Distance, Normalize, PerpLeft, PerpRight, Rotate, RotateAround,
+    Angle, AngleBetween, Lerp,
+    // conversions and strings
+    ToInt, ToFloat, ToStr, Format,
+    // randomness (drawn from the run's generator)
+    Random, Uniform, RandInt, Choice, Normal,
+};
+
+enum class ExprOp {
+    Literal,     // value
+    Param,       // index into Program::params
+    Const,       // index into Program::consts
+    Local,       // index into the rule's local slots (lets)
+    FnArg,       // index into the enclosing function's parameters
+    Attr,        // elem, index = attribute of elem's kind
+    SelfAttr,    // index = attribute of the element being styled (kind style expressions)
+    Fact,        // elem, fact
+    VecX, VecY,  // args[0]
+    Neg, Not,
+    Add, Sub, Mul, Div, Mod, Lt, Le, Gt, Ge, Eq, Ne, And, Or,
+    Cond,        // args: cond, then, else
+    Call,        // builtin, args
+    CallFn,      // index into Program::functions, args
+};
+
+struct Expr {
+    ExprOp op = ExprOp::Literal;
+    Type type;
+    Span span;
+    Value value;             // Literal
+    int index = -1;          // Param / Const / Local / FnArg / Attr / SelfAttr / CallFn
+    ElemRef elem;            // Attr / Fact
+    ElemFact fact = ElemFact::Pos;
+    Builtin builtin = Builtin::Sin;
+    std::vector<Expr> args;
+};
+
+// ---- declarations ------------------------------------------------------------------
+struct Enum {
+    std::string name;
+    std::vector<std::string> values;
+};
+
+struct Attribute {
+    std::string name;
+    Type type;
+    Expr defaultValue;   // constant: literals, params, consts (no randomness, no elements)
+    Span span;
+};
+
+struct StyleProp {
+    std::string name;    // SVG attribute with `_` for `-`, or a g2d property (tag, r, ...)
+    Expr value;          // may read the element's own attributes (SelfAttr) and facts
+    Span span;
+};
+
+struct Kind {
+    std::string name;
+    ElemClass cls = ElemClass::Node;
+    bool directed = false;             // edges
+    std::vector<Attribute> attrs;
+    std::vector<StyleProp> style;      // defaults for how elements of this kind are drawn
+    Span span;
+};
+
+struct Param {
+    std::string name;
+    Type type;
+    Value defaultValue;
+    Span span;
+};
+
+struct Const {
+    std::string name;
+    Type type;
+    Expr value;                        // evaluated once per run, in declaration order
+    std::optional<Value> folded;       // known at compile time (no params, no randomness)
+    Span span;
+};
+
+struct Function {
+    std::string name;
+    std::vector<std::string> paramNames;
+    std::vector<Type> paramTypes;
+    Type result;
+    Expr body;
+    Span span;
+};
+
+// ---- graphs --------------------------------------------------------------------------
+struct AttrAssign {
+    int attr = -1;                     // index in the kind's attributes
+    Expr value;
+};
+
+struct StyleAssign {
+    std::string prop;
+    Expr value;
+};
+
+struct AxiomNode {
+    std::string name;
+    int kind = -1;
+    std::optional<Expr> position;      // default (0, 0)
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
+struct AxiomEdge {
+    std::string name;
+    int kind = -1;
+    int src = -1, dst = -1;            // axiom node indices
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
+struct Axiom {
+    std::vector<AxiomNode> nodes;
+    std::vector<AxiomEdge> edges;
+    Span span;
+};
+
+// A node of a mother graph (or of a negative condition).
+struct PatternNode {
+    std::string name;
+    int kind = -1;                     // -1: wildcard, matches any node and is left unchanged
+    std::optional<Vec2> sketch;        // drawing position (ordering, automatic placement)
+    Span span;
+};
+
+struct PatternEdge {
+    std::string name;                  // "" when anonymous
+    int kind = -1;
+    int src = -1, dst = -1;            // node indices; for undirected kinds either orientation matches
+    Span span;
+};
+
+struct Condition {
+    Expr expr;
+    std::vector<ElemRef> deps;         // the pattern elements it reads
+};
+
+// One step of a search plan: bind one more pattern element, or test.
+struct PlanStep {
+    enum class Op {
+        ScanNodes,    // node := each host node of its kind (or any node for a wildcard)
+        ExtendEdge,   // edge := each edge incident to bound node `from`; node := its other end
+        ConnectEdge,  // edge := each edge between two bound nodes
+        Check,        // evaluate conditions[condition]
+    } op = Op::ScanNodes;
+    int node = -1;
+    int edge = -1;
+    int from = -1;
+    bool fromIsSource = true;          // ExtendEdge: `from` is the edge's source
+    int condition = -1;
+};
+
+struct NegativeCondition {
+    // Indices continue after the enclosing match's: node outerNodes+i is nodes[i].
+    int outerNodes = 0, outerEdges = 0;
+    std::vector<PatternNode> nodes;
+    std::vector<PatternEdge> edges;
+    std::vector<Condition> conditions;
+    std::vector<PlanStep> plan;
+    Span span;
+};
+
+struct Let {
+    int slot = -1;
+    std::string name;
+    Expr value;
+};
+
+struct DaughterNode {
+    std::string name;
+    int motherNode = -1;               // kept mother node, or -1 for a new node
+    int kind = -1;                     // -1 only for a kept wildcard
+    std::optional<Expr> position;      // `at`; new nodes without it are placed automatically
+    std::optional<Vec2> sketch;
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
+struct DaughterEdge {
+    std::string name;
+    int motherEdge = -1;               // kept mother edge, or -1 for a new edge
+    int kind = -1;
+    int src = -1, dst = -1;            // daughter node indices
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
+struct Daughter {
+    std::optional<Expr> weightExpr;    // absent: weight 1
+    std::optional<double> weight;      // known at compile time
+    std::vector<Let> lets;
+    std::vector<DaughterNode> nodes;
+    std::vector<DaughterEdge> edges;
+    std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges go too)
+    std::vector<int> deletedEdges;     // mother edges not kept
+    bool autoPlacement = false;        // some new node is placed automatically
+    Span span;
+};
+
+enum class Pick { Random, Oldest };
+
+struct Rule {
+    std::string name;
+    long long priority = 0;
+    Pick pick = Pick::Random;
+    bool ordered = false;              // the match keeps the x and y order of the sketch
+    bool parallel = false;
+    std::vector<PatternNode> nodes;
+    std::vector<PatternEdge> edges;
+    std::vector<Condition> conditions;
+    std::vector<PlanStep> plan;
+    std::vector<NegativeCondition> nacs;
+    std::vector<Let> lets;             // evaluated once per application, before the daughter's
+    std::vector<Daughter> daughters;
+    int localSlots = 0;
+    Span span;
+};
+
+struct PriorityConfig {
+    std::optional<Expr> limit;
+    bool parallel = false;
+    Span span;
+};
+
+struct Program {
+    std::vector<Enum> enums;
+    std::vector<Kind> kinds;
+    std::vector<Param> params;
+    std::vector<Const> consts;
+    std::vector<Function> functions;
+    Axiom axiom;
+    std::optional<Expr> stepLimit;
+    std::map<long long, PriorityConfig> priorities;
+    std::vector<std::string> svgDefs;
+    std::vector<Rule> rules;
+};
+
+std::string typeName(const Type& t, const Program& p);
+
+}  // namespace g2d::ir

@@ -1,0 +1,322 @@
+#include "parse/ast_builder.hpp"
+
+#include <cstdlib>
+
+namespace g2d {
+
+namespace {
+
+using namespace ast;
+using P = G2dParser;
+
+std::uint32_t codePoints(const std::string& s) {
+    std::uint32_t n = 0;
+    for (unsigned char c : s)
+        if ((c & 0xC0) != 0x80) ++n;
+    return n;
+}
+
+// Unescapes a string literal's body (without the quotes).
+std::string unescape(const std::string& quoted) {
+    std::string out;
+    for (std::size_t i = 1; i + 1 < quoted.size(); ++i) {
+        char c = quoted[i];
+        if (c != '\\' || i + 2 >= quoted.size()) { out += c; continue; }
+        char e = quoted[++i];
+        switch (e) {
+        case 'n': out += '\n'; break;
+        case 't': out += '\t'; break;
+        case 'r': out += '\r'; break;
+        case '0': out += '\0'; break;
+        default: out += e; break;  // \" \\ and anything else stand for themselves
+        }
+    }
+    return out;
+}
+
+class Builder {
+public:
+    explicit Builder(FileId file) : file_(file) {}
+
+    Span span(antlr4::Token* start, antlr4::Token* stop) const {
+        Span s;
+        s.file = file_;
+        s.line = static_cast<std::uint32_t>(start->getLine());
+        s.col = static_cast<std::uint32_t>(start->getCharPositionInLine() + 1);
+        if (!stop || stop->getType() == antlr4::Token::EOF) stop = start;
+        s.endLine = static_cast<std::uint32_t>(stop->getLine());
+        s.endCol = static_cast<std::uint32_t>(stop->getCharPositionInLine() + 1) + codePoints(stop->getText());
+        return s;
+    }
+    Span span(antlr4::ParserRuleContext* ctx) const { return span(ctx->getStart(), ctx->getStop()); }
+    Span span(antlr4::Token* t) const { return span(t, t); }
+    Span span(antlr4::tree::TerminalNode* n) const { return span(n->getSymbol()); }
+
+    Ident ident(antlr4::tree::TerminalNode* n) const { return Ident{n->getText(), span(n)}; }
+    Ident ident(antlr4::Token* t) const { return Ident{t->getText(), span(t)}; }
+    TypeRef typeRef(P::TypeRefContext* ctx) const { return TypeRef{ident(ctx->ID())}; }
+
+    Program program(P::ProgramContext* ctx) {
+        Program p;
+        p.file = file_;
+        for (auto* d : ctx->topDecl()) p.decls.push_back(decl(d));
+        return p;
+    }
+
+    Decl decl(P::TopDeclContext* ctx) {
+        if (auto* c = ctx->importDecl())
+            return Decl{ImportDecl{unescape(c->STRING()->getText()), span(c)}};
+        if (auto* c = ctx->paramDecl())
+            return Decl{ParamDecl{ident(c->ID()), typeRef(c->typeRef()), expr(c->expr()), span(c)}};
+        if (auto* c = ctx->constDecl()) {
+            ConstDecl d{ident(c->ID()), std::nullopt, expr(c->expr()), span(c)};
+            if (c->typeRef()) d.type = typeRef(c->typeRef());
+            return Decl{std::move(d)};
+        }
+        if (auto* c = ctx->enumDecl()) {
+            EnumDecl d{ident(c->ID(0)), {}, span(c)};
+            for (std::size_t i = 1; i < c->ID().size(); ++i) d.values.push_back(ident(c->ID(i)));
+            return Decl{std::move(d)};
+        }
+        if (auto* c = ctx->fnDecl()) {
+            FnDecl d{ident(c->ID()), {}, typeRef(c->typeRef()), expr(c->expr()), span(c)};
+            for (auto* p : c->fnParam()) d.params.push_back(FnParam{ident(p->ID()), typeRef(p->typeRef())});
+            return Decl{std::move(d)};
+        }
+        if (auto* c = ctx->kindDecl()) return Decl{kind(c)};
+        if (auto* c = ctx->axiomDecl()) {
+            AxiomDecl d{{}, span(c)};
+            for (auto* g : c->graphStmt()) d.body.push_back(graphStmt(g));
+            return Decl{std::move(d)};
+        }
+        if (auto* c = ctx->limitDecl()) return Decl{LimitDecl{expr(c->expr()), span(c)}};
+        if (auto* c = ctx->priorityDecl()) {
+            PriorityDecl d;
+            d.priority = signedInt(c->signedInt());
+            d.prioritySpan = span(c->signedInt());
+            d.span = span(c);
+            for (auto* o : c->priorityOption()) {
+                if (auto* l = dynamic_cast<P::PriorityLimitContext*>(o)) d.limit = expr(l->expr());
+                else d.parallel = true;
+            }
+            return Decl{std::move(d)};
+        }
+        if (auto* c = ctx->defsDecl()) return Decl{DefsDecl{unescape(c->STRING()->getText()), span(c)}};
+        return Decl{rule(ctx->ruleDecl())};
+    }
+
+    long long signedInt(P::SignedIntContext* c) {
+        long long v = std::strtoll(c->INT()->getText().c_str(), nullptr, 10);
+        return c->children.size() > 1 ? -v : v;
+    }
+
+    double signedNumber(P::SignedNumberContext* c) {
+        auto* num = c->INT() ? c->INT() : c->FLOAT();
+        double v = std::strtod(num->getText().c_str(), nullptr);
+        return c->children.size() > 1 ? -v : v;
+    }
+
+    KindDecl kind(P::KindDeclContext* ctx) {
+        KindDecl k;
+        k.span = span(ctx);
+        P::KindBodyContext* body = nullptr;
+        if (auto* n = dynamic_cast<P::NodeKindContext*>(ctx)) {
+            k.name = ident(n->ID());
+            body = n->kindBody();
+        } else {
+            auto* e = static_cast<P::EdgeKindContext*>(ctx);
+            k.isEdge = true;
+            k.name = ident(e->ID());
+            if (e->DIRECTED) k.directed = true;
+            if (e->UNDIRECTED) k.directed = false;
+            body = e->kindBody();
+        }
+        for (auto* m : body->kindMember()) {
+            if (auto* a = dynamic_cast<P::AttrDeclContext*>(m)) {
+                AttrDecl d{ident(a->ID()), typeRef(a->typeRef()), nullptr, span(a)};
+                if (a->expr()) d.value = expr(a->expr());
+                k.attrs.push_back(std::move(d));
+            } else {
+                auto* s = static_cast<P::StyleBlockContext*>(m);
+                for (auto* p : s->styleProp())
+                    k.style.push_back(StyleProp{ident(p->ID()), expr(p->expr()), span(p)});
+            }
+        }
+        return k;
+    }
+
+    std::vector<Assignment> assignments(P::AssignmentsContext* ctx) {
+        std::vector<Assignment> out;
+        if (!ctx) return out;
+        for (auto* a : ctx->assignment())
+            out.push_back(Assignment{a->isStyle != nullptr, ident(a->ID()), expr(a->expr())});
+        return out;
+    }
+
+    GraphStmt graphStmt(P::GraphStmtContext* ctx) {
+        if (auto* n = ctx->nodeStmt()) {
+            NodeStmt s;
+            s.span = span(n);
+            s.name = ident(n->ID(0));
+            if (n->kind) { s.kind = ident(n->kind); s.kindSpan = span(n->kind); }
+            if (n->wild) { s.wildcard = true; s.kindSpan = span(n->wild); }
+            if (auto* sk = n->sketch())
+                s.sketch = Sketch{signedNumber(sk->signedNumber(0)), signedNumber(sk->signedNumber(1)), span(sk)};
+            if (auto* p = n->position()) s.position = expr(p->expr());
+            if (n->assignments()) { s.hasAssignBlock = true; s.assigns = assignments(n->assignments()); }
+            if (auto* w = n->whereClause()) s.where = expr(w->expr());
+            return GraphStmt{std::move(s)};
+        }
+        auto* e = ctx->edgeStmt();
+        EdgeStmt s;
+        s.span = span(e);
+        if (e->name) s.name = ident(e->name);
+        s.src = ident(e->src);
+        s.dst = ident(e->dst);
+        P::EdgeLabelContext* label = nullptr;
+        if (auto* a = dynamic_cast<P::DirectedArrowContext*>(e->edgeArrow())) {
+            s.arrow = EdgeStmt::Arrow::Forward; label = a->edgeLabel();
+        } else if (auto* b = dynamic_cast<P::ReversedArrowContext*>(e->edgeArrow())) {
+            s.arrow = EdgeStmt::Arrow::Backward; label = b->edgeLabel();
+        } else {
+            s.arrow = EdgeStmt::Arrow::Undirected;
+            label = static_cast<P::UndirectedArrowContext*>(e->edgeArrow())->edgeLabel();
+        }
+        s.kind = ident(label->ID());
+        s.assigns = assignments(label->assignments());
+        if (auto* w = e->whereClause()) s.where = expr(w->expr());
+        return GraphStmt{std::move(s)};
+    }
+
+    MatchStmt matchStmt(P::MatchStmtContext* ctx) {
+        if (auto* g = dynamic_cast<P::MatchGraphContext*>(ctx)) return MatchStmt{graphStmt(g->graphStmt())};
+        if (auto* w = dynamic_cast<P::MatchWhereContext*>(ctx))
+            return MatchStmt{WhereStmt{expr(w->expr()), span(w)}};
+        auto* n = static_cast<P::MatchNacContext*>(ctx);
+        NacBlock nac{{}, span(n)};
+        for (auto* m : n->matchStmt()) nac.body.push_back(matchStmt(m));
+        return MatchStmt{std::move(nac)};
+    }
+
+    LetStmt let(P::LetStmtContext* ctx) {
+        LetStmt l{ident(ctx->ID()), std::nullopt, expr(ctx->expr()), span(ctx)};
+        if (ctx->typeRef()) l.type = typeRef(ctx->typeRef());
+        return l;
+    }
+
+    RuleDecl rule(P::RuleDeclContext* ctx) {
+        RuleDecl r;
+        r.span = span(ctx);
+        r.name = ident(ctx->ID());
+        for (auto* o : ctx->ruleOption()) {
+            RuleOption opt;
+            opt.span = span(o);
+            if (auto* p = dynamic_cast<P::RulePriorityContext*>(o)) {
+                opt.kind = RuleOption::Kind::Priority;
+                opt.priority = signedInt(p->signedInt());
+            } else if (auto* k = dynamic_cast<P::RulePickContext*>(o)) {
+                opt.kind = RuleOption::Kind::Pick;
+                opt.pick = ident(k->ID());
+            } else if (dynamic_cast<P::RuleOrderedContext*>(o)) {
+                opt.kind = RuleOption::Kind::Ordered;
+            } else {
+                opt.kind = RuleOption::Kind::Parallel;
+            }
+            r.options.push_back(std::move(opt));
+        }
+        r.matchSpan = span(ctx->matchBlock());
+        for (auto* m : ctx->matchBlock()->matchStmt()) r.match.push_back(matchStmt(m));
+        for (auto* item : ctx->ruleItem()) {
+            if (auto* l = item->letStmt()) { r.items.push_back(RuleItem{let(l)}); continue; }
+            auto* p = item->produceBlock();
+            ProduceBlock b;
+            b.span = span(p);
+            if (p->expr()) b.weight = expr(p->expr());
+            for (auto* s : p->produceStmt()) {
+                if (s->letStmt()) b.body.push_back(ProduceStmt{let(s->letStmt())});
+                else b.body.push_back(ProduceStmt{graphStmt(s->graphStmt())});
+            }
+            r.items.push_back(RuleItem{std::move(b)});
+        }
+        return r;
+    }
+
+    ExprPtr make(Span s, auto node) {
+        auto e = std::make_unique<Expr>();
+        e->span = s;
+        e->node = std::move(node);
+        return e;
+    }
+
+    static BinaryOp binaryOp(const std::string& op) {
+        if (op == "+") return BinaryOp::Add;
+        if (op == "-") return BinaryOp::Sub;
+        if (op == "*") return BinaryOp::Mul;
+        if (op == "/") return BinaryOp::Div;
+        if (op == "%") return BinaryOp::Mod;
+        if (op == "<") return BinaryOp::Lt;
+        if (op == "<=") return BinaryOp::Le;
+        if (op == ">") return BinaryOp::Gt;
+        if (op == ">=") return BinaryOp::Ge;
+        if (op == "==") return BinaryOp::Eq;
+        if (op == "!=") return BinaryOp::Ne;
+        if (op == "and" || op == "&&") return BinaryOp::And;
+        return BinaryOp::Or;
+    }
+
+    ExprPtr binary(P::ExprContext* ctx, antlr4::Token* op, P::ExprContext* l, P::ExprContext* r) {
+        return make(span(ctx), Binary{binaryOp(op->getText()), expr(l), expr(r), span(op)});
+    }
+
+    ExprPtr expr(P::ExprContext* ctx) {
+        Span s = span(ctx);
+        if (auto* c = dynamic_cast<P::PrimaryExprContext*>(ctx)) return primary(c->primary());
+        if (auto* c = dynamic_cast<P::MemberExprContext*>(ctx))
+            return make(s, Member{expr(c->expr()), ident(c->ID())});
+        if (auto* c = dynamic_cast<P::UnaryExprContext*>(ctx)) {
+            std::string op = c->op->getText();
+            UnaryOp u = op == "-" ? UnaryOp::Neg : op == "+" ? UnaryOp::Plus : UnaryOp::Not;
+            return make(s, Unary{u, expr(c->expr())});
+        }
+        if (auto* c = dynamic_cast<P::NotExprContext*>(ctx)) return make(s, Unary{UnaryOp::Not, expr(c->expr())});
+        if (auto* c = dynamic_cast<P::MulExprContext*>(ctx)) return binary(c, c->op, c->expr(0), c->expr(1));
+        if (auto* c = dynamic_cast<P::AddExprContext*>(ctx)) return binary(c, c->op, c->expr(0), c->expr(1));
+        if (auto* c = dynamic_cast<P::RelExprContext*>(ctx)) return binary(c, c->op, c->expr(0), c->expr(1));
+        if (auto* c = dynamic_cast<P::EqExprContext*>(ctx)) return binary(c, c->op, c->expr(0), c->expr(1));
+        if (auto* c = dynamic_cast<P::AndExprContext*>(ctx)) return binary(c, c->op, c->expr(0), c->expr(1));
+        if (auto* c = dynamic_cast<P::OrExprContext*>(ctx)) return binary(c, c->op, c->expr(0), c->expr(1));
+        auto* c = static_cast<P::CondExprContext*>(ctx);
+        return make(s, Conditional{expr(c->expr(0)), expr(c->expr(1)), expr(c->expr(2))});
+    }
+
+    ExprPtr primary(P::PrimaryContext* ctx) {
+        Span s = span(ctx);
+        if (auto* c = dynamic_cast<P::IntLitContext*>(ctx)) {
+            errno = 0;
+            long long v = std::strtoll(c->INT()->getText().c_str(), nullptr, 10);
+            // Out-of-range literals are reported by sema.
+            return make(s, IntLit{v, errno == ERANGE});
+        }
+        if (auto* c = dynamic_cast<P::FloatLitContext*>(ctx))
+            return make(s, FloatLit{std::strtod(c->FLOAT()->getText().c_str(), nullptr)});
+        if (auto* c = dynamic_cast<P::StringLitContext*>(ctx)) return make(s, StringLit{unescape(c->STRING()->getText())});
+        if (auto* c = dynamic_cast<P::BoolLitContext*>(ctx)) return make(s, BoolLit{c->getText() == "true"});
+        if (auto* c = dynamic_cast<P::CallExprContext*>(ctx)) {
+            Call call{ident(c->ID()), {}};
+            for (auto* a : c->expr()) call.args.push_back(expr(a));
+            return make(s, std::move(call));
+        }
+        if (auto* c = dynamic_cast<P::NameExprContext*>(ctx)) return make(s, Name{c->ID()->getText()});
+        if (auto* c = dynamic_cast<P::VecLitContext*>(ctx)) return make(s, VecLit{expr(c->expr(0)), expr(c->expr(1))});
+        return expr(static_cast<P::ParenExprContext*>(ctx)->expr());
+    }
+
+private:
+    FileId file_;
+};
+
+}  // namespace
+
+ast::Program buildAst(G2dParser::ProgramContext* tree, FileId file) { return Builder(file).program(tree); }
+
+}  // namespace g2d

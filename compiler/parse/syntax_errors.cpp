@@ -1,0 +1,133 @@
+#include "parse/syntax_errors.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "G2dLexer.h"
+
+namespace g2d {
+
+std::string describeToken(const antlr4::Token* t) {
+    if (!t) return "end of file";
+    switch (t->getType()) {
+    case antlr4::Token::EOF: return "end of file";
+    case G2dLexer::ID: return "name `" + t->getText() + "`";
+    case G2dLexer::INT: return "integer `" + t->getText() + "`";
+    case G2dLexer::FLOAT: return "number `" + t->getText() + "`";
+    case G2dLexer::STRING: return "string " + t->getText();
+    case G2dLexer::UNTERMINATED_STRING: return "an unterminated string";
+    case G2dLexer::UNTERMINATED_COMMENT: return "an unterminated comment";
+    case G2dLexer::ERRCHAR: return "unexpected character `" + t->getText() + "`";
+    default: return "`" + t->getText() + "`";
+    }
+}
+
+std::string describeExpected(const antlr4::misc::IntervalSet& expected,
+                             const antlr4::dfa::Vocabulary& vocabulary) {
+    std::set<size_t> types;
+    for (const auto& iv : expected.getIntervals())
+        for (ssize_t t = iv.a; t <= iv.b; ++t) types.insert(static_cast<size_t>(t));
+    std::vector<std::string> words;
+    // The tokens that can start an expression are summarised in one word.
+    const bool expression = types.count(G2dLexer::INT) && types.count(G2dLexer::FLOAT) &&
+                            types.count(G2dLexer::STRING) && types.count(G2dLexer::ID);
+    if (expression) {
+        words.push_back("an expression");
+        for (size_t t : {size_t(G2dLexer::INT), size_t(G2dLexer::FLOAT), size_t(G2dLexer::STRING),
+                         size_t(G2dLexer::ID)})
+            types.erase(t);
+        for (const char* lit : {"'('", "'-'", "'+'", "'!'", "'not'", "'true'", "'false'"})
+            for (auto it = types.begin(); it != types.end();) {
+                if (vocabulary.getLiteralName(*it) == lit) it = types.erase(it);
+                else ++it;
+            }
+    }
+    for (size_t t : types) {
+        if (t == static_cast<size_t>(antlr4::Token::EOF)) { words.push_back("end of file"); continue; }
+        if (t == G2dLexer::ID) { words.push_back("a name"); continue; }
+        if (t == G2dLexer::INT) { words.push_back("an integer"); continue; }
+        if (t == G2dLexer::FLOAT) { words.push_back("a number"); continue; }
+        if (t == G2dLexer::STRING) { words.push_back("a string"); continue; }
+        std::string lit = vocabulary.getLiteralName(t);
+        if (lit.size() >= 2 && lit.front() == '\'') words.push_back("`" + lit.substr(1, lit.size() - 2) + "`");
+    }
+    if (words.empty()) return "";
+    if (words.size() > 8) {
+        words.resize(8);
+        words.push_back("…");
+    }
+    std::string out;
+    for (size_t i = 0; i < words.size(); ++i) {
+        if (i > 0) out += (i + 1 == words.size()) ? " or " : ", ";
+        out += words[i];
+    }
+    return out;
+}
+
+void SyntaxErrorListener::syntaxError(antlr4::Recognizer* recognizer, antlr4::Token* offending,
+                                      size_t line, size_t charPositionInLine, const std::string&,
+                                      std::exception_ptr) {
+    // One error per line: ANTLR's recovery tends to cascade.
+    if (count_ > 0 && line == lastLine_) return;
+    ++count_;
+    lastLine_ = line;
+    Span span{file_, static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(charPositionInLine + 1),
+              static_cast<std::uint32_t>(line), 0};
+    if (offending && offending->getType() != antlr4::Token::EOF) {
+        std::string text = offending->getText();
+        std::uint32_t width = 0;
+        for (unsigned char c : text) {
+            if (c == '\n') break;
+            if ((c & 0xC0) != 0x80) ++width;
+        }
+        span.endCol = span.col + std::max<std::uint32_t>(width, 1);
+    }
+    // A missing `;` or `}` at the end of a line is reported right after the
+    // last token of that line, where it belongs, not at the next line's start.
+    const bool lexical = offending && (offending->getType() == G2dLexer::ERRCHAR ||
+                                       offending->getType() == G2dLexer::UNTERMINATED_STRING ||
+                                       offending->getType() == G2dLexer::UNTERMINATED_COMMENT);
+    std::string expectedWords;
+    if (auto* parser = dynamic_cast<antlr4::Parser*>(recognizer); parser && !lexical)
+        expectedWords = describeExpected(parser->getExpectedTokens(), parser->getVocabulary());
+    const bool expectsCloser = expectedWords.find("`;`") != std::string::npos ||
+                               expectedWords.find("`}`") != std::string::npos ||
+                               expectedWords.find("`)`") != std::string::npos;
+    if (auto* parser = dynamic_cast<antlr4::Parser*>(recognizer); parser && offending && expectsCloser) {
+        auto* stream = dynamic_cast<antlr4::BufferedTokenStream*>(parser->getInputStream());
+        const auto index = offending->getTokenIndex();
+        if (stream && index != static_cast<size_t>(-1) && index > 0) {
+            antlr4::Token* prev = nullptr;
+            for (size_t i = index; i-- > 0;) {
+                antlr4::Token* t = stream->get(i);
+                if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) { prev = t; break; }
+            }
+            if (prev && prev->getLine() < offending->getLine()) {
+                std::string text = prev->getText();
+                const auto nl = text.rfind('\n');
+                std::uint32_t width = 0;
+                for (unsigned char c : nl == std::string::npos ? text : text.substr(nl + 1))
+                    if ((c & 0xC0) != 0x80) ++width;
+                const auto startCol = nl == std::string::npos ? prev->getCharPositionInLine() : 0;
+                std::uint32_t lineNo = static_cast<std::uint32_t>(prev->getLine());
+                if (nl != std::string::npos)
+                    lineNo += static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
+                span = Span{file_, lineNo, static_cast<std::uint32_t>(startCol + width + 1), lineNo,
+                            static_cast<std::uint32_t>(startCol + width + 2)};
+            }
+        }
+    }
+    std::string found = describeToken(offending);
+    std::string message;
+    if (offending) {
+        int type = static_cast<int>(offending->getType());
+        if (type == G2dLexer::UNTERMINATED_STRING) message = "unterminated string (missing closing `\"`)";
+        else if (type == G2dLexer::UNTERMINATED_COMMENT) message = "unterminated comment (missing `*/`)";
+        else if (type == G2dLexer::ERRCHAR) message = "unexpected character `" + offending->getText() + "`";
+    }
+    if (message.empty())
+        message = expectedWords.empty() ? "unexpected " + found : "expected " + expectedWords + ", found " + found;
+    diags_.error(span, message);
+}
+
+}  // namespace g2d

@@ -1,0 +1,238 @@
+#include "sema/const_fold.hpp"
+
+#include <climits>
+#include <cmath>
+
+#include "g2d/vec_math.hpp"
+
+namespace g2d::sema {
+
+using ir::Builtin;
+using ir::Expr;
+using ir::ExprOp;
+using ir::TypeKind;
+using ir::Value;
+
+double asNumber(const Value& v) {
+    if (auto* i = std::get_if<long long>(&v)) return static_cast<double>(*i);
+    if (auto* d = std::get_if<double>(&v)) return *d;
+    return 0;
+}
+
+namespace {
+
+rt::vec2 asVec(const Value& v) {
+    const auto& p = std::get<ir::Vec2>(v);
+    return {p.x, p.y};
+}
+Value fromVec(rt::vec2 v) { return ir::Vec2{v.x, v.y}; }
+
+std::optional<Value> foldCall(const Expr& e, const std::vector<Value>& a) {
+    auto f = [&](int i) { return asNumber(a[i]); };
+    auto v = [&](int i) { return asVec(a[i]); };
+    auto finite = [](double d) -> std::optional<Value> {
+        if (!std::isfinite(d)) return std::nullopt;
+        return Value{d};
+    };
+    switch (e.builtin) {
+    case Builtin::Sin: return finite(std::sin(f(0)));
+    case Builtin::Cos: return finite(std::cos(f(0)));
+    case Builtin::Tan: return finite(std::tan(f(0)));
+    case Builtin::Asin: return finite(std::asin(f(0)));
+    case Builtin::Acos: return finite(std::acos(f(0)));
+    case Builtin::Atan: return finite(std::atan(f(0)));
+    case Builtin::Atan2: return finite(std::atan2(f(0), f(1)));
+    case Builtin::Sqrt: return finite(std::sqrt(f(0)));
+    case Builtin::Exp: return finite(std::exp(f(0)));
+    case Builtin::Log: return finite(std::log(f(0)));
+    case Builtin::Pow: return finite(std::pow(f(0), f(1)));
+    case Builtin::Hypot: return finite(std::hypot(f(0), f(1)));
+    case Builtin::Radians: return finite(f(0) * 3.141592653589793 / 180.0);
+    case Builtin::Degrees: return finite(f(0) * 180.0 / 3.141592653589793);
+    case Builtin::Abs:
+        if (e.type.kind == TypeKind::Int) return Value{std::llabs(std::get<long long>(a[0]))};
+        return Value{std::fabs(f(0))};
+    case Builtin::Min:
+    case Builtin::Max: {
+        Value best = a[0];
+        for (std::size_t i = 1; i < a.size(); ++i) {
+            const bool less = asNumber(a[i]) < asNumber(best);
+            if ((e.builtin == Builtin::Min) == less && asNumber(a[i]) != asNumber(best)) best = a[i];
+        }
+        return best;
+    }
+    case Builtin::MakeVec2: return Value{ir::Vec2{f(0), f(1)}};
+    case Builtin::Dot: return Value{rt::dot(v(0), v(1))};
+    case Builtin::Cross: return Value{rt::cross(v(0), v(1))};
+    case Builtin::Length: return Value{rt::length(v(0))};
+    case Builtin::Distance: return Value{rt::distance(v(0), v(1))};
+    case Builtin::Normalize: return fromVec(rt::normalize(v(0)));
+    case Builtin::PerpLeft: return fromVec(rt::perpLeft(v(0)));
+    case Builtin::PerpRight: return fromVec(rt::perpRight(v(0)));
+    case Builtin::Rotate: return fromVec(rt::rotate(v(0), f(1)));
+    case Builtin::RotateAround: return fromVec(rt::rotateAround(v(0), f(1), v(2)));
+    case Builtin::Angle: return Value{rt::angle(v(0))};
+    case Builtin::AngleBetween: return Value{rt::angleBetween(v(0), v(1))};
+    case Builtin::ToFloat:
+        if (std::holds_alternative<long long>(a[0]) || std::holds_alternative<double>(a[0])) return Value{f(0)};
+        return std::nullopt;
+    default: return std::nullopt;  // conversions from strings, formatting, randomness: at run time
+    }
+}
+
+std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const Value& r) {
+    const TypeKind lk = e.args[0].type.kind, rk = e.args[1].type.kind;
+    if (lk == TypeKind::Int && rk == TypeKind::Int) {
+        long long a = std::get<long long>(l), b = std::get<long long>(r), out = 0;
+        switch (op) {
+        case ExprOp::Add: if (__builtin_add_overflow(a, b, &out)) return std::nullopt; return Value{out};
+        case ExprOp::Sub: if (__builtin_sub_overflow(a, b, &out)) return std::nullopt; return Value{out};
+        case ExprOp::Mul: if (__builtin_mul_overflow(a, b, &out)) return std::nullopt; return Value{out};
+        case ExprOp::Mod: if (b == 0 || (a == LLONG_MIN && b == -1)) return std::nullopt; return Value{rt::imodFloor(a, b)};
+        case ExprOp::Lt: return Value{a < b};
+        case ExprOp::Le: return Value{a <= b};
+        case ExprOp::Gt: return Value{a > b};
+        case ExprOp::Ge: return Value{a >= b};
+        case ExprOp::Eq: return Value{a == b};
+        case ExprOp::Ne: return Value{a != b};
+        default: return std::nullopt;
+        }
+    }
+    if (lk == TypeKind::Float && rk == TypeKind::Float) {
+        double a = std::get<double>(l), b = std::get<double>(r);
+        switch (op) {
+        case ExprOp::Add: return Value{a + b};
+        case ExprOp::Sub: return Value{a - b};
+        case ExprOp::Mul: return Value{a * b};
+        case ExprOp::Div: if (b == 0) return std::nullopt; return Value{a / b};
+        case ExprOp::Mod: if (b == 0) return std::nullopt; return Value{rt::fmodFloor(a, b)};
+        case ExprOp::Lt: return Value{a < b};
+        case ExprOp::Le: return Value{a <= b};
+        case ExprOp::Gt: return Value{a > b};
+        case ExprOp::Ge: return Value{a >= b};
+        case ExprOp::Eq: return Value{a == b};
+        case ExprOp::Ne: return Value{a != b};
+        default: return std::nullopt;
+        }
+    }
+    if (lk == TypeKind::Vec2 && rk == TypeKind::Vec2) {
+        switch (op) {
+        case ExprOp::Add: return fromVec(asVec(l) + asVec(r));
+        case ExprOp::Sub: return fromVec(asVec(l) - asVec(r));
+        case ExprOp::Eq: return Value{l == r};
+        case ExprOp::Ne: return Value{l != r};
+        default: return std::nullopt;
+        }
+    }
+    if (lk == TypeKind::Vec2 && rk == TypeKind::Float) {
+        if (op == ExprOp::Mul) return fromVec(asVec(l) * std::get<double>(r));
+        if (op == ExprOp::Div && std::get<double>(r) != 0) return fromVec(asVec(l) / std::get<double>(r));
+        return std::nullopt;
+    }
+    if (lk == TypeKind::Float && rk == TypeKind::Vec2 && op == ExprOp::Mul)
+        return fromVec(std::get<double>(l) * asVec(r));
+    if (op == ExprOp::Add && lk == TypeKind::String) return Value{std::get<std::string>(l) + std::get<std::string>(r)};
+    if (op == ExprOp::Eq) return Value{l == r};
+    if (op == ExprOp::Ne) return Value{l != r};
+    return std::nullopt;
+}
+
+template <class Pred>
+bool any(const Expr& e, const ir::Program& prog, Pred pred) {
+    if (pred(e)) return true;
+    for (const auto& a : e.args)
+        if (any(a, prog, pred)) return true;
+    if (e.op == ExprOp::CallFn) return any(prog.functions[e.index].body, prog, pred);
+    if (e.op == ExprOp::Const) return any(prog.consts[e.index].value, prog, pred);
+    return false;
+}
+
+}  // namespace
+
+std::optional<Value> fold(const Expr& e, const ir::Program& prog) {
+    switch (e.op) {
+    case ExprOp::Literal: return e.value;
+    case ExprOp::Const: return prog.consts[e.index].folded;
+    case ExprOp::VecX:
+    case ExprOp::VecY: {
+        auto v = fold(e.args[0], prog);
+        if (!v) return std::nullopt;
+        const auto& p = std::get<ir::Vec2>(*v);
+        return Value{e.op == ExprOp::VecX ? p.x : p.y};
+    }
+    case ExprOp::Neg: {
+        auto v = fold(e.args[0], prog);
+        if (!v) return std::nullopt;
+        if (auto* i = std::get_if<long long>(&*v)) {
+            if (*i == LLONG_MIN) return std::nullopt;
+            return Value{-*i};
+        }
+        if (auto* d = std::get_if<double>(&*v)) return Value{-*d};
+        return fromVec(-asVec(*v));
+    }
+    case ExprOp::Not: {
+        auto v = fold(e.args[0], prog);
+        if (!v) return std::nullopt;
+        return Value{!std::get<bool>(*v)};
+    }
+    case ExprOp::And:
+    case ExprOp::Or: {
+        auto l = fold(e.args[0], prog);
+        if (!l) return std::nullopt;
+        const bool lv = std::get<bool>(*l);
+        if (e.op == ExprOp::And && !lv) return Value{false};
+        if (e.op == ExprOp::Or && lv) return Value{true};
+        return fold(e.args[1], prog);
+    }
+    case ExprOp::Cond: {
+        auto c = fold(e.args[0], prog);
+        if (!c) return std::nullopt;
+        return fold(e.args[std::get<bool>(*c) ? 1 : 2], prog);
+    }
+    case ExprOp::Call: {
+        std::vector<Value> args;
+        for (const auto& a : e.args) {
+            auto v = fold(a, prog);
+            if (!v) return std::nullopt;
+            args.push_back(std::move(*v));
+        }
+        return foldCall(e, args);
+    }
+    case ExprOp::Add: case ExprOp::Sub: case ExprOp::Mul: case ExprOp::Div: case ExprOp::Mod:
+    case ExprOp::Lt: case ExprOp::Le: case ExprOp::Gt: case ExprOp::Ge: case ExprOp::Eq: case ExprOp::Ne: {
+        auto l = fold(e.args[0], prog);
+        auto r = fold(e.args[1], prog);
+        if (!l || !r) return std::nullopt;
+        return foldArith(e.op, e, *l, *r);
+    }
+    default: return std::nullopt;
+    }
+}
+
+bool usesRandom(const Expr& e, const ir::Program& prog) {
+    return any(e, prog, [](const Expr& x) {
+        return x.op == ExprOp::Call && (x.builtin == Builtin::Random || x.builtin == Builtin::Uniform ||
+                                        x.builtin == Builtin::RandInt || x.builtin == Builtin::Choice ||
+                                        x.builtin == Builtin::Normal);
+    });
+}
+
+bool usesParams(const Expr& e, const ir::Program& prog) {
+    return any(e, prog, [](const Expr& x) { return x.op == ExprOp::Param; });
+}
+
+bool readsElements(const Expr& e) {
+    if (e.op == ExprOp::Attr || e.op == ExprOp::Fact) return true;
+    for (const auto& a : e.args)
+        if (readsElements(a)) return true;
+    return false;
+}
+
+bool readsLocals(const Expr& e) {
+    if (e.op == ExprOp::Local) return true;
+    for (const auto& a : e.args)
+        if (readsLocals(a)) return true;
+    return false;
+}
+
+}  // namespace g2d::sema

@@ -1,0 +1,26 @@
+#pragma once
+// Checks top-level declarations other than the axiom and rules.
+#include "sema/context.hpp"
+#include "sema/expr_checker.hpp"
+
+namespace g2d::sema {
+
+// Resolves a type name (int, float, bool, string, vec2 or an enum).
+std::optional<ir::Type> resolveType(Globals& g, const ast::TypeRef& t);
+
+// Registers a top-level name; reports a duplicate and returns false if taken.
+bool declareTopLevel(Globals& g, const ast::Ident& name, const std::string& what);
+
+void declareEnum(Globals& g, const ast::EnumDecl& d);
+void declareKindName(Globals& g, const ast::KindDecl& d);
+void checkParam(Globals& g, ExprChecker& ec, const ast::ParamDecl& d);
+void checkConst(Globals& g, ExprChecker& ec, const ast::ConstDecl& d);
+void checkFunction(Globals& g, ExprChecker& ec, const ast::FnDecl& d);
+void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d);
+void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen);
+void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d);
+
+// Style property values that are checked when constant.
+void checkStyleValue(Globals& g, const std::string& prop, const ir::Expr& value);
+
+}  // namespace g2d::sema

@@ -1,0 +1,559 @@
+#include "sema/expr_checker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "sema/builtins.hpp"
+
+namespace g2d::sema {
+
+using ir::Expr;
+using ir::ExprOp;
+using ir::Type;
+using ir::TypeKind;
+
+namespace {
+
+const Type kInt = Type::of(TypeKind::Int);
+const Type kFloat = Type::of(TypeKind::Float);
+const Type kBool = Type::of(TypeKind::Bool);
+const Type kString = Type::of(TypeKind::String);
+const Type kVec2 = Type::of(TypeKind::Vec2);
+
+Expr literal(ir::Value v, Type t, Span s) {
+    Expr e;
+    e.op = ExprOp::Literal;
+    e.type = t;
+    e.value = std::move(v);
+    e.span = s;
+    return e;
+}
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+const char* factNames[] = {"pos", "age", "id", "degree", "in_degree", "out_degree"};
+
+}  // namespace
+
+std::string suggest(const std::string& name, const std::vector<std::string>& candidates) {
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(1, name.size() / 3) + 1;
+    for (const auto& c : candidates) {
+        std::size_t d = editDistance(name, c);
+        if (d < bestDistance) { bestDistance = d; best = c; }
+    }
+    return best.empty() ? "" : "; did you mean `" + best + "`?";
+}
+
+Expr ExprChecker::coerce(Expr e, Type to) {
+    if (to.kind == TypeKind::Float && e.type.kind == TypeKind::Int) {
+        if (e.op == ExprOp::Literal) {
+            return literal(static_cast<double>(std::get<long long>(e.value)), kFloat, e.span);
+        }
+        Expr c;
+        c.op = ExprOp::Call;
+        c.builtin = ir::Builtin::ToFloat;
+        c.type = kFloat;
+        c.span = e.span;
+        c.args.push_back(std::move(e));
+        return c;
+    }
+    return e;
+}
+
+std::optional<Expr> ExprChecker::checkAs(const ast::Expr& e, Type expected, const ExprEnv& env,
+                                         const std::string& what) {
+    auto r = check(e, env);
+    if (!r) return std::nullopt;
+    if (r->type == expected) return r;
+    if (expected.kind == TypeKind::Float && r->type.kind == TypeKind::Int) return coerce(std::move(*r), expected);
+    g_.diags.error(e.span, what + " must be " + tn(expected) + ", but this is " + tn(r->type));
+    return std::nullopt;
+}
+
+std::optional<Expr> ExprChecker::check(const ast::Expr& e, const ExprEnv& env) {
+    return std::visit(
+        [&](const auto& n) -> std::optional<Expr> {
+            using T = std::decay_t<decltype(n)>;
+            if constexpr (std::is_same_v<T, ast::IntLit>) {
+                if (n.overflow) {
+                    g_.diags.error(e.span, "integer literal is out of range (at most 9223372036854775807)");
+                    return std::nullopt;
+                }
+                return literal(n.value, kInt, e.span);
+            } else if constexpr (std::is_same_v<T, ast::FloatLit>) {
+                if (!std::isfinite(n.value)) {
+                    g_.diags.error(e.span, "number literal is out of range");
+                    return std::nullopt;
+                }
+                return literal(n.value, kFloat, e.span);
+            } else if constexpr (std::is_same_v<T, ast::StringLit>) {
+                return literal(n.value, kString, e.span);
+            } else if constexpr (std::is_same_v<T, ast::BoolLit>) {
+                return literal(n.value, kBool, e.span);
+            } else if constexpr (std::is_same_v<T, ast::Name>) {
+                return name(e, n, env);
+            } else if constexpr (std::is_same_v<T, ast::Member>) {
+                return member(e, n, env);
+            } else if constexpr (std::is_same_v<T, ast::Call>) {
+                return call(e, n, env);
+            } else if constexpr (std::is_same_v<T, ast::VecLit>) {
+                auto x = checkAs(*n.x, kFloat, env, "the x of a vector");
+                auto y = checkAs(*n.y, kFloat, env, "the y of a vector");
+                if (!x || !y) return std::nullopt;
+                Expr c;
+                c.op = ExprOp::Call;
+                c.builtin = ir::Builtin::MakeVec2;
+                c.type = kVec2;
+                c.span = e.span;
+                c.args.push_back(std::move(*x));
+                c.args.push_back(std::move(*y));
+                return c;
+            } else if constexpr (std::is_same_v<T, ast::Unary>) {
+                return unary(e, n, env);
+            } else if constexpr (std::is_same_v<T, ast::Binary>) {
+                return binary(e, n, env);
+            } else {
+                return conditional(e, n, env);
+            }
+        },
+        e.node);
+}
+
+std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, const ExprEnv& env) {
+    const std::string& id = n.name;
+    if (env.locals) {
+        for (auto it = env.locals->rbegin(); it != env.locals->rend(); ++it) {
+            if (it->name != id) continue;
+            if (!env.allowLocals) {
+                g_.diags.error(e.span, "`" + id + "` cannot be used in " + env.context);
+                return std::nullopt;
+            }
+            it->used = true;
+            Expr r;
+            r.op = it->isFnArg ? ExprOp::FnArg : ExprOp::Local;
+            r.index = it->slot;
+            r.type = it->type;
+            r.span = e.span;
+            return r;
+        }
+    }
+    if (env.selfKind >= 0) {
+        const auto& attrs = g_.prog.kinds[env.selfKind].attrs;
+        for (std::size_t i = 0; i < attrs.size(); ++i) {
+            if (attrs[i].name != id) continue;
+            Expr r;
+            r.op = ExprOp::SelfAttr;
+            r.index = static_cast<int>(i);
+            r.type = attrs[i].type;
+            r.span = e.span;
+            return r;
+        }
+    }
+    if (env.elems) {
+        for (const auto& b : *env.elems) {
+            if (b.name != id) continue;
+            const char* what = b.ref.cls == ir::ElemClass::Node ? "node" : "edge";
+            g_.diags.error(e.span, "`" + id + "` is a " + what + ", not a value; read one of its attributes" +
+                                       (b.ref.cls == ir::ElemClass::Node ? " or `" + id + ".pos`" : "") +
+                                       " instead");
+            return std::nullopt;
+        }
+    }
+    if (auto it = g_.params.find(id); it != g_.params.end()) {
+        g_.paramUsed[it->second] = true;
+        Expr r;
+        r.op = ExprOp::Param;
+        r.index = it->second;
+        r.type = g_.prog.params[it->second].type;
+        r.span = e.span;
+        return r;
+    }
+    if (auto it = g_.consts.find(id); it != g_.consts.end()) {
+        if (it->second >= g_.constsDeclared) {
+            g_.diags.error(e.span, "constant `" + id + "` is used before its declaration");
+            return std::nullopt;
+        }
+        g_.constUsed[it->second] = true;
+        const auto& c = g_.prog.consts[it->second];
+        Expr r;
+        r.op = ExprOp::Const;
+        r.index = it->second;
+        r.type = c.type;
+        r.span = e.span;
+        return r;
+    }
+    if (auto it = g_.enumerators.find(id); it != g_.enumerators.end()) {
+        if (it->second.size() > 1) {
+            std::string which;
+            for (const auto& v : it->second) which += (which.empty() ? "`" : ", `") + g_.prog.enums[v.enumId].name + "." + id + "`";
+            g_.diags.error(e.span, "`" + id + "` is a value of several enums; write " + which);
+            return std::nullopt;
+        }
+        return literal(it->second[0], Type::enumeration(it->second[0].enumId), e.span);
+    }
+    if (id == "pi") return literal(std::numbers::pi, kFloat, e.span);
+    if (id == "tau") return literal(2 * std::numbers::pi, kFloat, e.span);
+    if (g_.kinds.count(id)) {
+        g_.diags.error(e.span, "`" + id + "` is a kind, not a value");
+        return std::nullopt;
+    }
+    if (g_.enums.count(id)) {
+        g_.diags.error(e.span, "`" + id + "` is an enum type; write one of its values as `" + id + ".VALUE`");
+        return std::nullopt;
+    }
+    if (g_.functions.count(id) || findBuiltin(id)) {
+        g_.diags.error(e.span, "`" + id + "` is a function; call it with `" + id + "(…)`");
+        return std::nullopt;
+    }
+    std::vector<std::string> candidates = {"pi", "tau"};
+    if (env.locals)
+        for (const auto& l : *env.locals) candidates.push_back(l.name);
+    if (env.selfKind >= 0)
+        for (const auto& a : g_.prog.kinds[env.selfKind].attrs) candidates.push_back(a.name);
+    if (env.elems)
+        for (const auto& b : *env.elems) candidates.push_back(b.name);
+    for (const auto& [k, v] : g_.params) candidates.push_back(k);
+    for (const auto& [k, v] : g_.consts) candidates.push_back(k);
+    for (const auto& [k, v] : g_.enumerators) candidates.push_back(k);
+    g_.diags.error(e.span, "unknown name `" + id + "`" + suggest(id, candidates));
+    return std::nullopt;
+}
+
+std::optional<Expr> ExprChecker::member(const ast::Expr& e, const ast::Member& m, const ExprEnv& env) {
+    // `elem.attr`, `Enum.Value`: the object is a plain name that is not a local.
+    if (const auto* objName = std::get_if<ast::Name>(&m.object->node)) {
+        bool isLocal = false;
+        if (env.locals)
+            for (const auto& l : *env.locals) isLocal = isLocal || l.name == objName->name;
+        if (!isLocal && env.elems) {
+            for (const auto& b : *env.elems)
+                if (b.name == objName->name) return elementMember(e, b, m.member, env);
+        }
+        if (!isLocal) {
+            if (auto it = g_.enums.find(objName->name); it != g_.enums.end()) {
+                const auto& en = g_.prog.enums[it->second];
+                for (std::size_t i = 0; i < en.values.size(); ++i)
+                    if (en.values[i] == m.member.name)
+                        return literal(ir::EnumValue{it->second, static_cast<int>(i)}, Type::enumeration(it->second),
+                                       e.span);
+                g_.diags.error(m.member.span, "enum `" + en.name + "` has no value `" + m.member.name + "`" +
+                                                  suggest(m.member.name, en.values));
+                return std::nullopt;
+            }
+        }
+    }
+    auto obj = check(*m.object, env);
+    if (!obj) return std::nullopt;
+    if (obj->type.kind == TypeKind::Vec2 && (m.member.name == "x" || m.member.name == "y")) {
+        Expr r;
+        r.op = m.member.name == "x" ? ExprOp::VecX : ExprOp::VecY;
+        r.type = kFloat;
+        r.span = e.span;
+        r.args.push_back(std::move(*obj));
+        return r;
+    }
+    if (obj->type.kind == TypeKind::Vec2)
+        g_.diags.error(m.member.span, "a vec2 has only `.x` and `.y`, not `." + m.member.name + "`");
+    else
+        g_.diags.error(m.member.span, "a value of type " + tn(obj->type) + " has no member `." + m.member.name + "`");
+    return std::nullopt;
+}
+
+std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBinding& b, const ast::Ident& member,
+                                               const ExprEnv& env) {
+    if (!env.allowElements) {
+        g_.diags.error(e.span, "`" + b.name + "` cannot be read in " + env.context);
+        return std::nullopt;
+    }
+    if (!b.unreadable.empty()) {
+        g_.diags.error(e.span, b.unreadable);
+        return std::nullopt;
+    }
+    const bool isNode = b.ref.cls == ir::ElemClass::Node;
+    for (int f = 0; f < 6; ++f) {
+        if (member.name != factNames[f]) continue;
+        auto fact = static_cast<ir::ElemFact>(f);
+        const bool nodeOnly = fact == ir::ElemFact::Pos || fact == ir::ElemFact::Degree ||
+                              fact == ir::ElemFact::InDegree || fact == ir::ElemFact::OutDegree;
+        if (nodeOnly && !isNode) break;  // may still be a declared edge attribute
+        Expr r;
+        r.op = ExprOp::Fact;
+        r.elem = b.ref;
+        r.fact = fact;
+        r.type = fact == ir::ElemFact::Pos ? kVec2 : kInt;
+        r.span = e.span;
+        if (env.deps) env.deps->insert(b.ref);
+        return r;
+    }
+    if (b.kind < 0) {
+        g_.diags.error(member.span, "wildcard node `" + b.name + "` matches any kind, so it has no attribute `" +
+                                        member.name + "`; only pos, age, id, degree, in_degree, out_degree can be read");
+        return std::nullopt;
+    }
+    const auto& kind = g_.prog.kinds[b.kind];
+    for (std::size_t i = 0; i < kind.attrs.size(); ++i) {
+        if (kind.attrs[i].name != member.name) continue;
+        Expr r;
+        r.op = ExprOp::Attr;
+        r.elem = b.ref;
+        r.index = static_cast<int>(i);
+        r.type = kind.attrs[i].type;
+        r.span = e.span;
+        if (env.deps) env.deps->insert(b.ref);
+        return r;
+    }
+    std::vector<std::string> candidates;
+    for (const auto& a : kind.attrs) candidates.push_back(a.name);
+    for (int f = 0; f < 6; ++f)
+        if (isNode || f == 1 || f == 2) candidates.push_back(factNames[f]);
+    g_.diags.error(member.span, std::string(isNode ? "node" : "edge") + " kind `" + kind.name +
+                                    "` has no attribute `" + member.name + "`" + suggest(member.name, candidates));
+    return std::nullopt;
+}
+
+bool ExprChecker::checkFormatTemplate(const ast::Expr& templ, std::size_t valueCount) {
+    const auto* lit = std::get_if<ast::StringLit>(&templ.node);
+    if (!lit) {
+        g_.diags.error(templ.span, "the template of `format` must be a string literal");
+        return false;
+    }
+    const std::string& s = lit->value;
+    std::size_t holes = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s[i] == '{' && i + 1 < s.size() && s[i + 1] == '{') { ++i; continue; }
+        if (s[i] == '}' && i + 1 < s.size() && s[i + 1] == '}') { ++i; continue; }
+        if (s[i] == '}') {
+            g_.diags.error(templ.span, "unmatched `}` in format template (write `}}` for a literal brace)");
+            return false;
+        }
+        if (s[i] != '{') continue;
+        std::size_t close = s.find('}', i);
+        if (close == std::string::npos) {
+            g_.diags.error(templ.span, "unclosed `{` in format template (write `{{` for a literal brace)");
+            return false;
+        }
+        std::string spec = s.substr(i + 1, close - i - 1);
+        // Accepted: `{}` and `{:.N}` (N decimals, 0..17).
+        bool ok = spec.empty();
+        if (!ok && spec.size() >= 3 && spec[0] == ':' && spec[1] == '.' &&
+            std::all_of(spec.begin() + 2, spec.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+            spec.size() <= 4)
+            ok = std::stoi(spec.substr(2)) <= 17;
+        if (!ok) {
+            g_.diags.error(templ.span, "unsupported placeholder `{" + spec + "}` in format template (use `{}` or `{:.N}`)");
+            return false;
+        }
+        ++holes;
+        i = close;
+    }
+    if (holes != valueCount) {
+        g_.diags.error(templ.span, "format template has " + std::to_string(holes) + " placeholder" +
+                                       (holes == 1 ? "" : "s") + " but " + std::to_string(valueCount) + " value" +
+                                       (valueCount == 1 ? " is" : "s are") + " given");
+        return false;
+    }
+    return true;
+}
+
+std::optional<Expr> ExprChecker::call(const ast::Expr& e, const ast::Call& c, const ExprEnv& env) {
+    const std::string& fname = c.callee.name;
+    std::vector<Expr> args;
+    bool ok = true;
+    for (const auto& a : c.args) {
+        auto r = check(*a, env);
+        if (r) args.push_back(std::move(*r));
+        else ok = false;
+    }
+    if (auto it = g_.functions.find(fname); it != g_.functions.end()) {
+        if (it->second >= g_.functionsDeclared) {
+            g_.diags.error(c.callee.span, it->second == g_.functionsDeclared
+                                              ? "function `" + fname + "` cannot call itself (no recursion)"
+                                              : "function `" + fname + "` is used before its declaration");
+            return std::nullopt;
+        }
+        if (!ok) return std::nullopt;
+        const auto& fn = g_.prog.functions[it->second];
+        if (args.size() != fn.paramTypes.size()) {
+            g_.diags.error(e.span, "`" + fname + "` takes " + std::to_string(fn.paramTypes.size()) + " argument" +
+                                       (fn.paramTypes.size() == 1 ? "" : "s") + ", got " + std::to_string(args.size()));
+            return std::nullopt;
+        }
+        Expr r;
+        r.op = ExprOp::CallFn;
+        r.index = it->second;
+        r.type = fn.result;
+        r.span = e.span;
+        for (std::size_t i = 0; i < args.size(); ++i) {
+            const Type want = fn.paramTypes[i];
+            if (!(args[i].type == want) && !(want.kind == TypeKind::Float && args[i].type.kind == TypeKind::Int)) {
+                g_.diags.error(c.args[i]->span, "argument " + std::to_string(i + 1) + " of `" + fname + "` (`" +
+                                                    fn.paramNames[i] + "`) must be " + tn(want) + ", got " +
+                                                    tn(args[i].type));
+                return std::nullopt;
+            }
+            r.args.push_back(coerce(std::move(args[i]), want));
+        }
+        return r;
+    }
+    const BuiltinInfo* info = findBuiltin(fname);
+    if (!info) {
+        std::vector<std::string> candidates;
+        for (const auto& b : builtinFunctions()) candidates.push_back(b.name);
+        for (const auto& [k, v] : g_.functions) candidates.push_back(k);
+        g_.diags.error(c.callee.span, "unknown function `" + fname + "`" + suggest(fname, candidates));
+        return std::nullopt;
+    }
+    if (info->random && !env.allowRandom) {
+        g_.diags.error(c.callee.span, "random function `" + fname + "` cannot be used in " + env.context);
+        return std::nullopt;
+    }
+    if (!ok) return std::nullopt;
+    std::vector<Type> types;
+    for (const auto& a : args) types.push_back(a.type);
+    auto res = resolveBuiltin(fname, types, g_.prog);
+    if (auto* err = std::get_if<BuiltinError>(&res)) {
+        Span at = err->argument >= 0 && static_cast<std::size_t>(err->argument) < c.args.size()
+                      ? c.args[err->argument]->span : e.span;
+        g_.diags.error(at, err->message);
+        return std::nullopt;
+    }
+    auto& resolved = std::get<BuiltinResolution>(res);
+    if (resolved.builtin == ir::Builtin::Format && !checkFormatTemplate(*c.args[0], args.size() - 1))
+        return std::nullopt;
+    Expr r;
+    r.op = ExprOp::Call;
+    r.builtin = resolved.builtin;
+    r.type = resolved.result;
+    r.span = e.span;
+    for (std::size_t i = 0; i < args.size(); ++i) r.args.push_back(coerce(std::move(args[i]), resolved.paramTypes[i]));
+    return r;
+}
+
+std::optional<Expr> ExprChecker::unary(const ast::Expr& e, const ast::Unary& u, const ExprEnv& env) {
+    auto operand = check(*u.operand, env);
+    if (!operand) return std::nullopt;
+    if (u.op == ast::UnaryOp::Not) {
+        if (operand->type.kind != TypeKind::Bool) {
+            g_.diags.error(e.span, "`not` needs a bool, but this is " + tn(operand->type));
+            return std::nullopt;
+        }
+    } else if (!operand->type.isNumeric() && operand->type.kind != TypeKind::Vec2) {
+        g_.diags.error(e.span, std::string("unary `") + (u.op == ast::UnaryOp::Neg ? "-" : "+") +
+                                   "` needs a number or vec2, but this is " + tn(operand->type));
+        return std::nullopt;
+    }
+    if (u.op == ast::UnaryOp::Plus) return operand;
+    Expr r;
+    r.op = u.op == ast::UnaryOp::Neg ? ExprOp::Neg : ExprOp::Not;
+    r.type = operand->type;
+    r.span = e.span;
+    r.args.push_back(std::move(*operand));
+    return r;
+}
+
+std::optional<Expr> ExprChecker::binary(const ast::Expr& e, const ast::Binary& b, const ExprEnv& env) {
+    auto lhs = check(*b.lhs, env);
+    auto rhs = check(*b.rhs, env);
+    if (!lhs || !rhs) return std::nullopt;
+    using Op = ast::BinaryOp;
+    static const char* opText[] = {"+", "-", "*", "/", "%", "<", "<=", ">", ">=", "==", "!=", "and", "or"};
+    const std::string op = opText[static_cast<int>(b.op)];
+    const Type lt = lhs->type, rt = rhs->type;
+    auto fail = [&]() -> std::optional<Expr> {
+        g_.diags.error(b.opSpan, "operator `" + op + "` cannot combine " + tn(lt) + " and " + tn(rt));
+        return std::nullopt;
+    };
+    Expr r;
+    r.span = e.span;
+    static const ExprOp ops[] = {ExprOp::Add, ExprOp::Sub, ExprOp::Mul, ExprOp::Div, ExprOp::Mod,
+                                 ExprOp::Lt,  ExprOp::Le,  ExprOp::Gt,  ExprOp::Ge,  ExprOp::Eq,
+                                 ExprOp::Ne,  ExprOp::And, ExprOp::Or};
+    r.op = ops[static_cast<int>(b.op)];
+    const bool numeric = lt.isNumeric() && rt.isNumeric();
+    const Type common = (lt.kind == TypeKind::Int && rt.kind == TypeKind::Int) ? kInt : kFloat;
+    auto push = [&](Type lto, Type rto) {
+        r.args.push_back(coerce(std::move(*lhs), lto));
+        r.args.push_back(coerce(std::move(*rhs), rto));
+    };
+    switch (b.op) {
+    case Op::Add:
+    case Op::Sub:
+        if (numeric) { r.type = common; push(common, common); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) { r.type = kVec2; push(kVec2, kVec2); return r; }
+        if (b.op == Op::Add && lt.kind == TypeKind::String && rt.kind == TypeKind::String) {
+            r.type = kString; push(kString, kString); return r;
+        }
+        if (b.op == Op::Add && (lt.kind == TypeKind::String || rt.kind == TypeKind::String)) {
+            g_.diags.error(b.opSpan, "operator `+` cannot combine " + tn(lt) + " and " + tn(rt) +
+                                         "; convert with str(…) or use format(…)");
+            return std::nullopt;
+        }
+        return fail();
+    case Op::Mul:
+        if (numeric) { r.type = common; push(common, common); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = kVec2; push(kVec2, kFloat); return r; }
+        if (lt.isNumeric() && rt.kind == TypeKind::Vec2) { r.type = kVec2; push(kFloat, kVec2); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) {
+            g_.diags.error(b.opSpan, "operator `*` cannot multiply two vec2s; use dot(a, b) or cross(a, b)");
+            return std::nullopt;
+        }
+        return fail();
+    case Op::Div:
+        if (numeric) { r.type = kFloat; push(kFloat, kFloat); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = kVec2; push(kVec2, kFloat); return r; }
+        return fail();
+    case Op::Mod:
+        if (numeric) { r.type = common; push(common, common); return r; }
+        return fail();
+    case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge:
+        if (numeric) { r.type = kBool; push(common, common); return r; }
+        return fail();
+    case Op::Eq: case Op::Ne:
+        if (numeric) { r.type = kBool; push(common, common); return r; }
+        if (lt == rt && lt.kind != TypeKind::Void) { r.type = kBool; push(lt, rt); return r; }
+        return fail();
+    case Op::And: case Op::Or:
+        if (lt.kind == TypeKind::Bool && rt.kind == TypeKind::Bool) { r.type = kBool; push(kBool, kBool); return r; }
+        return fail();
+    }
+    return fail();
+}
+
+std::optional<Expr> ExprChecker::conditional(const ast::Expr& e, const ast::Conditional& c, const ExprEnv& env) {
+    auto cond = checkAs(*c.cond, kBool, env, "the condition of `?:`");
+    auto a = check(*c.then, env);
+    auto b = check(*c.otherwise, env);
+    if (!cond || !a || !b) return std::nullopt;
+    Type t = a->type;
+    if (!(a->type == b->type)) {
+        if (a->type.isNumeric() && b->type.isNumeric()) {
+            t = kFloat;
+        } else {
+            g_.diags.error(e.span, "the two branches of `?:` have different types: " + tn(a->type) + " and " +
+                                       tn(b->type));
+            return std::nullopt;
+        }
+    }
+    Expr r;
+    r.op = ExprOp::Cond;
+    r.type = t;
+    r.span = e.span;
+    r.args.push_back(std::move(*cond));
+    r.args.push_back(coerce(std::move(*a), t));
+    r.args.push_back(coerce(std::move(*b), t));
+    return r;
+}
+
+}  // namespace g2d::sema

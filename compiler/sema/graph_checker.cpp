@@ -1,0 +1,792 @@
+#include "sema/graph_checker.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "sema/const_fold.hpp"
+#include "sema/decl_checker.hpp"
+#include "sema/search_plan.hpp"
+
+namespace g2d::sema {
+
+using ir::ElemClass;
+using ir::ElemRef;
+using ir::Type;
+using ir::TypeKind;
+
+namespace {
+
+const Type kVec2 = Type::of(TypeKind::Vec2);
+const Type kBool = Type::of(TypeKind::Bool);
+const Type kFloat = Type::of(TypeKind::Float);
+
+// Looks up a kind by name, requiring the given class; reports otherwise.
+int resolveKind(Globals& g, const ast::Ident& name, ElemClass cls) {
+    auto it = g.kinds.find(name.name);
+    const char* want = cls == ElemClass::Node ? "node" : "edge";
+    if (it == g.kinds.end()) {
+        std::vector<std::string> candidates;
+        for (const auto& k : g.prog.kinds)
+            if (k.cls == cls) candidates.push_back(k.name);
+        g.diags.error(name.span, std::string("unknown ") + want + " kind `" + name.name + "`" +
+                                     suggest(name.name, candidates));
+        return -1;
+    }
+    if (g.prog.kinds[it->second].cls != cls) {
+        g.diags.error(name.span, "`" + name.name + "` is " + (cls == ElemClass::Node ? "an edge" : "a node") +
+                                     " kind, but " + (cls == ElemClass::Node ? "a node" : "an edge") + " needs " +
+                                     (cls == ElemClass::Node ? "a node" : "an edge") + " kind");
+        return -1;
+    }
+    return it->second;
+}
+
+// The arrow must agree with how the edge kind was declared.
+bool checkArrow(Globals& g, const ast::EdgeStmt& e, int kind) {
+    if (kind < 0) return false;
+    const auto& k = g.prog.kinds[kind];
+    const bool written = e.arrow != ast::EdgeStmt::Arrow::Undirected;
+    if (written == k.directed) return true;
+    if (k.directed)
+        g.diags.error(e.kind.span, "edge kind `" + k.name + "` is directed: write `a -[" + k.name + "]-> b`");
+    else
+        g.diags.error(e.kind.span, "edge kind `" + k.name + "` is undirected: write `a -[" + k.name + "]- b`" +
+                                       " (or declare it `edge " + k.name + " directed`)");
+    return false;
+}
+
+const ast::NodeStmt* asNode(const ast::GraphStmt& s) { return std::get_if<ast::NodeStmt>(&s.stmt); }
+const ast::EdgeStmt* asEdge(const ast::GraphStmt& s) { return std::get_if<ast::EdgeStmt>(&s.stmt); }
+
+void reportDuplicate(Globals& g, const ast::Ident& name, Span previous) {
+    auto& d = g.diags.error(name.span, "`" + name.name + "` is already declared in this production");
+    d.notes.push_back({previous, "previous declaration of `" + name.name + "` is here"});
+}
+
+// Checks `{ attr = expr, style.prop = expr }` against a kind.
+void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<ast::Assignment>& assigns,
+                      const ExprEnv& env, std::vector<ir::AttrAssign>& attrsOut,
+                      std::vector<ir::StyleAssign>& stylesOut) {
+    std::set<std::string> seen;
+    for (const auto& a : assigns) {
+        const std::string key = (a.isStyle ? "style." : "") + a.name.name;
+        if (!seen.insert(key).second) {
+            g.diags.error(a.name.span, "`" + key + "` is assigned twice");
+            continue;
+        }
+        if (a.isStyle) {
+            auto v = ec.check(*a.value, env);
+            if (!v) continue;
+            checkStyleValue(g, a.name.name, *v);
+            stylesOut.push_back(ir::StyleAssign{a.name.name, std::move(*v)});
+            continue;
+        }
+        if (kind < 0) continue;
+        const auto& k = g.prog.kinds[kind];
+        if (a.name.name == "pos") {
+            g.diags.error(a.name.span, "a node's position is set with `at`, not assigned");
+            continue;
+        }
+        auto it = std::find_if(k.attrs.begin(), k.attrs.end(), [&](const auto& at) { return at.name == a.name.name; });
+        if (it == k.attrs.end()) {
+            std::vector<std::string> candidates;
+            for (const auto& at : k.attrs) candidates.push_back(at.name);
+            g.diags.error(a.name.span, std::string(k.cls == ElemClass::Node ? "node" : "edge") + " kind `" + k.name +
+                                           "` has no attribute `" + a.name.name + "`" + suggest(a.name.name, candidates));
+            continue;
+        }
+        auto v = ec.checkAs(*a.value, it->type, env, "attribute `" + a.name.name + "`");
+        if (!v) continue;
+        attrsOut.push_back(ir::AttrAssign{static_cast<int>(it - k.attrs.begin()), std::move(*v)});
+    }
+}
+
+std::optional<ir::Vec2> sketchOf(const ast::NodeStmt& n) {
+    if (!n.sketch) return std::nullopt;
+    return ir::Vec2{n.sketch->x, n.sketch->y};
+}
+
+}  // namespace
+
+// ---- axiom -------------------------------------------------------------------
+
+void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
+    ir::Axiom ax;
+    ax.span = d.span;
+    std::map<std::string, std::pair<int, Span>> nodes;  // name -> index
+    std::map<std::string, Span> names;
+    ExprEnv env;
+    env.context = "the axiom";
+    env.allowElements = false;
+    env.allowLocals = false;
+    for (const auto& s : d.body) {
+        const auto* n = asNode(s);
+        if (!n) continue;
+        if (auto [it, inserted] = names.emplace(n->name.name, n->name.span); !inserted) {
+            auto& diag = g.diags.error(n->name.span, "`" + n->name.name + "` is already declared in the axiom");
+            diag.notes.push_back({it->second, "previous declaration is here"});
+            continue;
+        }
+        ir::AxiomNode node;
+        node.name = n->name.name;
+        node.span = n->span;
+        if (n->wildcard) {
+            g.diags.error(n->kindSpan, "wildcard nodes (`*`) belong in a rule's match, not in the axiom");
+        } else if (!n->kind) {
+            g.diags.error(n->name.span, "axiom node `" + n->name.name + "` needs a kind: `" + n->name.name + ": Kind`");
+        } else {
+            node.kind = resolveKind(g, *n->kind, ElemClass::Node);
+        }
+        if (n->sketch) g.diags.error(n->sketch->span, "sketch positions (`@`) belong in rules; place axiom nodes with `at`");
+        if (n->where) g.diags.error(n->where->span, "conditions (`where`) belong in a rule's match");
+        if (n->position) {
+            auto p = ec.checkAs(*n->position, kVec2, env, "a position");
+            if (p) node.position = std::move(*p);
+        }
+        if (node.kind >= 0) checkAssignments(g, ec, node.kind, n->assigns, env, node.assigns, node.styles);
+        nodes[node.name] = {static_cast<int>(ax.nodes.size()), n->name.span};
+        ax.nodes.push_back(std::move(node));
+    }
+    for (const auto& s : d.body) {
+        const auto* e = asEdge(s);
+        if (!e) continue;
+        ir::AxiomEdge edge;
+        edge.span = e->span;
+        if (e->name) {
+            edge.name = e->name->name;
+            if (auto [it, inserted] = names.emplace(edge.name, e->name->span); !inserted) {
+                auto& diag = g.diags.error(e->name->span, "`" + edge.name + "` is already declared in the axiom");
+                diag.notes.push_back({it->second, "previous declaration is here"});
+            }
+        }
+        edge.kind = resolveKind(g, e->kind, ElemClass::Edge);
+        checkArrow(g, *e, edge.kind);
+        if (e->where) g.diags.error(e->where->span, "conditions (`where`) belong in a rule's match");
+        auto endpoint = [&](const ast::Ident& id) {
+            auto it = nodes.find(id.name);
+            if (it == nodes.end()) {
+                g.diags.error(id.span, "edge endpoint `" + id.name + "` is not a node of the axiom");
+                return -1;
+            }
+            return it->second.first;
+        };
+        edge.src = endpoint(e->src);
+        edge.dst = endpoint(e->dst);
+        if (e->arrow == ast::EdgeStmt::Arrow::Backward) std::swap(edge.src, edge.dst);
+        if (edge.kind >= 0) checkAssignments(g, ec, edge.kind, e->assigns, env, edge.assigns, edge.styles);
+        ax.edges.push_back(std::move(edge));
+    }
+    g.prog.axiom = std::move(ax);
+}
+
+// ---- rules --------------------------------------------------------------------
+
+namespace {
+
+class RuleChecker {
+public:
+    RuleChecker(Globals& g, ExprChecker& ec, const ast::RuleDecl& d) : g_(g), ec_(ec), d_(d) {}
+
+    void run() {
+        rule_.name = d_.name.name;
+        rule_.span = d_.span;
+        options();
+        match();
+        plan();
+        items();
+        warnUnusedLets();
+        g_.prog.rules.push_back(std::move(rule_));
+    }
+
+private:
+    void options() {
+        std::set<ast::RuleOption::Kind> seen;
+        for (const auto& o : d_.options) {
+            if (!seen.insert(o.kind).second) {
+                g_.diags.error(o.span, "option given twice in rule `" + rule_.name + "`");
+                continue;
+            }
+            switch (o.kind) {
+            case ast::RuleOption::Kind::Priority: rule_.priority = o.priority; break;
+            case ast::RuleOption::Kind::Ordered: rule_.ordered = true; break;
+            case ast::RuleOption::Kind::Parallel: rule_.parallel = true; break;
+            case ast::RuleOption::Kind::Pick:
+                if (o.pick.name == "random") rule_.pick = ir::Pick::Random;
+                else if (o.pick.name == "oldest") rule_.pick = ir::Pick::Oldest;
+                else g_.diags.error(o.pick.span, "unknown match selection `" + o.pick.name + "` (use `random` or `oldest`)");
+                break;
+            }
+        }
+    }
+
+    // Declares pattern nodes (first pass) so edges may name nodes written later.
+    void declarePatternNodes(const std::vector<ast::MatchStmt>& body, std::vector<ir::PatternNode>& out,
+                             int indexBase, bool inNac) {
+        for (const auto& m : body) {
+            const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
+            if (!gs) continue;
+            const auto* n = asNode(*gs);
+            if (!n) continue;
+            if (auto prev = findName(n->name.name)) {
+                reportDuplicate(g_, n->name, *prev);
+                continue;
+            }
+            ir::PatternNode pn;
+            pn.name = n->name.name;
+            pn.span = n->span;
+            pn.sketch = sketchOf(*n);
+            if (n->wildcard) {
+                pn.kind = -1;
+            } else if (!n->kind) {
+                g_.diags.error(n->name.span, std::string(inNac ? "a node of a negative condition" : "match node `" + n->name.name + "`") +
+                                                 " needs a kind (`" + n->name.name + ": Kind`, or `" + n->name.name +
+                                                 ": *` for a wildcard)");
+                continue;
+            } else {
+                pn.kind = resolveKind(g_, *n->kind, ElemClass::Node);
+                if (pn.kind < 0) continue;
+            }
+            if (n->position)
+                g_.diags.error(n->position->span, "a match cannot place nodes (`at`); test positions with `where`");
+            if (n->hasAssignBlock)
+                g_.diags.error(n->span, "a match cannot assign attributes; test them with `where`");
+            ElemBinding b;
+            b.name = pn.name;
+            b.ref = ElemRef{ElemClass::Node, indexBase + static_cast<int>(out.size())};
+            b.kind = pn.kind;
+            b.span = n->name.span;
+            bindings_.push_back(b);
+            out.push_back(std::move(pn));
+        }
+    }
+
+    std::optional<Span> findName(const std::string& name) const {
+        for (const auto& b : bindings_)
+            if (b.name == name) return b.span;
+        for (const auto& l : locals_)
+            if (l.name == name) return l.span;
+        return std::nullopt;
+    }
+
+    int nodeIndex(const std::string& name) const {
+        for (const auto& b : bindings_)
+            if (b.name == name && b.ref.cls == ElemClass::Node) return b.ref.index;
+        return -1;
+    }
+
+    void declarePatternEdges(const std::vector<ast::MatchStmt>& body, std::vector<ir::PatternEdge>& out,
+                             int indexBase, const std::string& where) {
+        for (const auto& m : body) {
+            const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
+            if (!gs) continue;
+            const auto* e = asEdge(*gs);
+            if (!e) continue;
+            ir::PatternEdge pe;
+            pe.span = e->span;
+            pe.kind = resolveKind(g_, e->kind, ElemClass::Edge);
+            bool ok = checkArrow(g_, *e, pe.kind) && pe.kind >= 0;
+            for (const auto* id : {&e->src, &e->dst}) {
+                int idx = nodeIndex(id->name);
+                if (idx < 0) {
+                    bool isEdge = std::any_of(bindings_.begin(), bindings_.end(), [&](const ElemBinding& b) {
+                        return b.name == id->name && b.ref.cls == ElemClass::Edge;
+                    });
+                    g_.diags.error(id->span, isEdge ? "edge endpoint `" + id->name + "` is an edge, not a node"
+                                                    : "edge endpoint `" + id->name + "` is not a node of " + where);
+                    ok = false;
+                }
+                (id == &e->src ? pe.src : pe.dst) = idx;
+            }
+            if (e->arrow == ast::EdgeStmt::Arrow::Backward) std::swap(pe.src, pe.dst);
+            if (!e->assigns.empty())
+                g_.diags.error(e->assigns.front().name.span, "a match cannot assign attributes; test them with `where`");
+            if (e->name) {
+                if (auto prev = findName(e->name->name)) {
+                    reportDuplicate(g_, *e->name, *prev);
+                    ok = false;
+                } else {
+                    pe.name = e->name->name;
+                }
+            }
+            if (!ok) { pe.kind = -1; }
+            const int index = indexBase + static_cast<int>(out.size());
+            if (!pe.name.empty()) {
+                ElemBinding b;
+                b.name = pe.name;
+                b.ref = ElemRef{ElemClass::Edge, index};
+                b.kind = pe.kind;
+                b.span = e->name->span;
+                bindings_.push_back(b);
+            }
+            out.push_back(std::move(pe));
+        }
+    }
+
+    std::optional<ir::Condition> condition(const ast::Expr& expr, const std::string& what) {
+        ExprEnv env;
+        env.context = "a match condition";
+        env.allowRandom = false;
+        env.allowLocals = false;
+        env.elems = &bindings_;
+        std::set<ElemRef> deps;
+        env.deps = &deps;
+        auto e = ec_.checkAs(expr, kBool, env, what);
+        if (!e) return std::nullopt;
+        if (auto v = fold(*e, g_.prog); v && !std::get<bool>(*v)) neverMatches_ = true;
+        return ir::Condition{std::move(*e), std::vector<ElemRef>(deps.begin(), deps.end())};
+    }
+
+    // Per-element `where` clauses of a pattern, then stand-alone ones.
+    void patternConditions(const std::vector<ast::MatchStmt>& body, std::vector<ir::Condition>& out) {
+        for (const auto& m : body) {
+            if (const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt)) {
+                const ast::Expr* w = asNode(*gs) ? asNode(*gs)->where.get() : asEdge(*gs)->where.get();
+                if (w)
+                    if (auto c = condition(*w, "a `where` condition")) out.push_back(std::move(*c));
+            } else if (const auto* ws = std::get_if<ast::WhereStmt>(&m.stmt)) {
+                if (auto c = condition(*ws->cond, "a `where` condition")) out.push_back(std::move(*c));
+            }
+        }
+    }
+
+    void match() {
+        declarePatternNodes(d_.match, rule_.nodes, 0, false);
+        declarePatternEdges(d_.match, rule_.edges, 0, "the match");
+        if (rule_.nodes.empty())
+            g_.diags.error(d_.matchSpan, "the match of rule `" + rule_.name + "` has no nodes");
+        for (std::size_t i = 0; i < rule_.nodes.size(); ++i) {
+            if (rule_.nodes[i].kind >= 0) continue;
+            const bool connected = std::any_of(rule_.edges.begin(), rule_.edges.end(), [&](const ir::PatternEdge& e) {
+                return e.src == static_cast<int>(i) || e.dst == static_cast<int>(i);
+            });
+            if (!connected)
+                g_.diags.error(rule_.nodes[i].span, "wildcard node `" + rule_.nodes[i].name +
+                                                        "` must be an endpoint of an edge of the match");
+        }
+        patternConditions(d_.match, rule_.conditions);
+        const std::size_t outerBindings = bindings_.size();
+        for (const auto& m : d_.match) {
+            const auto* nac = std::get_if<ast::NacBlock>(&m.stmt);
+            if (!nac) continue;
+            ir::NegativeCondition n;
+            n.span = nac->span;
+            n.outerNodes = static_cast<int>(rule_.nodes.size());
+            n.outerEdges = static_cast<int>(rule_.edges.size());
+            for (const auto& inner : nac->body)
+                if (const auto* nested = std::get_if<ast::NacBlock>(&inner.stmt))
+                    g_.diags.error(nested->span, "negative conditions (`not { … }`) cannot be nested");
+            if (nac->body.empty())
+                g_.diags.error(nac->span, "empty negative condition: `not { }` would reject every match");
+            declarePatternNodes(nac->body, n.nodes, n.outerNodes, true);
+            declarePatternEdges(nac->body, n.edges, n.outerEdges, "the match or this negative condition");
+            patternConditions(nac->body, n.conditions);
+            // NAC names are visible only inside the NAC.
+            for (std::size_t i = outerBindings; i < bindings_.size(); ++i) nacNames_[bindings_[i].name] = bindings_[i].span;
+            bindings_.resize(outerBindings);
+            rule_.nacs.push_back(std::move(n));
+        }
+    }
+
+    void plan() {
+        rule_.plan = buildSearchPlan(rule_.nodes, rule_.edges, rule_.conditions, 0, 0, 0);
+        for (auto& n : rule_.nacs)
+            n.plan = buildSearchPlan(n.nodes, n.edges, n.conditions, n.outerNodes, n.outerEdges,
+                                     static_cast<int>(rule_.nodes.size()));
+    }
+
+    bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {
+        if (auto prev = findName(l.name.name)) {
+            reportDuplicate(g_, l.name, *prev);
+            return false;
+        }
+        ExprEnv env;
+        env.context = "a let";
+        env.locals = &locals_;
+        env.elems = &elems;
+        std::optional<ir::Expr> v;
+        if (l.type) {
+            auto t = resolveType(g_, *l.type);
+            if (!t) return false;
+            v = ec_.checkAs(*l.value, *t, env, "`" + l.name.name + "`");
+        } else {
+            v = ec_.check(*l.value, env);
+        }
+        if (!v) return false;
+        const int slot = rule_.localSlots++;
+        locals_.push_back(LocalVar{l.name.name, v->type, slot, false, l.name.span, false});
+        out.push_back(ir::Let{slot, l.name.name, std::move(*v)});
+        return true;
+    }
+
+    void items() {
+        bool anyProduce = false;
+        for (const auto& item : d_.items) {
+            if (const auto* l = std::get_if<ast::LetStmt>(&item.item)) {
+                if (anyProduce)
+                    g_.diags.error(l->span, "rule-level `let` must come before the `produce` blocks");
+                let(*l, rule_.lets, bindings_);
+                continue;
+            }
+            anyProduce = true;
+            produce(std::get<ast::ProduceBlock>(item.item));
+        }
+        if (!anyProduce)
+            g_.diags.error(d_.name.span, "rule `" + rule_.name + "` has no `produce` block (write `produce { }` to "
+                                                                 "delete the whole match)");
+    }
+
+    void weight(const ast::ProduceBlock& p, ir::Daughter& dg) {
+        if (!p.weight) { dg.weight = 1.0; return; }
+        ExprEnv env;
+        env.context = "a weight (weights are constants: literals, constants and parameters)";
+        env.allowRandom = false;
+        env.allowLocals = false;
+        env.allowElements = false;
+        std::vector<LocalVar> none;
+        env.locals = &none;
+        env.elems = &bindings_;
+        auto w = ec_.checkAs(*p.weight, kFloat, env, "a weight");
+        if (!w) return;
+        if (auto v = fold(*w, g_.prog)) {
+            const double x = asNumber(*v);
+            if (!(x > 0)) {
+                g_.diags.error(p.weight->span, "a weight must be positive, but this is " + fmtNumber(x));
+                return;
+            }
+            dg.weight = x;
+        }
+        dg.weightExpr = std::move(*w);
+    }
+
+    static std::string fmtNumber(double x) {
+        std::string s = std::to_string(x);
+        while (s.size() > 1 && s.back() == '0') s.pop_back();
+        if (!s.empty() && s.back() == '.') s.pop_back();
+        return s;
+    }
+
+    const ir::PatternEdge* motherEdge(const std::string& name, int* index) const {
+        for (std::size_t i = 0; i < rule_.edges.size(); ++i)
+            if (!rule_.edges[i].name.empty() && rule_.edges[i].name == name) {
+                if (index) *index = static_cast<int>(i);
+                return &rule_.edges[i];
+            }
+        return nullptr;
+    }
+
+    void unboundName(const ast::Ident& id, const std::string& what) {
+        if (auto it = nacNames_.find(id.name); it != nacNames_.end()) {
+            auto& d = g_.diags.error(id.span, "`" + id.name + "` belongs to a negative condition, which binds nothing "
+                                                              "the daughter could use");
+            d.notes.push_back({it->second, "declared here"});
+            return;
+        }
+        for (const auto& l : locals_)
+            if (l.name == id.name) {
+                g_.diags.error(id.span, "`" + id.name + "` is a value (`let`), not " + what);
+                return;
+            }
+        std::vector<std::string> candidates;
+        for (const auto& b : bindings_) candidates.push_back(b.name);
+        g_.diags.error(id.span, "unknown name `" + id.name + "`: it is not " + what + " of the match or this daughter" +
+                                    suggest(id.name, candidates));
+    }
+
+    void produce(const ast::ProduceBlock& p) {
+        ir::Daughter dg;
+        dg.span = p.span;
+        weight(p, dg);
+        const std::size_t localsBefore = locals_.size();
+        // Expressions in the daughter read the matched elements; new ones are not readable.
+        std::vector<ElemBinding> elems = bindings_;
+        std::map<int, int> keptNodes;       // mother node -> daughter node
+        std::map<int, int> keptEdges;       // mother edge -> daughter edge
+        std::map<std::string, Span> named;  // names used in this daughter
+        std::map<std::string, int> newNodes;
+        auto claim = [&](const ast::Ident& id) {
+            if (auto [it, inserted] = named.emplace(id.name, id.span); !inserted) {
+                auto& d = g_.diags.error(id.span, "`" + id.name + "` appears twice in this daughter");
+                d.notes.push_back({it->second, "first appears here"});
+                return false;
+            }
+            return true;
+        };
+        // Pass 1: lets (in order) and nodes (so edges can name nodes written later).
+        struct PendingNode { const ast::NodeStmt* stmt; int index; };
+        std::vector<PendingNode> pendingNodes;
+        std::vector<std::pair<const ast::NodeStmt*, int>> keptEdgeStmts;
+        for (const auto& s : p.body) {
+            if (std::holds_alternative<ast::LetStmt>(s.stmt)) continue;
+            const auto* n = asNode(std::get<ast::GraphStmt>(s.stmt));
+            if (!n) continue;
+            if (n->where) g_.diags.error(n->where->span, "conditions (`where`) belong in the match");
+            const int mother = nodeIndex(n->name.name);
+            int motherEdgeIndex = -1;
+            if (mother < 0 && motherEdge(n->name.name, &motherEdgeIndex)) {
+                // `old;` or `old { … };` keeps a mother edge.
+                if (!claim(n->name)) continue;
+                if (n->kind || n->wildcard || n->sketch || n->position)
+                    g_.diags.error(n->name.span, "`" + n->name.name + "` is an edge of the match; keep it with `" +
+                                                     n->name.name + ";` or `" + n->name.name + " { … };`");
+                keptEdgeStmts.push_back({n, motherEdgeIndex});
+                continue;
+            }
+            if (!claim(n->name)) continue;
+            ir::DaughterNode dn;
+            dn.name = n->name.name;
+            dn.span = n->span;
+            dn.sketch = sketchOf(*n);
+            if (mother >= 0) {
+                const auto& mn = rule_.nodes[mother];
+                dn.motherNode = mother;
+                dn.kind = mn.kind;
+                if (n->wildcard) {
+                    g_.diags.error(n->kindSpan, "`*` (wildcard) can only be used in a match");
+                } else if (n->kind) {
+                    int k = resolveKind(g_, *n->kind, ElemClass::Node);
+                    if (k >= 0 && k != mn.kind) {
+                        auto& d = g_.diags.error(n->kind->span, "kept node `" + dn.name + "` cannot change its kind from `" +
+                                                                   (mn.kind < 0 ? std::string("*") : g_.prog.kinds[mn.kind].name) +
+                                                                   "` to `" + n->kind->name + "`");
+                        d.notes.push_back({mn.span, "matched here"});
+                    }
+                }
+                if (!dn.sketch) dn.sketch = mn.sketch;
+                if (mn.kind < 0 && (n->position || n->hasAssignBlock))
+                    g_.diags.error(n->span, "wildcard node `" + dn.name + "` is left unchanged by the production; it "
+                                                                          "cannot be moved or assigned");
+                keptNodes[mother] = static_cast<int>(dg.nodes.size());
+            } else {
+                if (n->wildcard) {
+                    g_.diags.error(n->kindSpan, "`*` (wildcard) can only be used in a match");
+                    continue;
+                }
+                if (!n->kind) {
+                    if (nacNames_.count(n->name.name) || findName(n->name.name)) unboundName(n->name, "a node");
+                    else
+                        g_.diags.error(n->name.span, "unknown name `" + n->name.name + "`: a new node needs a kind (`" +
+                                                         n->name.name + ": Kind`)" + suggestElement(n->name.name));
+                    continue;
+                }
+                if (auto it = nacNames_.find(n->name.name); it != nacNames_.end()) {
+                    unboundName(n->name, "a node");
+                    continue;
+                }
+                dn.kind = resolveKind(g_, *n->kind, ElemClass::Node);
+                if (dn.kind < 0) continue;
+                if (!n->position && !n->sketch) {
+                    g_.diags.error(n->name.span, "new node `" + dn.name + "` needs a position: `at EXPR`, or a sketch "
+                                                                          "position `@ (x, y)` for automatic placement");
+                }
+                if (!n->position && n->sketch) dg.autoPlacement = true;
+                newNodes[dn.name] = static_cast<int>(dg.nodes.size());
+                ElemBinding b;
+                b.name = dn.name;
+                b.ref = ElemRef{ElemClass::Node, -1};
+                b.kind = dn.kind;
+                b.span = n->name.span;
+                b.unreadable = "`" + dn.name + "` is created by this production; expressions can read only the "
+                                                "matched elements (their values before the step)";
+                elems.push_back(b);
+            }
+            pendingNodes.push_back({n, static_cast<int>(dg.nodes.size())});
+            dg.nodes.push_back(std::move(dn));
+        }
+        // Pass 2: lets, node attributes and positions, edges, in order.
+        auto exprEnv = [&]() {
+            ExprEnv env;
+            env.context = "a daughter";
+            env.locals = &locals_;
+            env.elems = &elems;
+            return env;
+        };
+        auto daughterNode = [&](const ast::Ident& id) -> int {
+            if (auto it = newNodes.find(id.name); it != newNodes.end()) return it->second;
+            const int mother = nodeIndex(id.name);
+            if (mother >= 0) {
+                if (auto it = keptNodes.find(mother); it != keptNodes.end()) return it->second;
+                // Naming a mother node as an endpoint keeps it.
+                ir::DaughterNode dn;
+                dn.name = id.name;
+                dn.motherNode = mother;
+                dn.kind = rule_.nodes[mother].kind;
+                dn.sketch = rule_.nodes[mother].sketch;
+                dn.span = id.span;
+                keptNodes[mother] = static_cast<int>(dg.nodes.size());
+                named.emplace(id.name, id.span);
+                dg.nodes.push_back(std::move(dn));
+                return keptNodes[mother];
+            }
+            int edgeIdx = -1;
+            if (motherEdge(id.name, &edgeIdx)) {
+                g_.diags.error(id.span, "edge endpoint `" + id.name + "` is an edge, not a node");
+                return -1;
+            }
+            unboundName(id, "a node");
+            return -1;
+        };
+        std::size_t nodeCursor = 0;
+        for (const auto& s : p.body) {
+            if (const auto* l = std::get_if<ast::LetStmt>(&s.stmt)) {
+                let(*l, dg.lets, elems);
+                continue;
+            }
+            const auto& gs = std::get<ast::GraphStmt>(s.stmt);
+            if (const auto* n = asNode(gs)) {
+                if (nodeCursor < pendingNodes.size() && pendingNodes[nodeCursor].stmt == n) {
+                    auto& dn = dg.nodes[pendingNodes[nodeCursor].index];
+                    ++nodeCursor;
+                    if (n->position) {
+                        auto pos = ec_.checkAs(*n->position, kVec2, exprEnv(), "a position");
+                        if (pos) dn.position = std::move(*pos);
+                    }
+                    if (dn.kind >= 0) checkAssignments(g_, ec_, dn.kind, n->assigns, exprEnv(), dn.assigns, dn.styles);
+                    continue;
+                }
+                for (const auto& [stmt, motherIndex] : keptEdgeStmts) {
+                    if (stmt != n) continue;
+                    const auto& me = rule_.edges[motherIndex];
+                    ir::DaughterEdge de;
+                    de.name = me.name;
+                    de.motherEdge = motherIndex;
+                    de.kind = me.kind;
+                    de.span = n->span;
+                    de.src = keepEndpointOf(me.src, dg, keptNodes, named);
+                    de.dst = keepEndpointOf(me.dst, dg, keptNodes, named);
+                    if (me.kind >= 0) checkAssignments(g_, ec_, me.kind, n->assigns, exprEnv(), de.assigns, de.styles);
+                    keptEdges[motherIndex] = static_cast<int>(dg.edges.size());
+                    dg.edges.push_back(std::move(de));
+                }
+                continue;
+            }
+            const auto* e = asEdge(gs);
+            ir::DaughterEdge de;
+            de.span = e->span;
+            de.kind = resolveKind(g_, e->kind, ElemClass::Edge);
+            checkArrow(g_, *e, de.kind);
+            if (e->where) g_.diags.error(e->where->span, "conditions (`where`) belong in the match");
+            if (e->name) {
+                if (!claim(*e->name)) continue;
+                de.name = e->name->name;
+                int mi = -1;
+                if (motherEdge(de.name, &mi)) {
+                    de.motherEdge = mi;
+                    const auto& me = rule_.edges[mi];
+                    if (de.kind >= 0 && me.kind >= 0 && de.kind != me.kind) {
+                        auto& d = g_.diags.error(e->kind.span, "kept edge `" + de.name + "` cannot change its kind from `" +
+                                                                   g_.prog.kinds[me.kind].name + "` to `" +
+                                                                   e->kind.name + "`");
+                        d.notes.push_back({me.span, "matched here"});
+                    }
+                    keptEdges[mi] = static_cast<int>(dg.edges.size());
+                } else if (nodeIndex(de.name) >= 0 || newNodes.count(de.name)) {
+                    g_.diags.error(e->name->span, "`" + de.name + "` is a node, not an edge");
+                    continue;
+                } else if (nacNames_.count(de.name)) {
+                    unboundName(*e->name, "an edge");
+                    continue;
+                }
+            }
+            de.src = daughterNode(e->src);
+            de.dst = daughterNode(e->dst);
+            if (e->arrow == ast::EdgeStmt::Arrow::Backward) std::swap(de.src, de.dst);
+            if (de.kind >= 0) checkAssignments(g_, ec_, de.kind, e->assigns, exprEnv(), de.assigns, de.styles);
+            dg.edges.push_back(std::move(de));
+        }
+        // Wildcards are always kept.
+        for (std::size_t i = 0; i < rule_.nodes.size(); ++i)
+            if (rule_.nodes[i].kind < 0 && !keptNodes.count(static_cast<int>(i)))
+                keepEndpointOf(static_cast<int>(i), dg, keptNodes, named);
+        for (std::size_t i = 0; i < rule_.nodes.size(); ++i)
+            if (!keptNodes.count(static_cast<int>(i))) dg.deletedNodes.push_back(static_cast<int>(i));
+        for (std::size_t i = 0; i < rule_.edges.size(); ++i)
+            if (!keptEdges.count(static_cast<int>(i))) dg.deletedEdges.push_back(static_cast<int>(i));
+        checkKeptEdgeEndpoints(dg);
+        checkAutoPlacement(dg);
+        // Daughter-level lets go out of scope; warn about unused ones now.
+        for (std::size_t i = localsBefore; i < locals_.size(); ++i) finishedLocals_.push_back(locals_[i]);
+        locals_.resize(localsBefore);
+        rule_.daughters.push_back(std::move(dg));
+    }
+
+    std::string suggestElement(const std::string& name) {
+        std::vector<std::string> candidates;
+        for (const auto& b : bindings_) candidates.push_back(b.name);
+        return suggest(name, candidates);
+    }
+
+    // The daughter node for a kept mother node, keeping it if needed.
+    int keepEndpointOf(int mother, ir::Daughter& dg, std::map<int, int>& keptNodes,
+                       std::map<std::string, Span>& named) {
+        if (mother < 0) return -1;
+        if (auto it = keptNodes.find(mother); it != keptNodes.end()) return it->second;
+        const auto& mn = rule_.nodes[mother];
+        if (mn.kind >= 0) return -2;  // not kept: reported by checkKeptEdgeEndpoints
+        ir::DaughterNode dn;
+        dn.name = mn.name;
+        dn.motherNode = mother;
+        dn.kind = mn.kind;
+        dn.sketch = mn.sketch;
+        dn.span = mn.span;
+        keptNodes[mother] = static_cast<int>(dg.nodes.size());
+        named.emplace(mn.name, mn.span);
+        dg.nodes.push_back(std::move(dn));
+        return keptNodes[mother];
+    }
+
+    void checkKeptEdgeEndpoints(ir::Daughter& dg) {
+        for (auto& de : dg.edges) {
+            if (de.motherEdge < 0 || (de.src != -2 && de.dst != -2)) continue;
+            const auto& me = rule_.edges[de.motherEdge];
+            const auto& lost = rule_.nodes[de.src == -2 ? me.src : me.dst];
+            auto& d = g_.diags.error(de.span, "edge `" + de.name + "` is kept, but its endpoint `" + lost.name +
+                                                  "` is deleted by this daughter; keep `" + lost.name +
+                                                  "` too (name it), or reconnect the edge");
+            d.notes.push_back({lost.span, "`" + lost.name + "` is matched here"});
+            de.src = de.dst = -1;
+        }
+    }
+
+    void checkAutoPlacement(const ir::Daughter& dg) {
+        if (!dg.autoPlacement) return;
+        for (const auto& mn : rule_.nodes) {
+            if (mn.sketch) continue;
+            auto& d = g_.diags.error(mn.span, "automatic placement needs a sketch position for every matched node: "
+                                              "give `" + mn.name + "` one with `@ (x, y)`");
+            d.notes.push_back({dg.span, "a new node of this daughter is placed automatically"});
+            return;
+        }
+    }
+
+    void warnUnusedLets() {
+        for (const auto& l : locals_) finishedLocals_.push_back(l);
+        for (const auto& l : finishedLocals_)
+            if (!l.used && l.span.file == g_.mainFile)
+                g_.diags.warning(l.span, "`" + l.name + "` is never used");
+        if (rule_.ordered)
+            for (const auto& n : rule_.nodes)
+                if (!n.sketch) {
+                    g_.diags.error(n.span, "rule `" + rule_.name + "` is `ordered`: every matched node needs a sketch "
+                                                                  "position; give `" + n.name + "` one with `@ (x, y)`");
+                    break;
+                }
+        if (neverMatches_ && d_.name.span.file == g_.mainFile)
+            g_.diags.warning(d_.name.span, "rule `" + rule_.name + "` can never match: one of its conditions is always false");
+    }
+
+    Globals& g_;
+    ExprChecker& ec_;
+    const ast::RuleDecl& d_;
+    ir::Rule rule_;
+    std::vector<ElemBinding> bindings_;          // match elements
+    std::map<std::string, Span> nacNames_;       // names declared inside negative conditions
+    std::vector<LocalVar> locals_;               // lets in scope
+    std::vector<LocalVar> finishedLocals_;       // lets out of scope, for the unused warning
+    bool neverMatches_ = false;
+};
+
+}  // namespace
+
+void checkRule(Globals& g, ExprChecker& ec, const ast::RuleDecl& d) { RuleChecker(g, ec, d).run(); }
+
+}  // namespace g2d::sema

@@ -1,0 +1,46 @@
+#include "sema/lint.hpp"
+
+#include <set>
+
+namespace g2d::sema {
+
+void lintProgram(Globals& g) {
+    const ir::Program& p = g.prog;
+    // Kinds never change, so an element kind exists only if the axiom or some daughter creates it.
+    std::set<int> created;
+    for (const auto& n : p.axiom.nodes) created.insert(n.kind);
+    for (const auto& e : p.axiom.edges) created.insert(e.kind);
+    for (const auto& r : p.rules)
+        for (const auto& d : r.daughters) {
+            for (const auto& n : d.nodes)
+                if (n.motherNode < 0) created.insert(n.kind);
+            for (const auto& e : d.edges)
+                if (e.motherEdge < 0) created.insert(e.kind);
+        }
+    for (const auto& r : p.rules) {
+        if (r.span.file != g.mainFile) continue;
+        auto missing = [&](int kind) { return kind >= 0 && !created.count(kind); };
+        std::string why;
+        for (const auto& n : r.nodes)
+            if (missing(n.kind)) { why = "node kind `" + p.kinds[n.kind].name + "`"; break; }
+        if (why.empty())
+            for (const auto& e : r.edges)
+                if (missing(e.kind)) { why = "edge kind `" + p.kinds[e.kind].name + "`"; break; }
+        if (!why.empty())
+            g.diags.warning(r.span, "rule `" + r.name + "` can never match: no element of " + why +
+                                        " is ever created (the axiom has none and no rule makes one)");
+    }
+    std::set<long long> used;
+    for (const auto& r : p.rules) used.insert(r.priority);
+    for (const auto& [prio, cfg] : p.priorities)
+        if (!used.count(prio) && cfg.span.file == g.mainFile)
+            g.diags.warning(cfg.span, "no rule has priority " + std::to_string(prio));
+    for (std::size_t i = 0; i < p.params.size(); ++i)
+        if (!g.paramUsed[i] && g.paramFile[i] == g.mainFile)
+            g.diags.warning(p.params[i].span, "parameter `" + p.params[i].name + "` is never used");
+    for (std::size_t i = 0; i < p.consts.size(); ++i)
+        if (!g.constUsed[i] && g.constFile[i] == g.mainFile)
+            g.diags.warning(p.consts[i].span, "constant `" + p.consts[i].name + "` is never used");
+}
+
+}  // namespace g2d::sema

@@ -1,0 +1,19 @@
+#pragma once
+// Builds the search plan of a pattern (GrGen style): bind the most selective
+// element first, then walk incidences, testing each condition as soon as
+// every element it reads is bound.
+#include <vector>
+
+#include "ir/ir.hpp"
+
+namespace g2d::sema {
+
+// `nodes` and `edges` are numbered from nodeBase and edgeBase (a negative
+// condition extends its rule's match: nodes below nodeBase and edges below
+// edgeBase are already bound).
+std::vector<ir::PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
+                                          const std::vector<ir::PatternEdge>& edges,
+                                          const std::vector<ir::Condition>& conditions, int nodeBase,
+                                          int edgeBase, int boundOuterNodes);
+
+}  // namespace g2d::sema

@@ -1,0 +1,84 @@
+#include "sema/sema.hpp"
+
+#include "sema/decl_checker.hpp"
+#include "sema/graph_checker.hpp"
+#include "sema/lint.hpp"
+
+namespace g2d {
+
+using namespace sema;
+
+std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& programs, Diagnostics& diags) {
+    ir::Program prog;
+    Globals g(prog, diags);
+    if (!programs.empty()) g.mainFile = programs.back()->file;
+    ExprChecker ec(g);
+    const std::size_t errorsBefore = diags.errorCount();
+
+    auto each = [&](auto&& fn) {
+        for (const auto* p : programs)
+            for (const auto& d : p->decls) std::visit(fn, d.decl);
+    };
+    // Types first: enums and kind names may be used before their declaration.
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::EnumDecl>) declareEnum(g, d);
+        else if constexpr (std::is_same_v<T, ast::KindDecl>) declareKindName(g, d);
+    });
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::ParamDecl>) checkParam(g, ec, d);
+    });
+    // Constants and functions in order: each sees only those declared before it.
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::ConstDecl>) checkConst(g, ec, d);
+        else if constexpr (std::is_same_v<T, ast::FnDecl>) checkFunction(g, ec, d);
+    });
+    g.constsDeclared = static_cast<int>(prog.consts.size());
+    g.functionsDeclared = static_cast<int>(prog.functions.size());
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::KindDecl>) checkKindBody(g, ec, d);
+    });
+    bool limitSeen = false;
+    const ast::AxiomDecl* axiom = nullptr;
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::LimitDecl>) {
+            checkLimit(g, ec, d, limitSeen);
+        } else if constexpr (std::is_same_v<T, ast::PriorityDecl>) {
+            checkPriority(g, ec, d);
+        } else if constexpr (std::is_same_v<T, ast::DefsDecl>) {
+            prog.svgDefs.push_back(d.svg);
+        } else if constexpr (std::is_same_v<T, ast::AxiomDecl>) {
+            if (axiom) {
+                auto& diag = diags.error(d.span, "a grammar has exactly one axiom, but this is a second one");
+                diag.notes.push_back({axiom->span, "the first axiom is here"});
+            } else {
+                axiom = &d;
+                checkAxiom(g, ec, d);
+            }
+        }
+    });
+    if (!axiom && !programs.empty()) {
+        Span at{programs.back()->file, 0, 0, 0, 0};
+        diags.error(at, "the grammar has no `axiom { … }`: there is no graph to start from");
+    }
+    std::map<std::string, Span> ruleNames;
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::RuleDecl>) {
+            if (auto [it, inserted] = ruleNames.emplace(d.name.name, d.name.span); !inserted) {
+                auto& diag = diags.error(d.name.span, "a rule named `" + d.name.name + "` already exists");
+                diag.notes.push_back({it->second, "the first one is here"});
+            }
+            checkRule(g, ec, d);
+        }
+    });
+    if (diags.errorCount() > errorsBefore) return std::nullopt;
+    lintProgram(g);
+    return prog;
+}
+
+}  // namespace g2d

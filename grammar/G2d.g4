@@ -1,0 +1,147 @@
+// The .g2d language: graph grammars that generate 2D shapes.
+// The parse tree never leaves compiler/parse: it is converted to our own AST.
+grammar G2d;
+
+program     : topDecl* EOF ;
+
+topDecl
+    : importDecl
+    | paramDecl
+    | constDecl
+    | enumDecl
+    | kindDecl
+    | fnDecl
+    | axiomDecl
+    | limitDecl
+    | priorityDecl
+    | defsDecl
+    | ruleDecl
+    ;
+
+importDecl  : 'import' STRING ';' ;
+paramDecl   : 'param' ID ':' typeRef '=' expr ';' ;
+constDecl   : 'const' ID (':' typeRef)? '=' expr ';' ;
+enumDecl    : 'enum' ID '{' ID (',' ID)* ','? '}' ;
+fnDecl      : 'fn' ID '(' (fnParam (',' fnParam)*)? ')' '->' typeRef '=' expr ';' ;
+fnParam     : ID ':' typeRef ;
+limitDecl   : 'limit' expr ';' ;
+priorityDecl: 'priority' signedInt priorityOption+ ';' ;
+priorityOption
+    : 'limit' expr      # priorityLimit
+    | 'parallel'        # priorityParallel
+    ;
+defsDecl    : 'defs' STRING ';' ;
+
+typeRef     : ID ;
+
+// ---- kinds -----------------------------------------------------------------
+kindDecl
+    : 'node' ID kindBody                                  # nodeKind
+    | 'edge' ID (DIRECTED='directed' | UNDIRECTED='undirected')? kindBody  # edgeKind
+    ;
+kindBody    : '{' kindMember* '}' | ';' ;
+kindMember
+    : ID ':' typeRef ('=' expr)? ';'                      # attrDecl
+    | 'style' '{' styleProp* '}'                          # styleBlock
+    ;
+styleProp   : ID '=' expr ';' ;
+
+// ---- graphs ----------------------------------------------------------------
+axiomDecl   : 'axiom' '{' graphStmt* '}' ;
+
+graphStmt
+    : nodeStmt
+    | edgeStmt
+    ;
+
+// name: Kind [@ sketch] [at position] [{ assignments }] [where condition] ;
+// name [@ sketch] [at position] [{ assignments }] ;   (a kept element in a daughter)
+nodeStmt
+    : ID (':' (kind=ID | wild='*'))? sketch? position? assignments? whereClause? ';'
+    ;
+sketch      : '@' '(' signedNumber ',' signedNumber ')' ;
+position    : 'at' expr ;
+assignments : '{' (assignment (',' assignment)* ','?)? '}' ;
+assignment  : (isStyle='style' '.')? ID '=' expr ;
+whereClause : 'where' expr ;
+
+// [name:] a -[Kind {..}]-> b   directed,   a -[Kind]- b   undirected
+edgeStmt
+    : (name=ID ':')? src=ID edgeArrow dst=ID whereClause? ';'
+    ;
+edgeArrow
+    : '-[' edgeLabel ']->'     # directedArrow
+    | '<-[' edgeLabel ']-'     # reversedArrow
+    | '-[' edgeLabel ']-'      # undirectedArrow
+    ;
+edgeLabel   : ID assignments? ;
+
+// ---- rules -----------------------------------------------------------------
+ruleDecl    : 'rule' ID ruleOption* '{' matchBlock ruleItem* '}' ;
+ruleOption
+    : 'priority' signedInt          # rulePriority
+    | 'pick' ID                     # rulePick
+    | 'ordered'                     # ruleOrdered
+    | 'parallel'                    # ruleParallel
+    ;
+matchBlock  : 'match' '{' matchStmt* '}' ;
+matchStmt
+    : graphStmt                     # matchGraph
+    | 'where' expr ';'              # matchWhere
+    | 'not' '{' matchStmt* '}'      # matchNac
+    ;
+ruleItem
+    : letStmt
+    | produceBlock
+    ;
+letStmt     : 'let' ID (':' typeRef)? '=' expr ';' ;
+produceBlock: 'produce' ('weight' expr)? '{' produceStmt* '}' ;
+produceStmt
+    : letStmt
+    | graphStmt
+    ;
+
+// ---- expressions (lowest precedence last) ----------------------------------
+expr
+    : primary                                               # primaryExpr
+    | expr '.' ID                                           # memberExpr
+    | op=('-' | '+' | '!') expr                             # unaryExpr
+    | expr op=('*' | '/' | '%') expr                        # mulExpr
+    | expr op=('+' | '-') expr                              # addExpr
+    | expr op=('<' | '<=' | '>' | '>=') expr                # relExpr
+    | expr op=('==' | '!=') expr                            # eqExpr
+    | op='not' expr                                         # notExpr
+    | expr op=('and' | '&&') expr                           # andExpr
+    | expr op=('or' | '||') expr                            # orExpr
+    | <assoc=right> expr '?' expr ':' expr                  # condExpr
+    ;
+
+primary
+    : INT                                                   # intLit
+    | FLOAT                                                 # floatLit
+    | STRING                                                # stringLit
+    | ('true' | 'false')                                    # boolLit
+    | ID '(' (expr (',' expr)*)? ')'                        # callExpr
+    | ID                                                    # nameExpr
+    | '(' expr ',' expr ')'                                 # vecLit
+    | '(' expr ')'                                          # parenExpr
+    ;
+
+signedInt   : '-'? INT ;
+signedNumber: '-'? (INT | FLOAT) ;
+
+// ---- lexer -----------------------------------------------------------------
+ID          : [a-zA-Z_] [a-zA-Z_0-9]* ;
+FLOAT       : DIGITS '.' DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
+INT         : DIGITS ;
+fragment DIGITS   : [0-9]+ ;
+fragment EXPONENT : [eE] [+-]? DIGITS ;
+STRING      : '"' ( ~["\\\r\n] | '\\' . )* '"' ;
+LINE_COMMENT  : '//' ~[\r\n]* -> skip ;
+BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
+WS          : [ \t\r\n\f]+ -> skip ;
+// Unterminated constructs and stray characters become tokens so that the
+// parser, not the lexer, reports them in words.
+UNTERMINATED_STRING  : '"' ( ~["\\\r\n] | '\\' . )* ;
+UNTERMINATED_COMMENT : '/*' .*? EOF ;
+ERRCHAR     : . ;
