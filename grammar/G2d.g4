@@ -143,5 +143,5 @@ WS          : [ \t\r\n\f]+ -> skip ;
 // Unterminated constructs and stray characters become tokens so that the
 // parser, not the lexer, reports them in words.
 UNTERMINATED_STRING  : '"' ( ~["\\\r\n] | '\\' . )* ;
-UNTERMINATED_COMMENT : '/*' .*? EOF ;
+UNTERMINATED_COMMENT : '/*' ( ~'*' | '*'+ ~[*/] )* '*'* EOF ;   // contains no `*/`
 ERRCHAR     : . ;

@@ -48,7 +48,8 @@ const char* factNames[] = {"pos", "age", "id", "degree", "in_degree", "out_degre
 
 std::string suggest(const std::string& name, const std::vector<std::string>& candidates) {
     std::string best;
-    std::size_t bestDistance = std::max<std::size_t>(1, name.size() / 3) + 1;
+    // Allow one edit per three characters, so one-letter names get no guesses.
+    std::size_t bestDistance = (name.size() + 1) / 3 + 1;
     for (const auto& c : candidates) {
         std::size_t d = editDistance(name, c);
         if (d < bestDistance) { bestDistance = d; best = c; }

@@ -352,7 +352,11 @@ private:
     void match() {
         declarePatternNodes(d_.match, rule_.nodes, 0, false);
         declarePatternEdges(d_.match, rule_.edges, 0, "the match");
-        if (rule_.nodes.empty())
+        const bool anyNodeStmt = std::any_of(d_.match.begin(), d_.match.end(), [](const ast::MatchStmt& m) {
+            const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
+            return gs && asNode(*gs);
+        });
+        if (!anyNodeStmt)
             g_.diags.error(d_.matchSpan, "the match of rule `" + rule_.name + "` has no nodes");
         for (std::size_t i = 0; i < rule_.nodes.size(); ++i) {
             if (rule_.nodes[i].kind >= 0) continue;

@@ -39,6 +39,12 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
         return d;
     };
 
+    auto ownConditions = [&](int node) {
+        for (const auto& c : conditions)
+            if (c.deps.size() == 1 && c.deps[0] == ir::ElemRef{ir::ElemClass::Node, node}) return true;
+        return false;
+    };
+
     placeConditions();
     const std::size_t total = nodes.size() + edges.size();
     std::size_t placed = 0;
@@ -91,7 +97,9 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
             for (std::size_t i = 0; i < nodes.size(); ++i) {
                 const int ni = nodeBase + static_cast<int>(i);
                 if (boundNodes.count(ni)) continue;
-                const int score = (nodes[i].kind >= 0 ? 1000 : 0) + degree(ni);
+                // Typed nodes first, then nodes with their own conditions (they prune
+                // before any walking), then the best connected.
+                const int score = (nodes[i].kind >= 0 ? 1000 : 0) + (ownConditions(ni) ? 100 : 0) + degree(ni);
                 if (score > bestScore) { bestScore = score; best = ni; }
             }
             if (best < 0) break;  // only edges with unknown endpoints remain (already reported)

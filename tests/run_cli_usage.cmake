@@ -1,0 +1,10 @@
+# Bad command-line arguments are usage errors: exit code 2 with a message.
+foreach(args "check" "frobnicate" "check;--diagnostics-format;xml;x.g2d" "check;--no-such-flag;x.g2d")
+  execute_process(COMMAND "${G2D}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2)
+    message(FATAL_ERROR "g2d ${args}: expected exit code 2, got '${rc}'\n${out}${err}")
+  endif()
+  if(err STREQUAL "")
+    message(FATAL_ERROR "g2d ${args}: no message on stderr")
+  endif()
+endforeach()

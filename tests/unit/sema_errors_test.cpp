@@ -1,0 +1,205 @@
+// Every compile-time diagnostic of the checker: its text and its location.
+#include <catch2/catch.hpp>
+
+#include "test_helpers.hpp"
+
+using g2d::test::compile;
+using g2d::test::firstError;
+using g2d::test::prelude;
+
+namespace {
+
+struct Case {
+    const char* what;
+    std::string source;    // appended to the prelude (which has 4 lines)
+    std::string expected;  // "LINE:COL: MESSAGE" of the first error
+};
+
+void checkCases(const std::vector<Case>& cases) {
+    for (const auto& c : cases) {
+        INFO(c.what << "\n" << c.source);
+        auto r = compile(prelude() + c.source);
+        CHECK(firstError(r) == c.expected);
+        CHECK_FALSE(r.program.has_value());
+    }
+}
+
+}  // namespace
+
+TEST_CASE("unknown names are reported with suggestions", "[sema][names]") {
+    checkCases({
+        {"unknown node kind", "rule R { match { x: Q; } produce { } }",
+         "5:21: unknown node kind `Q`"},
+        {"unknown node kind, close to a known one", "rule R { match { x: PP; } produce { } }",
+         "5:21: unknown node kind `PP`; did you mean `P`?"},
+        {"edge kind where a node kind is needed", "rule R { match { x: E; } produce { } }",
+         "5:21: `E` is an edge kind, but a node needs a node kind"},
+        {"unknown attribute", "rule R { match { x: P where x.ww > 0; } produce { x; } }",
+         "5:31: node kind `P` has no attribute `ww`; did you mean `w`?"},
+        {"unknown parameter or name", "rule R { match { x: P where x.w > limitt; } produce { x; } }",
+         "5:35: unknown name `limitt`"},
+        {"unknown function", "rule R { match { x: P where sine(x.w) > 0; } produce { x; } }",
+         "5:29: unknown function `sine`; did you mean `sin`?"},
+        {"unknown type", "param k: integer = 1;", "5:10: unknown type `integer`"},
+        {"unknown enum value", "enum Dir { Up, Down }\nconst d = Dir.Left;", "6:15: enum `Dir` has no value `Left`"},
+        {"element used as a value", "rule R { match { x: P where x > 0; } produce { x; } }",
+         "5:29: `x` is a node, not a value; read one of its attributes or `x.pos` instead"},
+    });
+}
+
+TEST_CASE("type mismatches", "[sema][types]") {
+    checkCases({
+        {"vec2 < float", "rule R { match { x: P where x.pos < 1.0; } produce { x; } }",
+         "5:35: operator `<` cannot combine vec2 and float"},
+        {"string where a number is needed", "const c = \"a\" - 1;", "5:15: operator `-` cannot combine string and int"},
+        {"string + number", "const c = \"a\" + 1;",
+         "5:15: operator `+` cannot combine string and int; convert with str(…) or use format(…)"},
+        {"condition must be bool", "rule R { match { x: P where x.w; } produce { x; } }",
+         "5:29: a `where` condition must be bool, but this is float"},
+        {"attribute assignment", "rule R { match { x: P; } produce { x { w = \"big\" }; } }",
+         "5:44: attribute `w` must be float, but this is string"},
+        {"vec2 * vec2", "const v = (1, 2) * (3, 4);",
+         "5:18: operator `*` cannot multiply two vec2s; use dot(a, b) or cross(a, b)"},
+        {"not on a number", "const b = not 3;", "5:11: `not` needs a bool, but this is int"},
+        {"branches differ", "const c = true ? 1 : \"one\";",
+         "5:11: the two branches of `?:` have different types: int and string"},
+        {"param default type", "param n: int = 2.5;", "5:16: the default of parameter `n` must be int, but this is float"},
+        {"integer overflow", "const big = 99999999999999999999;",
+         "5:13: integer literal is out of range (at most 9223372036854775807)"},
+    });
+}
+
+TEST_CASE("wrong arity and argument types of functions", "[sema][calls]") {
+    checkCases({
+        {"too few arguments", "const v = rotate((1, 0));",
+         "5:11: `rotate` takes 2 to 3 arguments, got 1 (rotate(v: vec2, angle: float[, centre: vec2]) -> vec2)"},
+        {"wrong argument type", "const v = length(3.0);",
+         "5:18: argument 1 of `length` must be vec2, got float (length(v: vec2) -> float)"},
+        {"user function arity", "fn twice(x: float) -> float = 2 * x;\nconst y = twice(1, 2);",
+         "6:11: `twice` takes 1 argument, got 2"},
+        {"format placeholders", "const s = format(\"{} {}\", 1);",
+         "5:18: format template has 2 placeholders but 1 value is given"},
+        {"format template literal", "const t = \"{}\";\nconst s = format(t, 1);",
+         "6:18: the template of `format` must be a string literal"},
+        {"recursion", "fn f(x: int) -> int = f(x - 1);", "5:23: function `f` cannot call itself (no recursion)"},
+        {"random in a match", "rule R { match { x: P where x.w < random(); } produce { x; } }",
+         "5:35: random function `random` cannot be used in a match condition"},
+    });
+}
+
+TEST_CASE("duplicate names", "[sema][duplicates]") {
+    checkCases({
+        {"duplicate kind", "node P;", "5:6: `P` is already declared"},
+        {"duplicate parameter", "param k: int = 1;\nparam k: int = 2;", "6:7: `k` is already declared"},
+        {"duplicate attribute", "node Q { a: int; a: float; }", "5:18: kind `Q` already has an attribute `a`"},
+        {"duplicate element in a match", "rule R { match { x: P; x: P; } produce { } }",
+         "5:24: `x` is already declared in this production"},
+        {"duplicate rule", "rule R { match { x: P; } produce { x; } }\nrule R { match { x: P; } produce { x; } }",
+         "6:6: a rule named `R` already exists"},
+        {"hiding a builtin", "fn sin(x: float) -> float = x;", "5:4: function `sin` would hide the built-in `sin`"},
+        {"second axiom", "axiom { }", "5:1: a grammar has exactly one axiom, but this is a second one"},
+        {"reserved attribute", "node Q { pos: vec2; }",
+         "5:10: `pos` is a built-in fact of every element and cannot be declared as an attribute"},
+    });
+}
+
+TEST_CASE("graph structure errors", "[sema][graphs]") {
+    checkCases({
+        {"edge endpoint not a node", "rule R { match { x: P; x -[E]-> y; } produce { } }",
+         "5:33: edge endpoint `y` is not a node of the match"},
+        {"edge endpoint is an edge", "rule R { match { x: P; y: P; e: x -[E]-> y; x -[E]-> e; } produce { } }",
+         "5:54: edge endpoint `e` is an edge, not a node"},
+        {"directed kind, undirected arrow", "rule R { match { x: P; y: P; x -[E]- y; } produce { } }",
+         "5:34: edge kind `E` is directed: write `a -[E]-> b`"},
+        {"undirected kind, directed arrow", "rule R { match { x: P; y: P; x -[U]-> y; } produce { } }",
+         "5:34: edge kind `U` is undirected: write `a -[U]- b` (or declare it `edge U directed`)"},
+        {"kind change", "node Q;\nrule R { match { x: P; } produce { x: Q; } }",
+         "6:39: kept node `x` cannot change its kind from `P` to `Q`"},
+        {"edge kind change", "rule R { match { x: P; y: P; e: x -[E]-> y; } produce { e: x -[U]- y; } }",
+         "5:64: kept edge `e` cannot change its kind from `E` to `U`"},
+        {"daughter references an unbound name", "rule R { match { x: P; } produce { x -[E]-> z; } }",
+         "5:45: unknown name `z`: it is not a node of the match or this daughter"},
+        {"daughter references a NAC element",
+         "rule R { match { x: P; not { y: P; x -[E]-> y; } } produce { x -[E]-> y; } }",
+         "5:71: `y` belongs to a negative condition, which binds nothing the daughter could use"},
+        {"kept edge loses an endpoint", "rule R { match { x: P; y: P; e: x -[E]-> y; } produce { x; e; } }",
+         "5:60: edge `e` is kept, but its endpoint `y` is deleted by this daughter; keep `y` too (name it), or "
+         "reconnect the edge"},
+        {"new node without position", "rule R { match { x: P; } produce { x; n: P; } }",
+         "5:39: new node `n` needs a position: `at EXPR`, or a sketch position `@ (x, y)` for automatic placement"},
+        {"automatic placement without sketches", "rule R { match { x: P; } produce { x; n: P @ (1, 0); } }",
+         "5:18: automatic placement needs a sketch position for every matched node: give `x` one with `@ (x, y)`"},
+        {"reading a new element", "rule R { match { x: P; } produce { x; n: P at x.pos; m: P at n.pos; } }",
+         "5:62: `n` is created by this production; expressions can read only the matched elements (their values "
+         "before the step)"},
+        {"ordered needs sketches", "rule R ordered { match { x: P @ (0, 0); y: P; } produce { x; y; } }",
+         "5:41: rule `R` is `ordered`: every matched node needs a sketch position; give `y` one with `@ (x, y)`"},
+        {"no produce block", "rule R { match { x: P; } }",
+         "5:6: rule `R` has no `produce` block (write `produce { }` to delete the whole match)"},
+        {"at in a match", "rule R { match { x: P at (0, 0); } produce { x; } }",
+         "5:26: a match cannot place nodes (`at`); test positions with `where`"},
+        {"where in a daughter", "rule R { match { x: P; } produce { x where x.w > 0; } }",
+         "5:44: conditions (`where`) belong in the match"},
+        {"unknown pick", "rule R pick newest { match { x: P; } produce { x; } }",
+         "5:13: unknown match selection `newest` (use `random` or `oldest`)"},
+    });
+}
+
+TEST_CASE("weights must be positive constants", "[sema][weights]") {
+    checkCases({
+        {"zero weight", "rule R { match { x: P; } produce weight 0 { x; } }",
+         "5:41: a weight must be positive, but this is 0"},
+        {"negative weight", "rule R { match { x: P; } produce weight -2.5 { x; } }",
+         "5:41: a weight must be positive, but this is -2.5"},
+        {"weight reads the match", "rule R { match { x: P; } produce weight x.w { x; } }",
+         "5:41: `x` cannot be read in a weight (weights are constants: literals, constants and parameters)"},
+        {"random weight", "rule R { match { x: P; } produce weight uniform(1, 2) { x; } }",
+         "5:41: random function `uniform` cannot be used in a weight (weights are constants: literals, constants and "
+         "parameters)"},
+    });
+    // A parameter may set a weight (checked when the run starts).
+    auto r = compile(prelude() + "param p: float = 2;\nrule R { match { x: P; } produce weight p { x; } }");
+    CHECK(firstError(r).empty());
+}
+
+TEST_CASE("wildcards are used only as the thesis allows", "[sema][wildcards]") {
+    checkCases({
+        {"wildcard in a daughter", "rule R { match { x: P; } produce { x; y: *; } }",
+         "5:42: `*` (wildcard) can only be used in a match"},
+        {"moving a wildcard", "rule R { match { x: P; w: *; x -[E]-> w; } produce { x; w at (0, 0); } }",
+         "5:57: wildcard node `w` is left unchanged by the production; it cannot be moved or assigned"},
+        {"reading a wildcard's attribute", "rule R { match { x: P; w: *; x -[E]-> w where w.w > 0; } produce { x; } }",
+         "5:49: wildcard node `w` matches any kind, so it has no attribute `w`; only pos, age, id, degree, in_degree, "
+         "out_degree can be read"},
+        {"isolated wildcard", "rule R { match { x: P; w: *; } produce { x; } }",
+         "5:24: wildcard node `w` must be an endpoint of an edge of the match"},
+    });
+    auto axiom = compile("node P;\naxiom { a: *; }\n");
+    CHECK(firstError(axiom) == "2:12: wildcard nodes (`*`) belong in a rule's match, not in the axiom");
+}
+
+TEST_CASE("imports: missing files and cycles", "[sema][imports]") {
+    auto missing = compile(prelude() + "import \"no_such_file.g2d\";");
+    CHECK(firstError(missing).rfind("5:1: cannot find imported file `no_such_file.g2d`", 0) == 0);
+    auto cycle = compile("import \"cycle_a.g2d\";\n" + prelude(), "cycle_main.g2d");
+    CHECK(firstError(cycle).find("import cycle: `cycle_a.g2d` → `cycle_b.g2d` → `cycle_a.g2d`") !=
+          std::string::npos);
+}
+
+TEST_CASE("warnings: unused bindings and rules that can never match", "[sema][warnings]") {
+    auto r = compile(prelude() +
+                     "node Never;\n"
+                     "param unused_param: int = 1;\n"
+                     "rule R { match { x: P; } let unused = 1; produce { x; } }\n"
+                     "rule S { match { n: Never; } produce { n; } }\n"
+                     "rule T { match { x: P where 1 > 2; } produce { x; } }\n");
+    REQUIRE(r.program.has_value());
+    auto lines = g2d::test::diagnosticLines(r);
+    CHECK(lines == std::vector<std::string>{
+                       "6:1: warning: parameter `unused_param` is never used",
+                       "7:30: warning: `unused` is never used",
+                       "8:1: warning: rule `S` can never match: no element of node kind `Never` is ever created (the "
+                       "axiom has none and no rule makes one)",
+                       "9:6: warning: rule `T` can never match: one of its conditions is always false",
+                   });
+}

@@ -1,0 +1,111 @@
+// What semantic analysis hands to the back ends: the typed IR.
+#include <catch2/catch.hpp>
+
+#include "test_helpers.hpp"
+
+using namespace g2d;
+using g2d::test::compile;
+
+namespace {
+
+CompileResult compileExample(const std::string& name) {
+    LoadOptions options;
+    options.importDirs = {G2D_STDLIB_DIR};
+    return compileFile(std::string(G2D_SOURCE_DIR) + "/examples/" + name, options);
+}
+
+}  // namespace
+
+TEST_CASE("the Koch snowflake lowers to one rule with an unrolled search plan", "[ir]") {
+    auto r = compileExample("koch_snowflake.g2d");
+    REQUIRE(r.diags.all().empty());
+    REQUIRE(r.program);
+    const auto& p = *r.program;
+    REQUIRE(p.params.size() == 1);
+    CHECK(p.params[0].name == "max_lod");
+    CHECK(std::get<long long>(p.params[0].defaultValue) == 4);
+    REQUIRE(p.consts.size() == 1);
+    REQUIRE(p.consts[0].folded);
+    CHECK(std::get<double>(*p.consts[0].folded) == Approx(0.28867513459481287));
+    CHECK(p.axiom.nodes.size() == 3);
+    REQUIRE(p.axiom.edges.size() == 3);
+    CHECK(p.axiom.edges[2].src == 2);
+    CHECK(p.axiom.edges[2].dst == 0);
+    REQUIRE(p.rules.size() == 1);
+    const auto& rule = p.rules[0];
+    CHECK(rule.pick == ir::Pick::Oldest);
+    CHECK(rule.nodes.size() == 2);
+    CHECK(rule.edges.size() == 1);
+    CHECK(rule.lets.size() == 3);
+    REQUIRE(rule.daughters.size() == 1);
+    const auto& d = rule.daughters[0];
+    CHECK(d.weight == std::optional<double>(1.0));
+    CHECK(d.nodes.size() == 5);
+    CHECK(d.edges.size() == 4);
+    CHECK(d.deletedNodes.empty());
+    CHECK(d.deletedEdges == std::vector<int>{0});
+    CHECK(d.nodes[0].motherNode == 0);
+    CHECK(d.nodes[2].motherNode == -1);
+    CHECK(d.nodes[2].position.has_value());
+    // Plan: scan s, walk the edge to e, then test `old.lod < max_lod`.
+    REQUIRE(rule.plan.size() == 3);
+    CHECK(rule.plan[0].op == ir::PlanStep::Op::ScanNodes);
+    CHECK(rule.plan[0].node == 0);
+    CHECK(rule.plan[1].op == ir::PlanStep::Op::ExtendEdge);
+    CHECK(rule.plan[1].edge == 0);
+    CHECK(rule.plan[1].from == 0);
+    CHECK(rule.plan[1].node == 1);
+    CHECK(rule.plan[1].fromIsSource);
+    CHECK(rule.plan[2].op == ir::PlanStep::Op::Check);
+    REQUIRE(rule.conditions.size() == 1);
+    CHECK(rule.conditions[0].deps == std::vector<ir::ElemRef>{{ir::ElemClass::Edge, 0}});
+}
+
+TEST_CASE("the tree uses the standard library and enums", "[ir]") {
+    auto r = compileExample("tree.g2d");
+    REQUIRE(r.diags.all().empty());
+    REQUIRE(r.program);
+    CHECK(r.program->functions.size() == 1);
+    CHECK(r.program->enums.size() == 1);
+    CHECK(r.program->rules.size() == 2);
+    REQUIRE(r.program->stepLimit);
+    CHECK(std::get<long long>(r.program->stepLimit->value) == 200);
+}
+
+TEST_CASE("conditions are tested as soon as their elements are bound", "[ir][plan]") {
+    auto r = compile(test::prelude() +
+                     "rule R {\n"
+                     "  match { x: P where x.w > 0; y: P; z: P; x -[E]-> y; y -[E]-> z; where x.w < z.w; where true; }\n"
+                     "  produce { x; y; z; }\n"
+                     "}\n");
+    REQUIRE(r.program);
+    const auto& plan = r.program->rules[0].plan;
+    using Op = ir::PlanStep::Op;
+    std::vector<Op> ops;
+    for (const auto& s : plan) ops.push_back(s.op);
+    // `true` needs nothing, x's own test follows the scan of x, the cross test follows z.
+    CHECK(ops == std::vector<Op>{Op::Check, Op::ScanNodes, Op::Check, Op::ExtendEdge, Op::ExtendEdge, Op::Check});
+    CHECK(plan[0].condition == 2);
+    CHECK(plan[2].condition == 0);
+    CHECK(plan[5].condition == 1);
+}
+
+TEST_CASE("mapping by name: kept, deleted, new, implicit keeps and wildcards", "[ir][mapping]") {
+    auto r = compile(test::prelude() +
+                     "rule R {\n"
+                     "  match { x: P; y: P; w: *; e: x -[E]-> y; f: y -[U]- w; }\n"
+                     "  produce { n: P at x.pos; n -[E]-> y; e: n -[E]-> y; }\n"
+                     "}\n");
+    REQUIRE(r.program);
+    const auto& d = r.program->rules[0].daughters[0];
+    // n (new), y (kept as an endpoint), w (wildcard, always kept).
+    REQUIRE(d.nodes.size() == 3);
+    CHECK(d.nodes[0].motherNode == -1);
+    CHECK(d.nodes[1].motherNode == 1);
+    CHECK(d.nodes[2].motherNode == 2);
+    CHECK(d.deletedNodes == std::vector<int>{0});
+    CHECK(d.deletedEdges == std::vector<int>{1});
+    REQUIRE(d.edges.size() == 2);
+    CHECK(d.edges[1].motherEdge == 0);  // e is kept and rewired to n → y
+    CHECK(d.edges[1].src == 0);
+}

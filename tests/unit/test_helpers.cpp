@@ -1,0 +1,34 @@
+#include "test_helpers.hpp"
+
+namespace g2d::test {
+
+CompileResult compile(const std::string& text, const std::string& name) {
+    LoadOptions options;
+    options.importDirs = {G2D_STDLIB_DIR};
+    return compileSource(std::string(G2D_SOURCE_DIR) + "/tests/unit/" + name, text, options);
+}
+
+std::vector<std::string> diagnosticLines(const CompileResult& r) {
+    std::vector<std::string> out;
+    for (const auto& d : r.diags.sorted()) {
+        const char* sev = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note";
+        out.push_back(std::to_string(d.span.line) + ":" + std::to_string(d.span.col) + ": " + sev + ": " + d.message);
+    }
+    return out;
+}
+
+std::string firstError(const CompileResult& r) {
+    for (const auto& d : r.diags.sorted())
+        if (d.severity == Severity::Error)
+            return std::to_string(d.span.line) + ":" + std::to_string(d.span.col) + ": " + d.message;
+    return "";
+}
+
+std::string prelude() {
+    return "node P { w: float = 1; }\n"
+           "edge E directed { n: int = 0; }\n"
+           "edge U { }\n"
+           "axiom { a: P at (0, 0); b: P at (1, 0); a -[E]-> b; a -[U]- b; }\n";
+}
+
+}  // namespace g2d::test

@@ -1,0 +1,23 @@
+#pragma once
+// Compiling snippets in tests, and reading their diagnostics.
+#include <string>
+#include <vector>
+
+#include "driver/compile.hpp"
+
+namespace g2d::test {
+
+// Compiles `text` as if it were the file `name` in tests/unit (imports
+// resolve against the real stdlib).
+CompileResult compile(const std::string& text, const std::string& name = "snippet.g2d");
+
+// "LINE:COL: error: MESSAGE" for each diagnostic, sorted by position.
+std::vector<std::string> diagnosticLines(const CompileResult& r);
+// The first error as "LINE:COL: MESSAGE", or "" if there is none.
+std::string firstError(const CompileResult& r);
+
+// A small valid grammar to build test cases from: kinds P (node, attribute
+// w: float), E (directed edge, attribute n: int), U (undirected edge).
+std::string prelude();
+
+}  // namespace g2d::test
