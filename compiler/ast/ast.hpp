@@ -117,6 +117,7 @@ struct RuleItem {
 struct RuleOption {
     enum class Kind { Priority, Pick, Ordered, Parallel } kind;
     long long priority = 0;
+    bool priorityOverflow = false;
     Ident pick;
     Span span;
 };
@@ -153,6 +154,7 @@ struct AxiomDecl { std::vector<GraphStmt> body; Span span; };
 struct LimitDecl { ExprPtr value; Span span; };
 struct PriorityDecl {
     long long priority = 0;
+    bool priorityOverflow = false;
     Span prioritySpan;
     ExprPtr limit;
     bool parallel = false;

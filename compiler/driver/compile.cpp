@@ -45,7 +45,7 @@ CompileResult compileSource(const std::string& path, const std::string& text, co
         for (const auto& c : candidates)
             if (resolved.empty() && fs::exists(c, ec)) resolved = c.string();
         if (resolved.empty()) {
-            r.diags.error(imp->span, "cannot find imported file `" + imp->path + "`");
+            r.diags.error(imp->span, "cannot find imported file `" + imp->path + "` (looked next to the importing file and in the standard library)");
             ok = false;
             continue;
         }

@@ -109,9 +109,10 @@ struct Loader {
             if (!imp) continue;
             auto resolved = resolveImport(imp->path, path.parent_path());
             if (!resolved) {
-                std::string where = "`" + path.parent_path().string() + "`";
-                for (const auto& dir : options.importDirs) where += ", `" + dir + "`";
-                diags.error(imp->span, "cannot find imported file `" + imp->path + "` (looked in " + where + ")");
+                diags.error(imp->span, "cannot find imported file `" + imp->path + "`" +
+                                           (fs::path(imp->path).is_absolute()
+                                                ? std::string()
+                                                : " (looked next to the importing file and in the standard library)"));
                 ok = false;
                 continue;
             }

@@ -92,7 +92,7 @@ public:
         if (auto* c = ctx->limitDecl()) return Decl{LimitDecl{expr(c->expr()), span(c)}};
         if (auto* c = ctx->priorityDecl()) {
             PriorityDecl d;
-            d.priority = signedInt(c->signedInt());
+            d.priority = signedInt(c->signedInt(), d.priorityOverflow);
             d.prioritySpan = span(c->signedInt());
             d.span = span(c);
             for (auto* o : c->priorityOption()) {
@@ -105,9 +105,14 @@ public:
         return Decl{rule(ctx->ruleDecl())};
     }
 
-    long long signedInt(P::SignedIntContext* c) {
-        long long v = std::strtoll(c->INT()->getText().c_str(), nullptr, 10);
-        return c->children.size() > 1 ? -v : v;
+    // Priorities are written as integers; `overflow` flags values beyond 64 bits.
+    long long signedInt(P::SignedIntContext* c, bool& overflow) {
+        const bool negative = c->children.size() > 1;
+        const std::string text = (negative ? "-" : "") + c->INT()->getText();
+        errno = 0;
+        long long v = std::strtoll(text.c_str(), nullptr, 10);
+        overflow = errno == ERANGE;
+        return v;
     }
 
     double signedNumber(P::SignedNumberContext* c) {
@@ -213,7 +218,7 @@ public:
             opt.span = span(o);
             if (auto* p = dynamic_cast<P::RulePriorityContext*>(o)) {
                 opt.kind = RuleOption::Kind::Priority;
-                opt.priority = signedInt(p->signedInt());
+                opt.priority = signedInt(p->signedInt(), opt.priorityOverflow);
             } else if (auto* k = dynamic_cast<P::RulePickContext*>(o)) {
                 opt.kind = RuleOption::Kind::Pick;
                 opt.pick = ident(k->ID());

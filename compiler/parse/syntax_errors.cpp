@@ -28,6 +28,15 @@ std::string describeExpected(const antlr4::misc::IntervalSet& expected,
     for (const auto& iv : expected.getIntervals())
         for (ssize_t t = iv.a; t <= iv.b; ++t) types.insert(static_cast<size_t>(t));
     std::vector<std::string> words;
+    auto hasLiteral = [&](const char* lit) {
+        for (size_t t : types)
+            if (vocabulary.getLiteralName(t) == lit) return true;
+        return false;
+    };
+    // At the top level, the parser expects any declaration.
+    if (hasLiteral("'rule'") && hasLiteral("'axiom'") && hasLiteral("'node'"))
+        return "a declaration (`node`, `edge`, `axiom`, `rule`, `param`, `const`, `enum`, `fn`, `import`, `limit`, "
+               "`priority` or `defs`)";
     // The tokens that can start an expression are summarised in one word.
     const bool expression = types.count(G2dLexer::INT) && types.count(G2dLexer::FLOAT) &&
                             types.count(G2dLexer::STRING) && types.count(G2dLexer::ID);
@@ -123,7 +132,22 @@ void SyntaxErrorListener::syntaxError(antlr4::Recognizer* recognizer, antlr4::To
         int type = static_cast<int>(offending->getType());
         if (type == G2dLexer::UNTERMINATED_STRING) message = "unterminated string (missing closing `\"`)";
         else if (type == G2dLexer::UNTERMINATED_COMMENT) message = "unterminated comment (missing `*/`)";
+        else if (type == G2dLexer::ERRCHAR && offending->getText() == "]")
+            message = "unexpected character `]` (an edge arrow ends with `]->` or `]-`)";
         else if (type == G2dLexer::ERRCHAR) message = "unexpected character `" + offending->getText() + "`";
+    }
+    // Edge arrows: say what an arrow looks like rather than ANTLR's guess.
+    if (message.empty() && offending && !lexical) {
+        auto* parser = dynamic_cast<antlr4::Parser*>(recognizer);
+        auto* stream = parser ? dynamic_cast<antlr4::BufferedTokenStream*>(parser->getInputStream()) : nullptr;
+        const auto index = offending->getTokenIndex();
+        antlr4::Token* prev = (stream && index != static_cast<size_t>(-1) && index > 0) ? stream->get(index - 1) : nullptr;
+        const std::string text = offending->getText();
+        if (prev && (prev->getText() == "-[" || prev->getText() == "<-[")) {
+            message = "expected an edge kind name after `" + prev->getText() + "`, found " + found;
+        } else if (prev && prev->getType() == G2dLexer::ID && (text == "-" || text == "->" || text == "<")) {
+            message = "expected an edge arrow (`-[Kind]->`, `<-[Kind]-` or `-[Kind]-`), found " + found;
+        }
     }
     if (message.empty())
         message = expectedWords.empty() ? "unexpected " + found : "expected " + expectedWords + ", found " + found;

@@ -80,15 +80,22 @@ std::optional<Value> foldCall(const Expr& e, const std::vector<Value>& a) {
     }
 }
 
-std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const Value& r) {
+std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const Value& r, std::string* error) {
+    auto fail = [&](const char* why) -> std::optional<Value> {
+        if (error && error->empty()) *error = why;
+        return std::nullopt;
+    };
     const TypeKind lk = e.args[0].type.kind, rk = e.args[1].type.kind;
     if (lk == TypeKind::Int && rk == TypeKind::Int) {
         long long a = std::get<long long>(l), b = std::get<long long>(r), out = 0;
         switch (op) {
-        case ExprOp::Add: if (__builtin_add_overflow(a, b, &out)) return std::nullopt; return Value{out};
-        case ExprOp::Sub: if (__builtin_sub_overflow(a, b, &out)) return std::nullopt; return Value{out};
-        case ExprOp::Mul: if (__builtin_mul_overflow(a, b, &out)) return std::nullopt; return Value{out};
-        case ExprOp::Mod: if (b == 0 || (a == LLONG_MIN && b == -1)) return std::nullopt; return Value{rt::imodFloor(a, b)};
+        case ExprOp::Add: if (__builtin_add_overflow(a, b, &out)) return fail("integer overflow"); return Value{out};
+        case ExprOp::Sub: if (__builtin_sub_overflow(a, b, &out)) return fail("integer overflow"); return Value{out};
+        case ExprOp::Mul: if (__builtin_mul_overflow(a, b, &out)) return fail("integer overflow"); return Value{out};
+        case ExprOp::Mod:
+            if (b == 0) return fail("division by zero");
+            if (a == LLONG_MIN && b == -1) return fail("integer overflow");
+            return Value{rt::imodFloor(a, b)};
         case ExprOp::Lt: return Value{a < b};
         case ExprOp::Le: return Value{a <= b};
         case ExprOp::Gt: return Value{a > b};
@@ -104,8 +111,8 @@ std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const V
         case ExprOp::Add: return Value{a + b};
         case ExprOp::Sub: return Value{a - b};
         case ExprOp::Mul: return Value{a * b};
-        case ExprOp::Div: if (b == 0) return std::nullopt; return Value{a / b};
-        case ExprOp::Mod: if (b == 0) return std::nullopt; return Value{rt::fmodFloor(a, b)};
+        case ExprOp::Div: if (b == 0) return fail("division by zero"); return Value{a / b};
+        case ExprOp::Mod: if (b == 0) return fail("division by zero"); return Value{rt::fmodFloor(a, b)};
         case ExprOp::Lt: return Value{a < b};
         case ExprOp::Le: return Value{a <= b};
         case ExprOp::Gt: return Value{a > b};
@@ -126,7 +133,10 @@ std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const V
     }
     if (lk == TypeKind::Vec2 && rk == TypeKind::Float) {
         if (op == ExprOp::Mul) return fromVec(asVec(l) * std::get<double>(r));
-        if (op == ExprOp::Div && std::get<double>(r) != 0) return fromVec(asVec(l) / std::get<double>(r));
+        if (op == ExprOp::Div) {
+            if (std::get<double>(r) == 0) return fail("division by zero");
+            return fromVec(asVec(l) / std::get<double>(r));
+        }
         return std::nullopt;
     }
     if (lk == TypeKind::Float && rk == TypeKind::Vec2 && op == ExprOp::Mul)
@@ -149,50 +159,53 @@ bool any(const Expr& e, const ir::Program& prog, Pred pred) {
 
 }  // namespace
 
-std::optional<Value> fold(const Expr& e, const ir::Program& prog) {
+std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* error) {
     switch (e.op) {
     case ExprOp::Literal: return e.value;
     case ExprOp::Const: return prog.consts[e.index].folded;
     case ExprOp::VecX:
     case ExprOp::VecY: {
-        auto v = fold(e.args[0], prog);
+        auto v = fold(e.args[0], prog, error);
         if (!v) return std::nullopt;
         const auto& p = std::get<ir::Vec2>(*v);
         return Value{e.op == ExprOp::VecX ? p.x : p.y};
     }
     case ExprOp::Neg: {
-        auto v = fold(e.args[0], prog);
+        auto v = fold(e.args[0], prog, error);
         if (!v) return std::nullopt;
         if (auto* i = std::get_if<long long>(&*v)) {
-            if (*i == LLONG_MIN) return std::nullopt;
+            if (*i == LLONG_MIN) {
+                if (error && error->empty()) *error = "integer overflow";
+                return std::nullopt;
+            }
             return Value{-*i};
         }
         if (auto* d = std::get_if<double>(&*v)) return Value{-*d};
         return fromVec(-asVec(*v));
     }
     case ExprOp::Not: {
-        auto v = fold(e.args[0], prog);
+        auto v = fold(e.args[0], prog, error);
         if (!v) return std::nullopt;
         return Value{!std::get<bool>(*v)};
     }
     case ExprOp::And:
     case ExprOp::Or: {
-        auto l = fold(e.args[0], prog);
+        auto l = fold(e.args[0], prog, error);
         if (!l) return std::nullopt;
         const bool lv = std::get<bool>(*l);
         if (e.op == ExprOp::And && !lv) return Value{false};
         if (e.op == ExprOp::Or && lv) return Value{true};
-        return fold(e.args[1], prog);
+        return fold(e.args[1], prog, error);
     }
     case ExprOp::Cond: {
-        auto c = fold(e.args[0], prog);
+        auto c = fold(e.args[0], prog, error);
         if (!c) return std::nullopt;
-        return fold(e.args[std::get<bool>(*c) ? 1 : 2], prog);
+        return fold(e.args[std::get<bool>(*c) ? 1 : 2], prog, error);
     }
     case ExprOp::Call: {
         std::vector<Value> args;
         for (const auto& a : e.args) {
-            auto v = fold(a, prog);
+            auto v = fold(a, prog, error);
             if (!v) return std::nullopt;
             args.push_back(std::move(*v));
         }
@@ -200,10 +213,10 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog) {
     }
     case ExprOp::Add: case ExprOp::Sub: case ExprOp::Mul: case ExprOp::Div: case ExprOp::Mod:
     case ExprOp::Lt: case ExprOp::Le: case ExprOp::Gt: case ExprOp::Ge: case ExprOp::Eq: case ExprOp::Ne: {
-        auto l = fold(e.args[0], prog);
-        auto r = fold(e.args[1], prog);
+        auto l = fold(e.args[0], prog, error);
+        auto r = fold(e.args[1], prog, error);
         if (!l || !r) return std::nullopt;
-        return foldArith(e.op, e, *l, *r);
+        return foldArith(e.op, e, *l, *r, error);
     }
     default: return std::nullopt;
     }

@@ -9,7 +9,9 @@ namespace g2d::sema {
 
 // The value of `e` if it can be known at compile time: literals, folded
 // constants and pure built-ins only (no parameters, elements or randomness).
-std::optional<ir::Value> fold(const ir::Expr& e, const ir::Program& prog);
+// When evaluation certainly fails (division by zero, integer overflow), sets
+// `*error` (if given) to the reason and returns nothing.
+std::optional<ir::Value> fold(const ir::Expr& e, const ir::Program& prog, std::string* error = nullptr);
 
 bool usesRandom(const ir::Expr& e, const ir::Program& prog);
 bool usesParams(const ir::Expr& e, const ir::Program& prog);

@@ -25,6 +25,9 @@ struct Globals {
     std::vector<FileId> paramFile, constFile;
     int constsDeclared = 0;                     // consts visible so far (declaration order)
     int functionsDeclared = 0;                  // functions visible so far (no recursion)
+    // Values and functions declared anywhere, for "used before its declaration".
+    std::map<std::string, Span> laterValues, laterFunctions;
+    std::string definingConst;                  // the constant whose value is being checked
 
     std::string typeName(const ir::Type& t) const { return ir::typeName(t, prog); }
 };

@@ -122,8 +122,11 @@ void checkParam(Globals& g, ExprChecker& ec, const ast::ParamDecl& d) {
     p.type = *type;
     p.span = d.span;
     if (value) {
-        auto folded = fold(*value, g.prog);
-        if (!folded) {
+        std::string error;
+        auto folded = fold(*value, g.prog, &error);
+        if (!error.empty()) {
+            g.diags.error(d.value->span, error + " in the default of parameter `" + d.name.name + "`");
+        } else if (!folded) {
             g.diags.error(d.value->span, "the default of parameter `" + d.name.name +
                                              "` must be a constant (literals and constants only)");
         } else {
@@ -144,18 +147,22 @@ void checkConst(Globals& g, ExprChecker& ec, const ast::ConstDecl& d) {
     env.context = "a constant";
     env.allowElements = false;
     env.allowLocals = false;
+    g.definingConst = d.name.name;
     std::optional<ir::Expr> value = type ? ec.checkAs(*d.value, *type, env, "constant `" + d.name.name + "`")
                                          : ec.check(*d.value, env);
+    g.definingConst.clear();
     if (!declared) return;
     ir::Const c;
     c.name = d.name.name;
     c.span = d.span;
     if (value) {
         c.type = value->type;
-        c.folded = fold(*value, g.prog);
+        std::string error;
+        c.folded = fold(*value, g.prog, &error);
+        if (!error.empty()) g.diags.error(d.value->span, error + " in constant `" + c.name + "`");
         c.value = std::move(*value);
     } else {
-        c.type = type.value_or(Type::of(TypeKind::Void));
+        c.type = Type::of(TypeKind::Void);  // poisoned: uses stay silent, the error is reported
     }
     const int index = static_cast<int>(g.prog.consts.size());
     g.consts[c.name] = index;
@@ -282,6 +289,17 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     }
 }
 
+namespace {
+
+void checkLimitValue(Globals& g, const ir::Expr& v, Span span) {
+    std::string error;
+    auto f = fold(v, g.prog, &error);
+    if (!error.empty()) g.diags.error(span, error + " in a step limit");
+    else if (f && std::get<long long>(*f) < 0) g.diags.error(span, "a step limit cannot be negative");
+}
+
+}  // namespace
+
 void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen) {
     if (seen) {
         g.diags.error(d.span, "the global step limit is set twice");
@@ -291,12 +309,15 @@ void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen
     ExprEnv env = constantEnv("a step limit");
     auto v = ec.checkAs(*d.value, Type::of(TypeKind::Int), env, "a step limit");
     if (!v) return;
-    if (auto f = fold(*v, g.prog); f && std::get<long long>(*f) < 0)
-        g.diags.error(d.value->span, "a step limit cannot be negative");
+    checkLimitValue(g, *v, d.value->span);
     g.prog.stepLimit = std::move(*v);
 }
 
 void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
+    if (d.priorityOverflow) {
+        g.diags.error(d.prioritySpan, "priority is out of range (64-bit integers)");
+        return;
+    }
     if (g.prog.priorities.count(d.priority)) {
         auto& diag = g.diags.error(d.prioritySpan, "priority " + std::to_string(d.priority) + " is configured twice");
         diag.notes.push_back({g.prog.priorities[d.priority].span, "first configured here"});
@@ -309,8 +330,7 @@ void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
         ExprEnv env = constantEnv("a step limit");
         auto v = ec.checkAs(*d.limit, Type::of(TypeKind::Int), env, "a step limit");
         if (v) {
-            if (auto f = fold(*v, g.prog); f && std::get<long long>(*f) < 0)
-                g.diags.error(d.limit->span, "a step limit cannot be negative");
+            checkLimitValue(g, *v, d.limit->span);
             cfg.limit = std::move(*v);
         }
     }

@@ -137,11 +137,12 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
     if (env.locals) {
         for (auto it = env.locals->rbegin(); it != env.locals->rend(); ++it) {
             if (it->name != id) continue;
+            it->used = true;
+            if (it->type.kind == TypeKind::Void) return std::nullopt;  // its own error was reported
             if (!env.allowLocals) {
                 g_.diags.error(e.span, "`" + id + "` cannot be used in " + env.context);
                 return std::nullopt;
             }
-            it->used = true;
             Expr r;
             r.op = it->isFnArg ? ExprOp::FnArg : ExprOp::Local;
             r.index = it->slot;
@@ -188,6 +189,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         }
         g_.constUsed[it->second] = true;
         const auto& c = g_.prog.consts[it->second];
+        if (c.type.kind == TypeKind::Void) return std::nullopt;  // its own error was reported
         Expr r;
         r.op = ExprOp::Const;
         r.index = it->second;
@@ -216,6 +218,15 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
     }
     if (g_.functions.count(id) || findBuiltin(id)) {
         g_.diags.error(e.span, "`" + id + "` is a function; call it with `" + id + "(…)`");
+        return std::nullopt;
+    }
+    if (id == g_.definingConst) {
+        g_.diags.error(e.span, "constant `" + id + "` is used in its own definition");
+        return std::nullopt;
+    }
+    if (auto it = g_.laterValues.find(id); it != g_.laterValues.end()) {
+        auto& d = g_.diags.error(e.span, "`" + id + "` is used before its declaration");
+        d.notes.push_back({it->second, "`" + id + "` is declared here"});
         return std::nullopt;
     }
     std::vector<std::string> candidates = {"pi", "tau"};
@@ -409,6 +420,11 @@ std::optional<Expr> ExprChecker::call(const ast::Expr& e, const ast::Call& c, co
         return r;
     }
     const BuiltinInfo* info = findBuiltin(fname);
+    if (auto later = g_.laterFunctions.find(fname); !info && later != g_.laterFunctions.end()) {
+        auto& d = g_.diags.error(c.callee.span, "function `" + fname + "` is used before its declaration");
+        d.notes.push_back({later->second, "`" + fname + "` is declared here"});
+        return std::nullopt;
+    }
     if (!info) {
         std::vector<std::string> candidates;
         for (const auto& b : builtinFunctions()) candidates.push_back(b.name);

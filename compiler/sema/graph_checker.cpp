@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "sema/builtins.hpp"
 #include "sema/const_fold.hpp"
 #include "sema/decl_checker.hpp"
 #include "sema/search_plan.hpp"
@@ -115,10 +116,20 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
     ax.span = d.span;
     std::map<std::string, std::pair<int, Span>> nodes;  // name -> index
     std::map<std::string, Span> names;
+    std::vector<ElemBinding> axiomNodes;
+    for (const auto& s : d.body)
+        if (const auto* n = asNode(s)) {
+            ElemBinding b;
+            b.name = n->name.name;
+            b.span = n->name.span;
+            b.unreadable = "axiom expressions cannot read other axiom nodes (`" + n->name.name +
+                           "`); name shared positions with `const`";
+            axiomNodes.push_back(b);
+        }
     ExprEnv env;
     env.context = "the axiom";
-    env.allowElements = false;
     env.allowLocals = false;
+    env.elems = &axiomNodes;
     for (const auto& s : d.body) {
         const auto* n = asNode(s);
         if (!n) continue;
@@ -165,7 +176,8 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
         auto endpoint = [&](const ast::Ident& id) {
             auto it = nodes.find(id.name);
             if (it == nodes.end()) {
-                g.diags.error(id.span, "edge endpoint `" + id.name + "` is not a node of the axiom");
+                g.diags.error(id.span, names.count(id.name) ? "edge endpoint `" + id.name + "` is an edge, not a node"
+                                                            : "edge endpoint `" + id.name + "` is not a node of the axiom");
                 return -1;
             }
             return it->second.first;
@@ -207,7 +219,10 @@ private:
                 continue;
             }
             switch (o.kind) {
-            case ast::RuleOption::Kind::Priority: rule_.priority = o.priority; break;
+            case ast::RuleOption::Kind::Priority:
+                if (o.priorityOverflow) g_.diags.error(o.span, "priority is out of range (64-bit integers)");
+                rule_.priority = o.priority;
+                break;
             case ast::RuleOption::Kind::Ordered: rule_.ordered = true; break;
             case ast::RuleOption::Kind::Parallel: rule_.parallel = true; break;
             case ast::RuleOption::Kind::Pick:
@@ -403,6 +418,15 @@ private:
             reportDuplicate(g_, l.name, *prev);
             return false;
         }
+        for (const auto& b : elems)
+            if (b.name == l.name.name) {
+                reportDuplicate(g_, l.name, b.span);
+                return false;
+            }
+        if (findBuiltin(l.name.name) || l.name.name == "pi" || l.name.name == "tau") {
+            g_.diags.error(l.name.span, "`" + l.name.name + "` would hide the built-in `" + l.name.name + "`");
+            return false;
+        }
         ExprEnv env;
         env.context = "a let";
         env.locals = &locals_;
@@ -415,7 +439,11 @@ private:
         } else {
             v = ec_.check(*l.value, env);
         }
-        if (!v) return false;
+        if (!v) {
+            // Declared but poisoned: its uses stay silent instead of cascading.
+            locals_.push_back(LocalVar{l.name.name, Type::of(TypeKind::Void), -1, false, l.name.span, true});
+            return false;
+        }
         const int slot = rule_.localSlots++;
         locals_.push_back(LocalVar{l.name.name, v->type, slot, false, l.name.span, false});
         out.push_back(ir::Let{slot, l.name.name, std::move(*v)});
@@ -446,12 +474,17 @@ private:
         env.allowRandom = false;
         env.allowLocals = false;
         env.allowElements = false;
-        std::vector<LocalVar> none;
-        env.locals = &none;
+        env.locals = &locals_;
         env.elems = &bindings_;
         auto w = ec_.checkAs(*p.weight, kFloat, env, "a weight");
         if (!w) return;
-        if (auto v = fold(*w, g_.prog)) {
+        std::string error;
+        auto folded = fold(*w, g_.prog, &error);
+        if (!error.empty()) {
+            g_.diags.error(p.weight->span, error + " in a weight");
+            return;
+        }
+        if (auto v = folded) {
             const double x = asNumber(*v);
             if (!(x > 0)) {
                 g_.diags.error(p.weight->span, "a weight must be positive, but this is " + fmtNumber(x));

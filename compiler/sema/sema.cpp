@@ -27,12 +27,15 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
     });
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
-        if constexpr (std::is_same_v<T, ast::ParamDecl>) checkParam(g, ec, d);
+        if constexpr (std::is_same_v<T, ast::ParamDecl> || std::is_same_v<T, ast::ConstDecl>)
+            g.laterValues.emplace(d.name.name, d.name.span);
+        else if constexpr (std::is_same_v<T, ast::FnDecl>) g.laterFunctions.emplace(d.name.name, d.name.span);
     });
-    // Constants and functions in order: each sees only those declared before it.
+    // Parameters, constants and functions in order: each sees only those declared before it.
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
-        if constexpr (std::is_same_v<T, ast::ConstDecl>) checkConst(g, ec, d);
+        if constexpr (std::is_same_v<T, ast::ParamDecl>) checkParam(g, ec, d);
+        else if constexpr (std::is_same_v<T, ast::ConstDecl>) checkConst(g, ec, d);
         else if constexpr (std::is_same_v<T, ast::FnDecl>) checkFunction(g, ec, d);
     });
     g.constsDeclared = static_cast<int>(prog.consts.size());

@@ -203,3 +203,21 @@ TEST_CASE("warnings: unused bindings and rules that can never match", "[sema][wa
                        "9:6: warning: rule `T` can never match: one of its conditions is always false",
                    });
 }
+
+TEST_CASE("declaration order: parameters, constants and functions see only earlier ones", "[sema][order]") {
+    checkCases({
+        {"constant used before its declaration", "const w = h * 2;\nconst h = 3;", "5:11: `h` is used before its declaration"},
+        {"constant in its own definition", "const s = s + 1;", "5:11: constant `s` is used in its own definition"},
+        {"function used before its declaration", "fn f(x: float) -> float = g(x);\nfn g(x: float) -> float = x;",
+         "5:27: function `g` is used before its declaration"},
+    });
+    auto ok = compile(prelude() + "const k = 2;\nparam n: int = k;\nconst m = n + 1;\nrule R { match { x: P where x.w < m; } produce { x; } }");
+    CHECK(firstError(ok).empty());
+}
+
+TEST_CASE("one mistake gives one error, not a cascade", "[sema][cascade]") {
+    auto r = compile(prelude() + "const c = nosuch(1);\nconst d = (c, c);\n"
+                                 "rule R { match { x: P; } let v = oops; produce { x at (v, c); } }");
+    CHECK(g2d::test::diagnosticLines(r) ==
+          std::vector<std::string>{"5:11: error: unknown function `nosuch`", "7:34: error: unknown name `oops`"});
+}
