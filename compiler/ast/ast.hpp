@@ -158,6 +158,7 @@ struct PriorityDecl {
     Span prioritySpan;
     ExprPtr limit;
     bool parallel = false;
+    std::vector<Span> repeatedOptions;  // an option given twice
     Span span;
 };
 struct DefsDecl { std::string svg; Span span; };

@@ -77,6 +77,7 @@ enum class ExprOp {
     FnArg,       // index into the enclosing function's parameters
     Attr,        // elem, index = attribute of elem's kind
     SelfAttr,    // index = attribute of the element being styled (kind style expressions)
+    SelfFact,    // fact of the element being styled
     Fact,        // elem, fact
     VecX, VecY,  // args[0]
     Neg, Not,

@@ -96,8 +96,13 @@ public:
             d.prioritySpan = span(c->signedInt());
             d.span = span(c);
             for (auto* o : c->priorityOption()) {
-                if (auto* l = dynamic_cast<P::PriorityLimitContext*>(o)) d.limit = expr(l->expr());
-                else d.parallel = true;
+                if (auto* l = dynamic_cast<P::PriorityLimitContext*>(o)) {
+                    if (d.limit) d.repeatedOptions.push_back(span(o));
+                    d.limit = expr(l->expr());
+                } else {
+                    if (d.parallel) d.repeatedOptions.push_back(span(o));
+                    d.parallel = true;
+                }
             }
             return Decl{std::move(d)};
         }

@@ -190,12 +190,14 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
     }
     case ExprOp::And:
     case ExprOp::Or: {
+        // Either side alone may decide: `x.k > 1 and false` is false.
+        const bool decisive = e.op == ExprOp::Or;
         auto l = fold(e.args[0], prog, error);
-        if (!l) return std::nullopt;
-        const bool lv = std::get<bool>(*l);
-        if (e.op == ExprOp::And && !lv) return Value{false};
-        if (e.op == ExprOp::Or && lv) return Value{true};
-        return fold(e.args[1], prog, error);
+        if (l && std::get<bool>(*l) == decisive) return Value{decisive};
+        auto r = fold(e.args[1], prog, error);
+        if (r && std::get<bool>(*r) == decisive) return Value{decisive};
+        if (l && r) return Value{!decisive};
+        return std::nullopt;
     }
     case ExprOp::Cond: {
         auto c = fold(e.args[0], prog, error);

@@ -47,6 +47,7 @@ struct ElemBinding {
     int kind = -1;                   // -1: wildcard
     Span span;
     std::string unreadable;          // non-empty: why expressions may not read it
+    bool poisoned = false;           // its declaration failed (reported); uses stay silent
 };
 
 // Where an expression sits decides what it may use.

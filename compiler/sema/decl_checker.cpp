@@ -318,6 +318,7 @@ void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
         g.diags.error(d.prioritySpan, "priority is out of range (64-bit integers)");
         return;
     }
+    for (const auto& s : d.repeatedOptions) g.diags.error(s, "option given twice for priority " + std::to_string(d.priority));
     if (g.prog.priorities.count(d.priority)) {
         auto& diag = g.diags.error(d.prioritySpan, "priority " + std::to_string(d.priority) + " is configured twice");
         diag.notes.push_back({g.prog.priorities[d.priority].span, "first configured here"});

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "sema/builtins.hpp"
+#include "sema/const_fold.hpp"
 
 namespace g2d::sema {
 
@@ -163,11 +164,26 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
             return r;
         }
     }
+    if (env.selfKind >= 0) {
+        const bool isNode = g_.prog.kinds[env.selfKind].cls == ir::ElemClass::Node;
+        for (int f = 0; f < 6; ++f) {
+            if (id != factNames[f]) continue;
+            const auto fact = static_cast<ir::ElemFact>(f);
+            if (!isNode && fact != ir::ElemFact::Age && fact != ir::ElemFact::Id) break;
+            Expr r;
+            r.op = ExprOp::SelfFact;
+            r.fact = fact;
+            r.type = fact == ir::ElemFact::Pos ? kVec2 : kInt;
+            r.span = e.span;
+            return r;
+        }
+    }
     if (env.elems) {
         for (const auto& b : *env.elems) {
             if (b.name != id) continue;
-            const char* what = b.ref.cls == ir::ElemClass::Node ? "node" : "edge";
-            g_.diags.error(e.span, "`" + id + "` is a " + what + ", not a value; read one of its attributes" +
+            if (b.poisoned) return std::nullopt;
+            const char* what = b.ref.cls == ir::ElemClass::Node ? "a node" : "an edge";
+            g_.diags.error(e.span, "`" + id + "` is " + what + ", not a value; read one of its attributes" +
                                        (b.ref.cls == ir::ElemClass::Node ? " or `" + id + ".pos`" : "") +
                                        " instead");
             return std::nullopt;
@@ -285,6 +301,7 @@ std::optional<Expr> ExprChecker::member(const ast::Expr& e, const ast::Member& m
 
 std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBinding& b, const ast::Ident& member,
                                                const ExprEnv& env) {
+    if (b.poisoned) return std::nullopt;
     if (!env.allowElements) {
         g_.diags.error(e.span, "`" + b.name + "` cannot be read in " + env.context);
         return std::nullopt;
@@ -397,6 +414,11 @@ std::optional<Expr> ExprChecker::call(const ast::Expr& e, const ast::Call& c, co
         }
         if (!ok) return std::nullopt;
         const auto& fn = g_.prog.functions[it->second];
+        if (!env.allowRandom && usesRandom(fn.body, g_.prog)) {
+            g_.diags.error(c.callee.span, "function `" + fname + "` draws random numbers, which cannot be used in " +
+                                              env.context);
+            return std::nullopt;
+        }
         if (args.size() != fn.paramTypes.size()) {
             g_.diags.error(e.span, "`" + fname + "` takes " + std::to_string(fn.paramTypes.size()) + " argument" +
                                        (fn.paramTypes.size() == 1 ? "" : "s") + ", got " + std::to_string(args.size()));

@@ -256,10 +256,11 @@ private:
                 g_.diags.error(n->name.span, std::string(inNac ? "a node of a negative condition" : "match node `" + n->name.name + "`") +
                                                  " needs a kind (`" + n->name.name + ": Kind`, or `" + n->name.name +
                                                  ": *` for a wildcard)");
+                poison(n->name);
                 continue;
             } else {
                 pn.kind = resolveKind(g_, *n->kind, ElemClass::Node);
-                if (pn.kind < 0) continue;
+                if (pn.kind < 0) { poison(n->name); continue; }
             }
             if (n->position)
                 g_.diags.error(n->position->span, "a match cannot place nodes (`at`); test positions with `where`");
@@ -275,6 +276,20 @@ private:
         }
     }
 
+    // Declares a name whose declaration failed, so that its uses stay silent.
+    void poison(const ast::Ident& name) {
+        ElemBinding b;
+        b.name = name.name;
+        b.span = name.span;
+        b.poisoned = true;
+        bindings_.push_back(b);
+    }
+
+    bool isPoisoned(const std::string& name) const {
+        return std::any_of(bindings_.begin(), bindings_.end(),
+                           [&](const ElemBinding& b) { return b.poisoned && b.name == name; });
+    }
+
     std::optional<Span> findName(const std::string& name) const {
         for (const auto& b : bindings_)
             if (b.name == name) return b.span;
@@ -285,7 +300,7 @@ private:
 
     int nodeIndex(const std::string& name) const {
         for (const auto& b : bindings_)
-            if (b.name == name && b.ref.cls == ElemClass::Node) return b.ref.index;
+            if (b.name == name && b.ref.cls == ElemClass::Node && !b.poisoned) return b.ref.index;
         return -1;
     }
 
@@ -302,7 +317,9 @@ private:
             bool ok = checkArrow(g_, *e, pe.kind) && pe.kind >= 0;
             for (const auto* id : {&e->src, &e->dst}) {
                 int idx = nodeIndex(id->name);
-                if (idx < 0) {
+                if (idx < 0 && isPoisoned(id->name)) {
+                    ok = false;
+                } else if (idx < 0) {
                     bool isEdge = std::any_of(bindings_.begin(), bindings_.end(), [&](const ElemBinding& b) {
                         return b.name == id->name && b.ref.cls == ElemClass::Edge;
                     });
@@ -414,6 +431,10 @@ private:
     }
 
     bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {
+        auto poisonLet = [&]() {
+            locals_.push_back(LocalVar{l.name.name, Type::of(TypeKind::Void), -1, false, l.name.span, true});
+            return false;
+        };
         if (auto prev = findName(l.name.name)) {
             reportDuplicate(g_, l.name, *prev);
             return false;
@@ -423,9 +444,10 @@ private:
                 reportDuplicate(g_, l.name, b.span);
                 return false;
             }
-        if (findBuiltin(l.name.name) || l.name.name == "pi" || l.name.name == "tau") {
+        static const std::set<std::string> typeNames = {"int", "float", "bool", "string", "vec2"};
+        if (findBuiltin(l.name.name) || l.name.name == "pi" || l.name.name == "tau" || typeNames.count(l.name.name)) {
             g_.diags.error(l.name.span, "`" + l.name.name + "` would hide the built-in `" + l.name.name + "`");
-            return false;
+            return poisonLet();
         }
         ExprEnv env;
         env.context = "a let";
@@ -434,16 +456,12 @@ private:
         std::optional<ir::Expr> v;
         if (l.type) {
             auto t = resolveType(g_, *l.type);
-            if (!t) return false;
+            if (!t) return poisonLet();
             v = ec_.checkAs(*l.value, *t, env, "`" + l.name.name + "`");
         } else {
             v = ec_.check(*l.value, env);
         }
-        if (!v) {
-            // Declared but poisoned: its uses stay silent instead of cascading.
-            locals_.push_back(LocalVar{l.name.name, Type::of(TypeKind::Void), -1, false, l.name.span, true});
-            return false;
-        }
+        if (!v) return poisonLet();  // declared but poisoned: its uses stay silent
         const int slot = rule_.localSlots++;
         locals_.push_back(LocalVar{l.name.name, v->type, slot, false, l.name.span, false});
         out.push_back(ir::Let{slot, l.name.name, std::move(*v)});
@@ -569,6 +587,7 @@ private:
                 continue;
             }
             if (!claim(n->name)) continue;
+            if (mother < 0 && isPoisoned(n->name.name)) continue;
             ir::DaughterNode dn;
             dn.name = n->name.name;
             dn.span = n->span;
@@ -603,10 +622,6 @@ private:
                     else
                         g_.diags.error(n->name.span, "unknown name `" + n->name.name + "`: a new node needs a kind (`" +
                                                          n->name.name + ": Kind`)" + suggestElement(n->name.name));
-                    continue;
-                }
-                if (auto it = nacNames_.find(n->name.name); it != nacNames_.end()) {
-                    unboundName(n->name, "a node");
                     continue;
                 }
                 dn.kind = resolveKind(g_, *n->kind, ElemClass::Node);
@@ -659,7 +674,7 @@ private:
                 g_.diags.error(id.span, "edge endpoint `" + id.name + "` is an edge, not a node");
                 return -1;
             }
-            unboundName(id, "a node");
+            if (!isPoisoned(id.name)) unboundName(id, "a node");
             return -1;
         };
         std::size_t nodeCursor = 0;
@@ -688,8 +703,10 @@ private:
                     de.motherEdge = motherIndex;
                     de.kind = me.kind;
                     de.span = n->span;
-                    de.src = keepEndpointOf(me.src, dg, keptNodes, named);
-                    de.dst = keepEndpointOf(me.dst, dg, keptNodes, named);
+                    // Endpoints are resolved after the whole daughter: a later
+                    // statement may still keep them.
+                    de.src = -3 - me.src;
+                    de.dst = -3 - me.dst;
                     if (me.kind >= 0) checkAssignments(g_, ec_, me.kind, n->assigns, exprEnv(), de.assigns, de.styles);
                     keptEdges[motherIndex] = static_cast<int>(dg.edges.size());
                     dg.edges.push_back(std::move(de));
@@ -729,6 +746,10 @@ private:
             if (e->arrow == ast::EdgeStmt::Arrow::Backward) std::swap(de.src, de.dst);
             if (de.kind >= 0) checkAssignments(g_, ec_, de.kind, e->assigns, exprEnv(), de.assigns, de.styles);
             dg.edges.push_back(std::move(de));
+        }
+        for (auto& de : dg.edges) {
+            if (de.src <= -3) de.src = keepEndpointOf(-3 - de.src, dg, keptNodes, named);
+            if (de.dst <= -3) de.dst = keepEndpointOf(-3 - de.dst, dg, keptNodes, named);
         }
         // Wildcards are always kept.
         for (std::size_t i = 0; i < rule_.nodes.size(); ++i)

@@ -221,3 +221,35 @@ TEST_CASE("one mistake gives one error, not a cascade", "[sema][cascade]") {
     CHECK(g2d::test::diagnosticLines(r) ==
           std::vector<std::string>{"5:11: error: unknown function `nosuch`", "7:34: error: unknown name `oops`"});
 }
+
+TEST_CASE("fixes from the language reference review", "[sema][review]") {
+    checkCases({
+        {"randomness through a user function in a match",
+         "fn coin() -> float = random();\nrule R { match { x: P where coin() < 0.5; } produce { x; } }",
+         "6:29: function `coin` draws random numbers, which cannot be used in a match condition"},
+        {"randomness through a user function in a default", "fn coin() -> float = random();\nnode Q { w: float = coin(); }",
+         "6:21: function `coin` draws random numbers, which cannot be used in an attribute default"},
+        {"repeated priority option", "priority 0 limit 2 limit 3;", "5:20: option given twice for priority 0"},
+        {"an edge used as a value", "rule R { match { x: P; y: P; e: x -[E]-> y where e > 0; } produce { x; y; } }",
+         "5:50: `e` is an edge, not a value; read one of its attributes instead"},
+    });
+    // A kept edge's endpoint may be kept by a later statement.
+    auto later = compile(prelude() + "rule R { match { x: P; y: P; e: x -[E]-> y; } produce { x; e; m: P at (0, 0); y -[E]-> m; } }");
+    CHECK(firstError(later).empty());
+    // A daughter may create a node named like a node of a negative condition.
+    auto nacName = compile(prelude() + "rule R { match { x: P; not { n: P; x -[E]-> n; } } produce { x; n: P at (1, 0); x -[E]-> n; } }");
+    CHECK(firstError(nacName).empty());
+    // Kind styles read the element's own facts.
+    auto facts = compile(prelude() + "node Q { style { r = pos.x + age; } }");
+    CHECK(firstError(facts).empty());
+    // `x.w > 1 and false` can never hold.
+    auto never = compile(prelude() + "rule R { match { x: P where x.w > 1 and false; } produce { x; } }");
+    REQUIRE(never.program);
+    CHECK(g2d::test::diagnosticLines(never) ==
+          std::vector<std::string>{"5:6: warning: rule `R` can never match: one of its conditions is always false"});
+    // One mistake, one error.
+    auto cascade1 = compile(prelude() + "rule R { match { x: P; } let int = 2; produce { x { w = int }; } }");
+    CHECK(g2d::test::diagnosticLines(cascade1) == std::vector<std::string>{"5:30: error: `int` would hide the built-in `int`"});
+    auto cascade2 = compile(prelude() + "rule R { match { x: Q; } produce { x; } }");
+    CHECK(g2d::test::diagnosticLines(cascade2) == std::vector<std::string>{"5:21: error: unknown node kind `Q`"});
+}

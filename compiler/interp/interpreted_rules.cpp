@@ -1,0 +1,311 @@
+#include "interp/interpreted_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "g2d/placement.hpp"
+
+namespace g2d::interp {
+
+using ir::PlanStep;
+using rt::EdgeId;
+using rt::kNoId;
+using rt::NodeId;
+
+InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
+    std::size_t maxNodes = 0, maxEdges = 0;
+    for (const auto& r : st.prog->rules) {
+        rt::RuleInfo info;
+        info.priority = r.priority;
+        info.pick = r.pick == ir::Pick::Oldest ? rt::Pick::Oldest : rt::Pick::Random;
+        auto prio = st.prog->priorities.find(r.priority);
+        info.parallel = r.parallel || (prio != st.prog->priorities.end() && prio->second.parallel);
+        for (const auto& d : r.daughters) {
+            double w = 1;
+            if (d.weight) {
+                w = *d.weight;
+            } else if (d.weightExpr) {
+                EvalFrame f = st.frame(nullptr);
+                rt::Value v = evaluate(*d.weightExpr, f);
+                w = std::get<double>(v);
+                if (!(w > 0) || !std::isfinite(w))
+                    throw EvalError(d.weightExpr->span, "a weight must be positive, but this is " + rt::formatNumber(w));
+            }
+            info.weights.push_back(w);
+        }
+        infos_.push_back(std::move(info));
+        std::size_t nacNodes = 0, nacEdges = 0;
+        for (const auto& n : r.nacs) {
+            nacNodes = std::max(nacNodes, n.nodes.size());
+            nacEdges = std::max(nacEdges, n.edges.size());
+        }
+        maxNodes = std::max(maxNodes, r.nodes.size() + nacNodes);
+        maxEdges = std::max(maxEdges, r.edges.size() + nacEdges);
+    }
+    boundNodes_.assign(maxNodes, kNoId);
+    boundEdges_.assign(maxEdges, kNoId);
+}
+
+// ---- matching ------------------------------------------------------------------
+
+bool InterpretedRules::orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const {
+    if (!r.ordered || node >= static_cast<int>(r.nodes.size())) return true;
+    const auto& si = *r.nodes[node].sketch;
+    const rt::vec2 hi = g.pos(boundNodes_[node]);
+    for (std::size_t j = 0; j < r.nodes.size(); ++j) {
+        if (static_cast<int>(j) == node || boundNodes_[j] == kNoId) continue;
+        const auto& sj = *r.nodes[j].sketch;
+        const rt::vec2 hj = g.pos(boundNodes_[j]);
+        if (si.x < sj.x && hi.x > hj.x) return false;
+        if (si.x > sj.x && hi.x < hj.x) return false;
+        if (si.y < sj.y && hi.y > hj.y) return false;
+        if (si.y > sj.y && hi.y < hj.y) return false;
+    }
+    return true;
+}
+
+bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
+                              std::size_t i, const std::function<bool()>& onComplete) {
+    const auto& plan = nac ? nac->plan : r.plan;
+    if (i == plan.size()) return onComplete();
+    const PlanStep& s = plan[i];
+    auto nodeKind = [&](int idx) {
+        return idx < static_cast<int>(r.nodes.size()) ? r.nodes[idx].kind : nac->nodes[idx - nac->outerNodes].kind;
+    };
+    auto edgeOf = [&](int idx) -> const ir::PatternEdge& {
+        return idx < static_cast<int>(r.edges.size()) ? r.edges[idx] : nac->edges[idx - nac->outerEdges];
+    };
+    auto nodeUsed = [&](NodeId h) { return std::find(boundNodes_.begin(), boundNodes_.end(), h) != boundNodes_.end(); };
+    auto edgeUsed = [&](EdgeId h) { return std::find(boundEdges_.begin(), boundEdges_.end(), h) != boundEdges_.end(); };
+
+    switch (s.op) {
+    case PlanStep::Op::Check: {
+        EvalFrame f = st_.frame(nullptr);
+        f.graph = &g;
+        f.nodes = &boundNodes_;
+        f.edges = &boundEdges_;
+        const auto& cond = nac ? nac->conditions[s.condition] : r.conditions[s.condition];
+        return evaluateBool(cond.expr, f) && search(g, r, nac, i + 1, onComplete);
+    }
+    case PlanStep::Op::ScanNodes: {
+        const int kind = nodeKind(s.node);
+        const auto& candidates = kind >= 0 ? g.nodesOfKind(kind) : g.allNodes();
+        for (std::size_t c = 0; c < candidates.size(); ++c) {
+            const NodeId h = candidates[c];
+            if (nodeUsed(h)) continue;
+            boundNodes_[s.node] = h;
+            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, i + 1, onComplete);
+            boundNodes_[s.node] = kNoId;
+            if (stop) return true;
+        }
+        return false;
+    }
+    case PlanStep::Op::ExtendEdge: {
+        const auto& pe = edgeOf(s.edge);
+        const bool directed = g.kinds()[pe.kind].directed;
+        const NodeId from = boundNodes_[s.from];
+        const int farKind = nodeKind(s.node);
+        const auto& incident = g.incident(from);
+        for (std::size_t c = 0; c < incident.size(); ++c) {
+            const EdgeId e = incident[c];
+            if (g.edgeKind(e) != pe.kind || edgeUsed(e)) continue;
+            NodeId other;
+            if (directed) {
+                if (s.fromIsSource ? g.source(e) != from : g.target(e) != from) continue;
+                other = s.fromIsSource ? g.target(e) : g.source(e);
+            } else {
+                other = g.source(e) == from ? g.target(e) : g.source(e);
+            }
+            if ((farKind >= 0 && g.nodeKind(other) != farKind) || nodeUsed(other)) continue;
+            boundEdges_[s.edge] = e;
+            boundNodes_[s.node] = other;
+            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, i + 1, onComplete);
+            boundNodes_[s.node] = kNoId;
+            boundEdges_[s.edge] = kNoId;
+            if (stop) return true;
+        }
+        return false;
+    }
+    case PlanStep::Op::ConnectEdge: {
+        const auto& pe = edgeOf(s.edge);
+        const bool directed = g.kinds()[pe.kind].directed;
+        const NodeId hs = boundNodes_[s.from], hd = boundNodes_[s.node];
+        const auto& incident = g.incident(hs);
+        for (std::size_t c = 0; c < incident.size(); ++c) {
+            const EdgeId e = incident[c];
+            if (g.edgeKind(e) != pe.kind || edgeUsed(e)) continue;
+            const NodeId a = g.source(e), b = g.target(e);
+            const bool fits = directed ? (a == hs && b == hd) : ((a == hs && b == hd) || (a == hd && b == hs));
+            if (!fits) continue;
+            boundEdges_[s.edge] = e;
+            const bool stop = search(g, r, nac, i + 1, onComplete);
+            boundEdges_[s.edge] = kNoId;
+            if (stop) return true;
+        }
+        return false;
+    }
+    }
+    return false;
+}
+
+bool InterpretedRules::nacsHold(const rt::Graph& g, const ir::Rule& r) {
+    for (const auto& nac : r.nacs)
+        if (search(g, r, &nac, 0, [] { return true; })) return false;
+    return true;
+}
+
+void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) {
+    const ir::Rule& r = st_.prog->rules[rule];
+    current_ = &r;
+    search(g, r, nullptr, 0, [&] {
+        if (nacsHold(g, r)) {
+            rt::Match m;
+            m.nodes.assign(boundNodes_.begin(), boundNodes_.begin() + static_cast<long>(r.nodes.size()));
+            m.edges.assign(boundEdges_.begin(), boundEdges_.begin() + static_cast<long>(r.edges.size()));
+            out.push_back(std::move(m));
+        }
+        return false;  // enumerate them all
+    });
+}
+
+// ---- rewriting ------------------------------------------------------------------
+
+rt::WriteSet InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, const rt::Match& m) const {
+    const ir::Rule& r = st_.prog->rules[rule];
+    const ir::Daughter& d = r.daughters[daughter];
+    rt::WriteSet w;
+    for (int n : d.deletedNodes) w.nodes.push_back(m.nodes[n]);
+    for (int e : d.deletedEdges) w.edges.push_back(m.edges[e]);
+    for (const auto& dn : d.nodes)
+        if (dn.motherNode >= 0 && (dn.position || !dn.assigns.empty() || !dn.styles.empty()))
+            w.nodes.push_back(m.nodes[dn.motherNode]);
+    for (const auto& de : d.edges) {
+        if (de.motherEdge < 0) continue;
+        const auto& me = r.edges[de.motherEdge];
+        const bool rewired = d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst;
+        if (rewired || !de.assigns.empty() || !de.styles.empty()) w.edges.push_back(m.edges[de.motherEdge]);
+    }
+    return w;
+}
+
+InterpretedRules::Values InterpretedRules::evaluateValues(const std::vector<ir::AttrAssign>& attrs,
+                                                          const std::vector<ir::StyleAssign>& styles, EvalFrame& f) {
+    Values v;
+    for (const auto& a : attrs) v.attrs.emplace_back(a.attr, evaluate(a.value, f));
+    for (const auto& s : styles) v.styles.emplace_back(s.prop, evaluate(s.value, f));
+    return v;
+}
+
+void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt::Match& m, const rt::Graph& g,
+                               rt::Rng& rng, long long) {
+    const ir::Rule& r = st_.prog->rules[rule];
+    const ir::Daughter& d = r.daughters[daughter];
+    current_ = &r;
+    locals_.assign(static_cast<std::size_t>(r.localSlots), rt::Value{});
+    EvalFrame f = st_.frame(&rng);
+    f.graph = &g;
+    f.nodes = &m.nodes;
+    f.edges = &m.edges;
+    f.locals = &locals_;
+    for (const auto& l : r.lets) locals_[l.slot] = evaluate(l.value, f);
+    for (const auto& l : d.lets) locals_[l.slot] = evaluate(l.value, f);
+
+    Prepared p;
+    p.rule = rule;
+    p.daughter = daughter;
+    p.match = m;
+    for (const auto& dn : d.nodes) {
+        std::optional<rt::vec2> pos;
+        if (dn.position) {
+            pos = evaluateVec(*dn.position, f);
+            if (!std::isfinite(pos->x) || !std::isfinite(pos->y))
+                throw EvalError(dn.position->span, "position of `" + dn.name + "` is not finite");
+        }
+        p.nodePos.push_back(pos);
+        p.nodeValues.push_back(evaluateValues(dn.assigns, dn.styles, f));
+    }
+    for (const auto& de : d.edges) p.edgeValues.push_back(evaluateValues(de.assigns, de.styles, f));
+
+    if (d.autoPlacement) {
+        // Reference nodes: the kept mother nodes, or all of them if none is kept.
+        std::vector<int> ref;
+        std::vector<rt::vec2> mother, daughterSketch, host;
+        for (const auto& dn : d.nodes)
+            if (dn.motherNode >= 0) {
+                ref.push_back(dn.motherNode);
+                daughterSketch.push_back({dn.sketch->x, dn.sketch->y});
+            }
+        if (ref.empty())
+            for (std::size_t i = 0; i < r.nodes.size(); ++i) {
+                ref.push_back(static_cast<int>(i));
+                daughterSketch.push_back({r.nodes[i].sketch->x, r.nodes[i].sketch->y});
+            }
+        for (int n : ref) {
+            mother.push_back({r.nodes[n].sketch->x, r.nodes[n].sketch->y});
+            host.push_back(g.pos(m.nodes[n]));
+        }
+        std::optional<std::pair<int, int>> directed;
+        for (const auto& e : r.edges) {
+            if (!st_.prog->kinds[e.kind].directed) continue;
+            auto a = std::find(ref.begin(), ref.end(), e.src), b = std::find(ref.begin(), ref.end(), e.dst);
+            if (a == ref.end() || b == ref.end() || a == b) continue;
+            directed = std::make_pair(static_cast<int>(a - ref.begin()), static_cast<int>(b - ref.begin()));
+            break;
+        }
+        const rt::PlacementFrame frame = rt::placementFrame(mother, daughterSketch, host, directed);
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            if (dn.motherNode >= 0 || dn.position) continue;
+            const rt::vec2 pos = frame.place({dn.sketch->x, dn.sketch->y});
+            if (!std::isfinite(pos.x) || !std::isfinite(pos.y))
+                throw EvalError(dn.span, "automatic placement of `" + dn.name + "` gives a non-finite position");
+            p.nodePos[i] = pos;
+        }
+    }
+    pending_.push_back(std::move(p));
+}
+
+void InterpretedRules::commit(rt::Graph& g, long long step) {
+    for (auto& p : pending_) {
+        const ir::Rule& r = st_.prog->rules[p.rule];
+        const ir::Daughter& d = r.daughters[p.daughter];
+        for (int e : d.deletedEdges) g.removeEdge(p.match.edges[e]);
+        for (int n : d.deletedNodes) g.removeNode(p.match.nodes[n]);
+        std::vector<NodeId> hostOf(d.nodes.size(), kNoId);
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            auto& values = p.nodeValues[i];
+            if (dn.motherNode >= 0) {
+                const NodeId h = p.match.nodes[dn.motherNode];
+                hostOf[i] = h;
+                if (p.nodePos[i]) g.setPos(h, *p.nodePos[i]);
+                for (auto& [attr, v] : values.attrs) g.setNodeAttr(h, attr, std::move(v));
+            } else {
+                std::vector<rt::Value> attrs = st_.kindDefaults[dn.kind];
+                for (auto& [attr, v] : values.attrs) attrs[attr] = std::move(v);
+                hostOf[i] = g.addNode(dn.kind, *p.nodePos[i], step, std::move(attrs));
+            }
+            for (auto& [prop, v] : values.styles) g.setNodeStyle(hostOf[i], prop, std::move(v));
+        }
+        for (std::size_t i = 0; i < d.edges.size(); ++i) {
+            const auto& de = d.edges[i];
+            auto& values = p.edgeValues[i];
+            EdgeId h;
+            if (de.motherEdge >= 0) {
+                h = p.match.edges[de.motherEdge];
+                const auto& me = r.edges[de.motherEdge];
+                if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
+                    g.reconnectEdge(h, hostOf[de.src], hostOf[de.dst]);
+                for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
+            } else {
+                std::vector<rt::Value> attrs = st_.kindDefaults[de.kind];
+                for (auto& [attr, v] : values.attrs) attrs[attr] = std::move(v);
+                h = g.addEdge(de.kind, hostOf[de.src], hostOf[de.dst], step, std::move(attrs));
+            }
+            for (auto& [prop, v] : values.styles) g.setEdgeStyle(h, prop, std::move(v));
+        }
+    }
+    pending_.clear();
+}
+
+}  // namespace g2d::interp

@@ -1,0 +1,56 @@
+#pragma once
+// The interpreter's rules: matching walks each rule's search plan over the
+// runtime's indexes; rewriting follows the daughter's IR.
+#include <optional>
+#include <vector>
+
+#include "g2d/derivation.hpp"
+#include "interp/program_state.hpp"
+
+namespace g2d::interp {
+
+class InterpretedRules : public rt::RuleSet {
+public:
+    // Throws EvalError if a parameter-dependent weight is not positive.
+    explicit InterpretedRules(const ProgramState& st);
+
+    std::size_t ruleCount() const override { return infos_.size(); }
+    const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
+    void findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) override;
+    rt::WriteSet writeSet(std::size_t rule, std::size_t daughter, const rt::Match& m) const override;
+    void prepare(std::size_t rule, std::size_t daughter, const rt::Match& m, const rt::Graph& g, rt::Rng& rng,
+                 long long step) override;
+    void commit(rt::Graph& g, long long step) override;
+
+    // The rule being applied when an EvalError escapes (for messages).
+    const ir::Rule* currentRule() const { return current_; }
+
+private:
+    struct Values {
+        std::vector<std::pair<int, rt::Value>> attrs;
+        std::vector<std::pair<std::string, rt::Value>> styles;
+    };
+    struct Prepared {
+        std::size_t rule = 0, daughter = 0;
+        rt::Match match;
+        std::vector<std::optional<rt::vec2>> nodePos;   // per daughter node
+        std::vector<Values> nodeValues, edgeValues;
+    };
+
+    bool search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac, std::size_t step,
+                const std::function<bool()>& onComplete);
+    bool orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const;
+    bool nacsHold(const rt::Graph& g, const ir::Rule& r);
+    Values evaluateValues(const std::vector<ir::AttrAssign>& attrs, const std::vector<ir::StyleAssign>& styles,
+                          EvalFrame& f);
+
+    const ProgramState& st_;
+    std::vector<rt::RuleInfo> infos_;
+    std::vector<Prepared> pending_;
+    std::vector<rt::NodeId> boundNodes_;
+    std::vector<rt::EdgeId> boundEdges_;
+    std::vector<rt::Value> locals_;
+    const ir::Rule* current_ = nullptr;
+};
+
+}  // namespace g2d::interp

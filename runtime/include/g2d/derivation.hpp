@@ -1,0 +1,103 @@
+#pragma once
+// The scheduler of a derivation, exactly as the thesis (§4.1): each step goes
+// through the priorities from the lowest value up, tries the rules of one
+// priority in random order, applies the first rule that has a match, and
+// starts again from the lowest priority. The rules themselves (matching and
+// rewriting) are supplied by a back end through RuleSet: the interpreter
+// walks the IR, generated code runs specialised loops. Both share this file,
+// so they draw random numbers in the same order.
+//
+// Random draws per step, in this order (documented in docs/runtime.md):
+//   1. for each priority visited, a Fisher–Yates shuffle of its rules
+//      (no draw for a single rule);
+//   2. the match: below(n) over the matches in enumeration order (random), or
+//      over the tied oldest matches (oldest); no draw when there is one;
+//   3. the daughter: one unit() draw when the rule has several daughters;
+//   4. whatever the daughter's expressions draw, in source order.
+// A parallel step shuffles the matches (random) or sorts them oldest first,
+// then takes each match that does not overlap those already taken, drawing
+// its daughter (3) and evaluating its expressions (4) in that order.
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "g2d/graph.hpp"
+#include "g2d/rng.hpp"
+
+namespace g2d::rt {
+
+enum class Pick { Random, Oldest };
+
+struct Match {
+    std::vector<NodeId> nodes;
+    std::vector<EdgeId> edges;
+};
+
+struct RuleInfo {
+    long long priority = 0;
+    Pick pick = Pick::Random;
+    bool parallel = false;
+    std::vector<double> weights;      // one per daughter, all > 0
+};
+
+// Elements a chosen daughter deletes or changes (for parallel steps).
+struct WriteSet {
+    std::vector<NodeId> nodes;
+    std::vector<EdgeId> edges;
+};
+
+class RuleSet {
+public:
+    virtual ~RuleSet() = default;
+    virtual std::size_t ruleCount() const = 0;
+    virtual const RuleInfo& info(std::size_t rule) const = 0;
+    // Every match of `rule` on `g`, in a deterministic order.
+    virtual void findMatches(std::size_t rule, const Graph& g, std::vector<Match>& out) = 0;
+    // What applying `daughter` to `m` deletes or changes.
+    virtual WriteSet writeSet(std::size_t rule, std::size_t daughter, const Match& m) const = 0;
+    // Evaluates everything the daughter computes, on the graph as it is now
+    // (before the step), and keeps it until commit().
+    virtual void prepare(std::size_t rule, std::size_t daughter, const Match& m, const Graph& g, Rng& rng,
+                         long long step) = 0;
+    // Applies every prepared application, in order, and forgets them.
+    virtual void commit(Graph& g, long long step) = 0;
+};
+
+enum class StopReason { Terminal, StepLimit };
+
+struct DerivationLimits {
+    std::optional<long long> steps;               // global limit (none: unlimited)
+    std::map<long long, long long> perPriority;   // priority -> limit
+    std::size_t maxElements = 50'000'000;         // a runaway guard
+};
+
+struct DerivationResult {
+    long long steps = 0;
+    StopReason stopped = StopReason::Terminal;
+    double seconds = 0;
+};
+
+// Called after every step (for progress displays).
+using StepObserver = std::function<void(long long step, const Graph& g)>;
+
+class RunawayError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
+                        const StepObserver& observer = {});
+
+// Helpers shared with tests: the selection rules, as specified above.
+std::size_t pickMatch(const std::vector<Match>& matches, Pick pick, const Graph& g, Rng& rng);
+std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);
+long long ageSum(const Match& m, const Graph& g);
+template <class T>
+void shuffle(std::vector<T>& v, Rng& rng) {
+    for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
+}
+
+}  // namespace g2d::rt

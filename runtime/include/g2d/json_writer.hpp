@@ -1,0 +1,27 @@
+#pragma once
+// Writes a graph in NetworkX's node-link format (readable by
+// networkx.node_link_graph): a directed multigraph whose nodes carry kind,
+// pos, age and attributes, and whose links carry source, target, key, kind,
+// directed, age and attributes. Numbers print as the shortest round-trip
+// decimal, so every back end writes the same bytes.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "g2d/graph.hpp"
+
+namespace g2d::rt {
+
+struct JsonSchema {
+    std::vector<std::string> kindNames;
+    std::vector<std::vector<std::string>> attrNames;      // per kind
+    std::vector<std::vector<std::string>> enumValueNames; // per enum
+};
+
+// `graphAttrs` become the "graph" object (e.g. steps, seed).
+std::string writeJson(const Graph& g, const JsonSchema& schema,
+                      const std::vector<std::pair<std::string, Value>>& graphAttrs);
+
+std::string jsonString(const std::string& s);
+
+}  // namespace g2d::rt

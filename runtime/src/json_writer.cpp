@@ -1,0 +1,82 @@
+#include "g2d/json_writer.hpp"
+
+#include <map>
+
+namespace g2d::rt {
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        default:
+            if (c < 0x20) {
+                char buf[8];
+                std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                out += buf;
+            } else {
+                out += static_cast<char>(c);
+            }
+        }
+    }
+    return out + "\"";
+}
+
+namespace {
+
+std::string jsonValue(const Value& v, const JsonSchema& schema) {
+    if (auto* i = std::get_if<long long>(&v)) return std::to_string(*i);
+    if (auto* d = std::get_if<double>(&v)) return formatNumber(*d);
+    if (auto* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
+    if (auto* s = std::get_if<std::string>(&v)) return jsonString(*s);
+    if (auto* p = std::get_if<vec2>(&v)) return "[" + formatNumber(p->x) + ", " + formatNumber(p->y) + "]";
+    const auto& e = std::get<EnumVal>(v);
+    return jsonString(schema.enumValueNames.at(e.enumId).at(e.index));
+}
+
+}  // namespace
+
+std::string writeJson(const Graph& g, const JsonSchema& schema,
+                      const std::vector<std::pair<std::string, Value>>& graphAttrs) {
+    std::string out = "{\"directed\": true, \"multigraph\": true, \"graph\": {";
+    for (std::size_t i = 0; i < graphAttrs.size(); ++i)
+        out += (i ? ", " : "") + jsonString(graphAttrs[i].first) + ": " + jsonValue(graphAttrs[i].second, schema);
+    out += "},\n\"nodes\": [";
+    bool first = true;
+    for (NodeId n = 0; n < g.nodeCapacity(); ++n) {
+        if (!g.nodeAlive(n)) continue;
+        const int k = g.nodeKind(n);
+        out += first ? "\n" : ",\n";
+        first = false;
+        out += "{\"id\": " + std::to_string(n) + ", \"kind\": " + jsonString(schema.kindNames[k]) + ", \"pos\": [" +
+               formatNumber(g.pos(n).x) + ", " + formatNumber(g.pos(n).y) + "], \"age\": " + std::to_string(g.nodeAge(n));
+        for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
+            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(g.nodeAttr(n, static_cast<int>(a)), schema);
+        out += "}";
+    }
+    out += "],\n\"links\": [";
+    first = true;
+    std::map<std::pair<NodeId, NodeId>, int> keys;  // multigraph keys per (source, target)
+    for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
+        if (!g.edgeAlive(e)) continue;
+        const int k = g.edgeKind(e);
+        const int key = keys[{g.source(e), g.target(e)}]++;
+        out += first ? "\n" : ",\n";
+        first = false;
+        out += "{\"source\": " + std::to_string(g.source(e)) + ", \"target\": " + std::to_string(g.target(e)) +
+               ", \"key\": " + std::to_string(key) + ", \"id\": " + std::to_string(e) + ", \"kind\": " +
+               jsonString(schema.kindNames[k]) + ", \"directed\": " + (g.kinds()[k].directed ? "true" : "false") +
+               ", \"age\": " + std::to_string(g.edgeAge(e));
+        for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
+            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(g.edgeAttr(e, static_cast<int>(a)), schema);
+        out += "}";
+    }
+    out += "]}\n";
+    return out;
+}
+
+}  // namespace g2d::rt
