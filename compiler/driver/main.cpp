@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "driver/check_command.hpp"
+#include "driver/run_command.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"g2d: a compiled language for graph grammars that generate 2D shapes"};
@@ -17,6 +18,19 @@ int main(int argc, char** argv) {
     check->add_option("--diagnostics-format", format, "text (default) or json")
         ->check(CLI::IsMember({"text", "json"}));
     check->add_flag("--werror", werror, "Treat warnings as errors");
+
+    auto* run = app.add_subcommand("run", "Derive a grammar and write SVG (and graph JSON)");
+    g2d::RunOptions runOptions;
+    std::string svgOut, jsonOut;
+    long long steps = -1;
+    run->add_option("FILE", runOptions.file, ".g2d grammar")->required();
+    run->add_option("-o,--output", svgOut, "SVG output (default: the grammar's name with .svg)");
+    run->add_option("--json", jsonOut, "Graph output in NetworkX node-link JSON");
+    run->add_flag("--no-svg", runOptions.noSvg, "Write no SVG");
+    run->add_option("--seed", runOptions.seed, "Seed of the random generator (default 1)");
+    run->add_option("-D,--define", runOptions.defines, "Set a parameter: -D NAME=VALUE")->allow_extra_args(false);
+    run->add_option("--steps", steps, "Global step limit (overrides the grammar's)");
+    run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");
 
     try {
         app.parse(argc, argv);
@@ -33,6 +47,12 @@ int main(int argc, char** argv) {
         return g2d::runCheck(checkFiles,
                              format == "json" ? g2d::DiagnosticsFormat::Json : g2d::DiagnosticsFormat::Text,
                              werror);
+    }
+    if (run->parsed()) {
+        if (!svgOut.empty()) runOptions.svgOut = svgOut;
+        if (!jsonOut.empty()) runOptions.jsonOut = jsonOut;
+        if (run->count("--steps")) runOptions.steps = steps;
+        return g2d::runRun(runOptions);
     }
     return 2;
 }

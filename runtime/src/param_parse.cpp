@@ -1,0 +1,58 @@
+#include "g2d/param_parse.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace g2d::rt {
+
+namespace {
+
+std::optional<double> parseDouble(const std::string& s) {
+    double v = 0;
+    auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (res.ec != std::errc() || res.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t");
+    const auto e = s.find_last_not_of(" \t");
+    return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+}  // namespace
+
+std::optional<Value> parseParamValue(ParamType type, const std::string& text, int enumId,
+                                     const std::vector<std::string>& enumValues) {
+    switch (type) {
+    case ParamType::Int: {
+        long long v = 0;
+        auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (res.ec != std::errc() || res.ptr != text.data() + text.size()) return std::nullopt;
+        return Value{v};
+    }
+    case ParamType::Float:
+        if (auto d = parseDouble(text)) return Value{*d};
+        return std::nullopt;
+    case ParamType::Bool:
+        if (text == "true") return Value{true};
+        if (text == "false") return Value{false};
+        return std::nullopt;
+    case ParamType::String: return Value{text};
+    case ParamType::Vec2: {
+        const auto comma = text.find(',');
+        if (comma == std::string::npos) return std::nullopt;
+        auto x = parseDouble(trim(text.substr(0, comma)));
+        auto y = parseDouble(trim(text.substr(comma + 1)));
+        if (!x || !y) return std::nullopt;
+        return Value{vec2{*x, *y}};
+    }
+    case ParamType::Enum:
+        for (std::size_t i = 0; i < enumValues.size(); ++i)
+            if (enumValues[i] == text) return Value{EnumVal{enumId, static_cast<int>(i)}};
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+}  // namespace g2d::rt
