@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
     run->add_option("-o,--output", svgOut, "SVG output (default: the grammar's name with .svg)");
     run->add_option("--json", jsonOut, "Graph output in NetworkX node-link JSON");
     run->add_flag("--no-svg", runOptions.noSvg, "Write no SVG");
-    run->add_option("--seed", runOptions.seed, "Seed of the random generator (default 1)");
+    run->add_option("--seed", runOptions.seed, "Seed of the random generator (default 1)")
+        ->check(CLI::NonNegativeNumber);
     run->add_option("-D,--define", runOptions.defines, "Set a parameter: -D NAME=VALUE")->allow_extra_args(false);
     run->add_option("--steps", steps, "Global step limit (overrides the grammar's)");
     run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");

@@ -12,13 +12,11 @@
 #include "g2d/derivation.hpp"
 #include "g2d/param_parse.hpp"
 #include "interp/drawing.hpp"
-#include "interp/interpreted_rules.hpp"
+#include "interp/run_program.hpp"
 
 namespace g2d {
 
 namespace {
-
-constexpr long long kDefaultStepLimit = 10000;
 
 bool colorStderr() { return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"); }
 
@@ -45,7 +43,7 @@ rt::ParamType paramType(const ir::Type& t) {
 // Parameter values: defaults, then -D overrides. Returns an error message or "".
 std::string parameterValues(const ir::Program& prog, const std::vector<std::string>& defines,
                             std::vector<rt::Value>& out) {
-    for (const auto& p : prog.params) out.push_back(interp::fromLiteral(p.defaultValue));
+    out = interp::defaultParams(prog);
     for (const auto& d : defines) {
         const auto eq = d.find('=');
         if (eq == std::string::npos || eq == 0) return "-D " + d + ": expected NAME=VALUE";
@@ -77,13 +75,14 @@ std::string parameterValues(const ir::Program& prog, const std::vector<std::stri
     return "";
 }
 
-void reportRuntimeError(const CompileResult& r, const interp::EvalError& e, const interp::InterpretedRules* rules,
-                        long long step) {
+void reportRuntimeError(const CompileResult& r, const interp::EvalError& e, const interp::RunFailure& failure) {
     Diagnostic d;
     d.span = e.span;
     d.message = e.what();
-    if (rules && rules->currentRule()) d.message += " (in rule `" + rules->currentRule()->name + "`, step " + std::to_string(step) + ")";
-    else d.message += " (before the first step)";
+    if (!failure.rule.empty())
+        d.message += " (in rule `" + failure.rule + "`, step " + std::to_string(failure.step) + ")";
+    else
+        d.message += " (before the first step)";
     std::fputs(renderText(d, r.sources, colorStderr()).c_str(), stderr);
 }
 
@@ -137,33 +136,20 @@ int runRun(const RunOptions& options) {
         return 1;
     }
 
-    rt::Rng rng(options.seed);
-    std::unique_ptr<interp::InterpretedRules> rules;
-    long long step = 0;
+    interp::RunFailure failure;
     try {
-        interp::ProgramState state = interp::initState(prog, std::move(params), rng);
-        rt::Graph graph = interp::buildAxiom(state, rng);
-        rules = std::make_unique<interp::InterpretedRules>(state);
-
-        rt::DerivationLimits limits;
-        interp::EvalFrame frame = state.frame(nullptr);
-        const bool grammarLimit = prog.stepLimit.has_value();
-        if (options.steps) limits.steps = *options.steps;
-        else if (prog.stepLimit) limits.steps = std::get<long long>(interp::evaluate(*prog.stepLimit, frame));
-        else limits.steps = kDefaultStepLimit;
-        for (const auto& [prio, cfg] : prog.priorities)
-            if (cfg.limit) limits.perPriority[prio] = std::get<long long>(interp::evaluate(*cfg.limit, frame));
-
         Progress progress;
-        rt::DerivationResult result = rt::derive(graph, *rules, rng, limits, [&](long long s, const rt::Graph& g) {
-            step = s;
-            progress.update(s, g);
-        });
-        if (result.stopped == rt::StopReason::StepLimit && !options.steps && !grammarLimit)
+        interp::RunResult run = interp::runProgram(prog, std::move(params), options.seed, options.steps,
+                                                   [&](long long s, const rt::Graph& g) { progress.update(s, g); },
+                                                   &failure);
+        const rt::DerivationResult& result = run.derivation;
+        const rt::Graph& graph = run.graph;
+        const interp::ProgramState& state = run.state;
+        if (run.hitDefaultLimit)
             std::fprintf(stderr,
                          "%s: warning: stopped at the default limit of %lld steps; the grammar may not terminate "
                          "(set `limit N;` or pass --steps N)\n",
-                         options.file.c_str(), kDefaultStepLimit);
+                         options.file.c_str(), interp::kDefaultStepLimit);
 
         if (svgFile) svgFile->commit(rt::writeSvg(interp::drawItems(graph, state), prog.svgDefs));
         if (jsonFile) {
@@ -181,7 +167,7 @@ int runRun(const RunOptions& options) {
                         static_cast<unsigned long long>(options.seed),
                         result.stopped == rt::StopReason::Terminal ? "terminal" : "step_limit");
     } catch (const interp::EvalError& e) {
-        reportRuntimeError(compiled, e, rules.get(), step + 1);
+        reportRuntimeError(compiled, e, failure);
         return 1;
     } catch (const rt::RunawayError& e) {
         std::fprintf(stderr, "%s: error: %s\n", options.file.c_str(), e.what());

@@ -56,10 +56,11 @@ bool InterpretedRules::orderedOk(const rt::Graph& g, const ir::Rule& r, int node
         if (static_cast<int>(j) == node || boundNodes_[j] == kNoId) continue;
         const auto& sj = *r.nodes[j].sketch;
         const rt::vec2 hj = g.pos(boundNodes_[j]);
-        if (si.x < sj.x && hi.x > hj.x) return false;
-        if (si.x > sj.x && hi.x < hj.x) return false;
-        if (si.y < sj.y && hi.y > hj.y) return false;
-        if (si.y > sj.y && hi.y < hj.y) return false;
+        // Strict: a node drawn left of another must match one that is left of it.
+        if (si.x < sj.x && !(hi.x < hj.x)) return false;
+        if (si.x > sj.x && !(hi.x > hj.x)) return false;
+        if (si.y < sj.y && !(hi.y < hj.y)) return false;
+        if (si.y > sj.y && !(hi.y > hj.y)) return false;
     }
     return true;
 }

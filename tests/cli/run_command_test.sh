@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# `g2d run` end to end: outputs, determinism, errors and exit codes.
+# Usage: run_command_test.sh G2D SOURCE_DIR
+set -u
+g2d="$1"; src="$2"
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect_code() {  # expected, then the command
+  local want=$1; shift
+  "$@" >out.txt 2>err.txt; local got=$?
+  [ "$got" = "$want" ] || fail "exit $got (wanted $want): $* -- $(cat err.txt)"
+}
+
+# Outputs and stats
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=2 -o k.svg --json k.json --stats --seed 9
+grep -qx '{"steps": 15, "nodes": 48, "edges": 48, "seconds": [0-9.e-]*, "seed": 9, "stopped": "terminal"}' out.txt \
+  || fail "stats line: $(cat out.txt)"
+head -c 38 k.svg | grep -q '<?xml version="1.0" encoding="UTF-8"?>' || fail "SVG header"
+[ "$(grep -c '<line ' k.svg)" = 48 ] || fail "48 lines expected in k.svg"
+grep -q '"directed": true, "multigraph": true' k.json || fail "node-link JSON header"
+if command -v xmllint >/dev/null; then xmllint --noout k.svg || fail "SVG is not well-formed"; fi
+
+# Default output name: the grammar's name in the current folder
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=1
+[ -f koch_snowflake.svg ] || fail "default output koch_snowflake.svg missing"
+
+# Byte-identical for the same seed, different for another
+"$g2d" run "$src/examples/tree.g2d" --seed 4 -o t1.svg --json t1.json >/dev/null 2>&1
+"$g2d" run "$src/examples/tree.g2d" --seed 4 -o t2.svg --json t2.json >/dev/null 2>&1
+"$g2d" run "$src/examples/tree.g2d" --seed 5 -o t3.svg >/dev/null 2>&1
+cmp -s t1.svg t2.svg || fail "same seed, different SVG"
+cmp -s t1.json t2.json || fail "same seed, different JSON"
+cmp -s t1.svg t3.svg && fail "different seeds, same SVG"
+
+# A run-time error: located message, exit 1, no output written, old file untouched
+cat > div.g2d <<'G'
+node P { d: float = 0; }
+axiom { p: P at (0, 0); }
+rule R { match { p: P; } produce { p at (1 / p.d, 0); } }
+G
+echo old > keep.svg
+expect_code 1 "$g2d" run div.g2d -o keep.svg --json new.json
+grep -q '^div.g2d:3:42: error: division by zero (in rule `R`, step 1)$' err.txt || fail "runtime error text: $(cat err.txt)"
+[ "$(cat keep.svg)" = old ] || fail "a failed run overwrote keep.svg"
+[ -e new.json ] && fail "a failed run left new.json"
+ls | grep -q '\.tmp-' && fail "temporary files left behind"
+
+# Unwritable outputs fail before the derivation, with exit 1
+expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -o /nonexistent/dir/x.svg
+grep -q "cannot write \`/nonexistent/dir/x.svg\`" err.txt || fail "unwritable output message: $(cat err.txt)"
+mkdir adir
+expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -o adir
+grep -q "it is a directory" err.txt || fail "directory output message: $(cat err.txt)"
+
+# Bad arguments exit 2
+expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D nosuch=3
+grep -q 'no parameter `nosuch` (its parameters: max_lod)' err.txt || fail "unknown parameter message: $(cat err.txt)"
+expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=abc
+grep -q 'not a valid int' err.txt || fail "bad value message: $(cat err.txt)"
+expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" --seed -1
+expect_code 2 "$g2d" run
+
+# Grammar errors exit 1 with diagnostics
+printf 'node P;\naxiom { a: Q; }\n' > bad.g2d
+expect_code 1 "$g2d" run bad.g2d
+grep -q '^bad.g2d:2:12: error: unknown node kind `Q`' err.txt || fail "grammar error text: $(cat err.txt)"
+
+# --steps overrides the limit; the default limit warns
+printf 'node P;\naxiom { p: P at (0, 0); }\nrule Spin { match { p: P; } produce { p; } }\n' > spin.g2d
+expect_code 0 "$g2d" run spin.g2d --steps 7 --stats --no-svg
+grep -q '"steps": 7,.*"stopped": "step_limit"' out.txt || fail "--steps: $(cat out.txt)"
+expect_code 0 "$g2d" run spin.g2d --no-svg
+grep -q 'warning: stopped at the default limit of 10000 steps' err.txt || fail "default limit warning: $(cat err.txt)"
+
+echo "$failures failed"
+[ "$failures" = 0 ]
