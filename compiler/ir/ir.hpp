@@ -27,6 +27,12 @@ struct Type {
     bool isNumeric() const { return kind == TypeKind::Int || kind == TypeKind::Float; }
 };
 
+inline const Type kIntType = Type::of(TypeKind::Int);
+inline const Type kFloatType = Type::of(TypeKind::Float);
+inline const Type kBoolType = Type::of(TypeKind::Bool);
+inline const Type kStringType = Type::of(TypeKind::String);
+inline const Type kVec2Type = Type::of(TypeKind::Vec2);
+
 struct Vec2 {
     double x = 0, y = 0;
     bool operator==(const Vec2&) const = default;

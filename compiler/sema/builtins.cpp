@@ -10,11 +10,11 @@ using ir::TypeKind;
 
 namespace {
 
-const Type I = Type::of(TypeKind::Int);
-const Type F = Type::of(TypeKind::Float);
-const Type B = Type::of(TypeKind::Bool);
-const Type S = Type::of(TypeKind::String);
-const Type V = Type::of(TypeKind::Vec2);
+const Type I = ir::kIntType;
+const Type F = ir::kFloatType;
+const Type B = ir::kBoolType;
+const Type S = ir::kStringType;
+const Type V = ir::kVec2Type;
 
 struct Overload {
     Builtin builtin;

@@ -16,11 +16,6 @@ using ir::TypeKind;
 
 namespace {
 
-const Type kInt = Type::of(TypeKind::Int);
-const Type kFloat = Type::of(TypeKind::Float);
-const Type kBool = Type::of(TypeKind::Bool);
-const Type kString = Type::of(TypeKind::String);
-const Type kVec2 = Type::of(TypeKind::Vec2);
 
 Expr literal(ir::Value v, Type t, Span s) {
     Expr e;
@@ -61,12 +56,12 @@ std::string suggest(const std::string& name, const std::vector<std::string>& can
 Expr ExprChecker::coerce(Expr e, Type to) {
     if (to.kind == TypeKind::Float && e.type.kind == TypeKind::Int) {
         if (e.op == ExprOp::Literal) {
-            return literal(static_cast<double>(std::get<long long>(e.value)), kFloat, e.span);
+            return literal(static_cast<double>(std::get<long long>(e.value)), ir::kFloatType, e.span);
         }
         Expr c;
         c.op = ExprOp::Call;
         c.builtin = ir::Builtin::ToFloat;
-        c.type = kFloat;
+        c.type = ir::kFloatType;
         c.span = e.span;
         c.args.push_back(std::move(e));
         return c;
@@ -93,17 +88,17 @@ std::optional<Expr> ExprChecker::check(const ast::Expr& e, const ExprEnv& env) {
                     g_.diags.error(e.span, "integer literal is out of range (at most 9223372036854775807)");
                     return std::nullopt;
                 }
-                return literal(n.value, kInt, e.span);
+                return literal(n.value, ir::kIntType, e.span);
             } else if constexpr (std::is_same_v<T, ast::FloatLit>) {
                 if (!std::isfinite(n.value)) {
                     g_.diags.error(e.span, "number literal is out of range");
                     return std::nullopt;
                 }
-                return literal(n.value, kFloat, e.span);
+                return literal(n.value, ir::kFloatType, e.span);
             } else if constexpr (std::is_same_v<T, ast::StringLit>) {
-                return literal(n.value, kString, e.span);
+                return literal(n.value, ir::kStringType, e.span);
             } else if constexpr (std::is_same_v<T, ast::BoolLit>) {
-                return literal(n.value, kBool, e.span);
+                return literal(n.value, ir::kBoolType, e.span);
             } else if constexpr (std::is_same_v<T, ast::Name>) {
                 return name(e, n, env);
             } else if constexpr (std::is_same_v<T, ast::Member>) {
@@ -111,13 +106,13 @@ std::optional<Expr> ExprChecker::check(const ast::Expr& e, const ExprEnv& env) {
             } else if constexpr (std::is_same_v<T, ast::Call>) {
                 return call(e, n, env);
             } else if constexpr (std::is_same_v<T, ast::VecLit>) {
-                auto x = checkAs(*n.x, kFloat, env, "the x of a vector");
-                auto y = checkAs(*n.y, kFloat, env, "the y of a vector");
+                auto x = checkAs(*n.x, ir::kFloatType, env, "the x of a vector");
+                auto y = checkAs(*n.y, ir::kFloatType, env, "the y of a vector");
                 if (!x || !y) return std::nullopt;
                 Expr c;
                 c.op = ExprOp::Call;
                 c.builtin = ir::Builtin::MakeVec2;
-                c.type = kVec2;
+                c.type = ir::kVec2Type;
                 c.span = e.span;
                 c.args.push_back(std::move(*x));
                 c.args.push_back(std::move(*y));
@@ -173,7 +168,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
             Expr r;
             r.op = ExprOp::SelfFact;
             r.fact = fact;
-            r.type = fact == ir::ElemFact::Pos ? kVec2 : kInt;
+            r.type = fact == ir::ElemFact::Pos ? ir::kVec2Type : ir::kIntType;
             r.span = e.span;
             return r;
         }
@@ -222,8 +217,8 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         }
         return literal(it->second[0], Type::enumeration(it->second[0].enumId), e.span);
     }
-    if (id == "pi") return literal(std::numbers::pi, kFloat, e.span);
-    if (id == "tau") return literal(2 * std::numbers::pi, kFloat, e.span);
+    if (id == "pi") return literal(std::numbers::pi, ir::kFloatType, e.span);
+    if (id == "tau") return literal(2 * std::numbers::pi, ir::kFloatType, e.span);
     if (g_.kinds.count(id)) {
         g_.diags.error(e.span, "`" + id + "` is a kind, not a value");
         return std::nullopt;
@@ -287,7 +282,7 @@ std::optional<Expr> ExprChecker::member(const ast::Expr& e, const ast::Member& m
     if (obj->type.kind == TypeKind::Vec2 && (m.member.name == "x" || m.member.name == "y")) {
         Expr r;
         r.op = m.member.name == "x" ? ExprOp::VecX : ExprOp::VecY;
-        r.type = kFloat;
+        r.type = ir::kFloatType;
         r.span = e.span;
         r.args.push_back(std::move(*obj));
         return r;
@@ -321,7 +316,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         r.op = ExprOp::Fact;
         r.elem = b.ref;
         r.fact = fact;
-        r.type = fact == ir::ElemFact::Pos ? kVec2 : kInt;
+        r.type = fact == ir::ElemFact::Pos ? ir::kVec2Type : ir::kIntType;
         r.span = e.span;
         if (env.deps) env.deps->insert(b.ref);
         return r;
@@ -521,7 +516,7 @@ std::optional<Expr> ExprChecker::binary(const ast::Expr& e, const ast::Binary& b
                                  ExprOp::Ne,  ExprOp::And, ExprOp::Or};
     r.op = ops[static_cast<int>(b.op)];
     const bool numeric = lt.isNumeric() && rt.isNumeric();
-    const Type common = (lt.kind == TypeKind::Int && rt.kind == TypeKind::Int) ? kInt : kFloat;
+    const Type common = (lt.kind == TypeKind::Int && rt.kind == TypeKind::Int) ? ir::kIntType : ir::kFloatType;
     auto push = [&](Type lto, Type rto) {
         r.args.push_back(coerce(std::move(*lhs), lto));
         r.args.push_back(coerce(std::move(*rhs), rto));
@@ -530,9 +525,9 @@ std::optional<Expr> ExprChecker::binary(const ast::Expr& e, const ast::Binary& b
     case Op::Add:
     case Op::Sub:
         if (numeric) { r.type = common; push(common, common); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) { r.type = kVec2; push(kVec2, kVec2); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) { r.type = ir::kVec2Type; push(ir::kVec2Type, ir::kVec2Type); return r; }
         if (b.op == Op::Add && lt.kind == TypeKind::String && rt.kind == TypeKind::String) {
-            r.type = kString; push(kString, kString); return r;
+            r.type = ir::kStringType; push(ir::kStringType, ir::kStringType); return r;
         }
         if (b.op == Op::Add && (lt.kind == TypeKind::String || rt.kind == TypeKind::String)) {
             g_.diags.error(b.opSpan, "operator `+` cannot combine " + tn(lt) + " and " + tn(rt) +
@@ -542,43 +537,43 @@ std::optional<Expr> ExprChecker::binary(const ast::Expr& e, const ast::Binary& b
         return fail();
     case Op::Mul:
         if (numeric) { r.type = common; push(common, common); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = kVec2; push(kVec2, kFloat); return r; }
-        if (lt.isNumeric() && rt.kind == TypeKind::Vec2) { r.type = kVec2; push(kFloat, kVec2); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = ir::kVec2Type; push(ir::kVec2Type, ir::kFloatType); return r; }
+        if (lt.isNumeric() && rt.kind == TypeKind::Vec2) { r.type = ir::kVec2Type; push(ir::kFloatType, ir::kVec2Type); return r; }
         if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) {
             g_.diags.error(b.opSpan, "operator `*` cannot multiply two vec2s; use dot(a, b) or cross(a, b)");
             return std::nullopt;
         }
         return fail();
     case Op::Div:
-        if (numeric) { r.type = kFloat; push(kFloat, kFloat); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = kVec2; push(kVec2, kFloat); return r; }
+        if (numeric) { r.type = ir::kFloatType; push(ir::kFloatType, ir::kFloatType); return r; }
+        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = ir::kVec2Type; push(ir::kVec2Type, ir::kFloatType); return r; }
         return fail();
     case Op::Mod:
         if (numeric) { r.type = common; push(common, common); return r; }
         return fail();
     case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge:
-        if (numeric) { r.type = kBool; push(common, common); return r; }
+        if (numeric) { r.type = ir::kBoolType; push(common, common); return r; }
         return fail();
     case Op::Eq: case Op::Ne:
-        if (numeric) { r.type = kBool; push(common, common); return r; }
-        if (lt == rt && lt.kind != TypeKind::Void) { r.type = kBool; push(lt, rt); return r; }
+        if (numeric) { r.type = ir::kBoolType; push(common, common); return r; }
+        if (lt == rt && lt.kind != TypeKind::Void) { r.type = ir::kBoolType; push(lt, rt); return r; }
         return fail();
     case Op::And: case Op::Or:
-        if (lt.kind == TypeKind::Bool && rt.kind == TypeKind::Bool) { r.type = kBool; push(kBool, kBool); return r; }
+        if (lt.kind == TypeKind::Bool && rt.kind == TypeKind::Bool) { r.type = ir::kBoolType; push(ir::kBoolType, ir::kBoolType); return r; }
         return fail();
     }
     return fail();
 }
 
 std::optional<Expr> ExprChecker::conditional(const ast::Expr& e, const ast::Conditional& c, const ExprEnv& env) {
-    auto cond = checkAs(*c.cond, kBool, env, "the condition of `?:`");
+    auto cond = checkAs(*c.cond, ir::kBoolType, env, "the condition of `?:`");
     auto a = check(*c.then, env);
     auto b = check(*c.otherwise, env);
     if (!cond || !a || !b) return std::nullopt;
     Type t = a->type;
     if (!(a->type == b->type)) {
         if (a->type.isNumeric() && b->type.isNumeric()) {
-            t = kFloat;
+            t = ir::kFloatType;
         } else {
             g_.diags.error(e.span, "the two branches of `?:` have different types: " + tn(a->type) + " and " +
                                        tn(b->type));

@@ -17,10 +17,6 @@ using ir::TypeKind;
 
 namespace {
 
-const Type kVec2 = Type::of(TypeKind::Vec2);
-const Type kBool = Type::of(TypeKind::Bool);
-const Type kFloat = Type::of(TypeKind::Float);
-
 // Looks up a kind by name, requiring the given class; reports otherwise.
 int resolveKind(Globals& g, const ast::Ident& name, ElemClass cls) {
     auto it = g.kinds.find(name.name);
@@ -151,7 +147,7 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
         if (n->sketch) g.diags.error(n->sketch->span, "sketch positions (`@`) belong in rules; place axiom nodes with `at`");
         if (n->where) g.diags.error(n->where->span, "conditions (`where`) belong in a rule's match");
         if (n->position) {
-            auto p = ec.checkAs(*n->position, kVec2, env, "a position");
+            auto p = ec.checkAs(*n->position, ir::kVec2Type, env, "a position");
             if (p) node.position = std::move(*p);
         }
         if (node.kind >= 0) checkAssignments(g, ec, node.kind, n->assigns, env, node.assigns, node.styles);
@@ -362,7 +358,7 @@ private:
         env.elems = &bindings_;
         std::set<ElemRef> deps;
         env.deps = &deps;
-        auto e = ec_.checkAs(expr, kBool, env, what);
+        auto e = ec_.checkAs(expr, ir::kBoolType, env, what);
         if (!e) return std::nullopt;
         if (auto v = fold(*e, g_.prog); v && !std::get<bool>(*v)) neverMatches_ = true;
         return ir::Condition{std::move(*e), std::vector<ElemRef>(deps.begin(), deps.end())};
@@ -494,7 +490,7 @@ private:
         env.allowElements = false;
         env.locals = &locals_;
         env.elems = &bindings_;
-        auto w = ec_.checkAs(*p.weight, kFloat, env, "a weight");
+        auto w = ec_.checkAs(*p.weight, ir::kFloatType, env, "a weight");
         if (!w) return;
         std::string error;
         auto folded = fold(*w, g_.prog, &error);
@@ -689,7 +685,7 @@ private:
                     auto& dn = dg.nodes[pendingNodes[nodeCursor].index];
                     ++nodeCursor;
                     if (n->position) {
-                        auto pos = ec_.checkAs(*n->position, kVec2, exprEnv(), "a position");
+                        auto pos = ec_.checkAs(*n->position, ir::kVec2Type, exprEnv(), "a position");
                         if (pos) dn.position = std::move(*pos);
                     }
                     if (dn.kind >= 0) checkAssignments(g_, ec_, dn.kind, n->assigns, exprEnv(), dn.assigns, dn.styles);
