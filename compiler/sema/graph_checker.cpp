@@ -699,8 +699,8 @@ private:
                     de.motherEdge = motherIndex;
                     de.kind = me.kind;
                     de.span = n->span;
-                    // Endpoints are resolved after the whole daughter: a later
-                    // statement may still keep them.
+                    // Endpoints are resolved after the whole daughter (a later statement
+                    // may name them); keeping an edge keeps its endpoints.
                     de.src = -3 - me.src;
                     de.dst = -3 - me.dst;
                     if (me.kind >= 0) checkAssignments(g_, ec_, me.kind, n->assigns, exprEnv(), de.assigns, de.styles);
@@ -755,8 +755,8 @@ private:
             if (!keptNodes.count(static_cast<int>(i))) dg.deletedNodes.push_back(static_cast<int>(i));
         for (std::size_t i = 0; i < rule_.edges.size(); ++i)
             if (!keptEdges.count(static_cast<int>(i))) dg.deletedEdges.push_back(static_cast<int>(i));
-        checkKeptEdgeEndpoints(dg);
         checkAutoPlacement(dg);
+        warnAnonymousEdgesDeleted(dg);
         // Daughter-level lets go out of scope; warn about unused ones now.
         for (std::size_t i = localsBefore; i < locals_.size(); ++i) finishedLocals_.push_back(locals_[i]);
         locals_.resize(localsBefore);
@@ -769,13 +769,13 @@ private:
         return suggest(name, candidates);
     }
 
-    // The daughter node for a kept mother node, keeping it if needed.
+    // The daughter node for a mother node, keeping it if it is not kept yet
+    // (a kept edge keeps its endpoints; wildcards are always kept).
     int keepEndpointOf(int mother, ir::Daughter& dg, std::map<int, int>& keptNodes,
                        std::map<std::string, Span>& named) {
         if (mother < 0) return -1;
         if (auto it = keptNodes.find(mother); it != keptNodes.end()) return it->second;
         const auto& mn = rule_.nodes[mother];
-        if (mn.kind >= 0) return -2;  // not kept: reported by checkKeptEdgeEndpoints
         ir::DaughterNode dn;
         dn.name = mn.name;
         dn.motherNode = mother;
@@ -788,16 +788,23 @@ private:
         return keptNodes[mother];
     }
 
-    void checkKeptEdgeEndpoints(ir::Daughter& dg) {
-        for (auto& de : dg.edges) {
-            if (de.motherEdge < 0 || (de.src != -2 && de.dst != -2)) continue;
-            const auto& me = rule_.edges[de.motherEdge];
-            const auto& lost = rule_.nodes[de.src == -2 ? me.src : me.dst];
-            auto& d = g_.diags.error(de.span, "edge `" + de.name + "` is kept, but its endpoint `" + lost.name +
-                                                  "` is deleted by this daughter; keep `" + lost.name +
-                                                  "` too (name it), or reconnect the edge");
-            d.notes.push_back({lost.span, "`" + lost.name + "` is matched here"});
-            de.src = de.dst = -1;
+    // An anonymous match edge cannot be kept, so it is always deleted; when the
+    // daughter keeps both its ends, that is most likely not what was meant.
+    void warnAnonymousEdgesDeleted(const ir::Daughter& dg) {
+        if (d_.name.span.file != g_.mainFile) return;
+        for (int e : dg.deletedEdges) {
+            const auto& me = rule_.edges[e];
+            if (!me.name.empty() || me.kind < 0 || me.src < 0 || me.dst < 0) continue;
+            const bool srcKept = std::find(dg.deletedNodes.begin(), dg.deletedNodes.end(), me.src) == dg.deletedNodes.end();
+            const bool dstKept = std::find(dg.deletedNodes.begin(), dg.deletedNodes.end(), me.dst) == dg.deletedNodes.end();
+            if (!srcKept || !dstKept) continue;
+            const bool directed = g_.prog.kinds[me.kind].directed;
+            const std::string edge = rule_.nodes[me.src].name + " -[" + g_.prog.kinds[me.kind].name +
+                                     (directed ? "]-> " : "]- ") + rule_.nodes[me.dst].name;
+            auto& d = g_.diags.warning(me.span, "edge `" + edge + "` is deleted although both its nodes are kept (an "
+                                                "edge without a name cannot be kept); to keep it, name it (`e: " +
+                                                    edge + "`) and write `e;` in the daughter");
+            d.notes.push_back({dg.span, "in this daughter"});
         }
     }
 

@@ -122,9 +122,6 @@ TEST_CASE("graph structure errors", "[sema][graphs]") {
         {"daughter references a NAC element",
          "rule R { match { x: P; not { y: P; x -[E]-> y; } } produce { x -[E]-> y; } }",
          "5:71: `y` belongs to a negative condition, which binds nothing the daughter could use"},
-        {"kept edge loses an endpoint", "rule R { match { x: P; y: P; e: x -[E]-> y; } produce { x; e; } }",
-         "5:60: edge `e` is kept, but its endpoint `y` is deleted by this daughter; keep `y` too (name it), or "
-         "reconnect the edge"},
         {"new node without position", "rule R { match { x: P; } produce { x; n: P; } }",
          "5:39: new node `n` needs a position: `at EXPR`, or a sketch position `@ (x, y)` for automatic placement"},
         {"automatic placement without sketches", "rule R { match { x: P; } produce { x; n: P @ (1, 0); } }",
@@ -143,6 +140,15 @@ TEST_CASE("graph structure errors", "[sema][graphs]") {
         {"unknown pick", "rule R pick newest { match { x: P; } produce { x; } }",
          "5:13: unknown match selection `newest` (use `random` or `oldest`)"},
     });
+}
+
+TEST_CASE("keeping an edge keeps its endpoints", "[sema][mapping]") {
+    auto r = compile(prelude() + "rule R { match { x: P; y: P; z: P; e: x -[E]-> y; y -[E]-> z; } produce { e; } }");
+    REQUIRE(r.program);
+    const auto& d = r.program->rules[0].daughters[0];
+    CHECK(d.nodes.size() == 2);                      // x and y, kept through e
+    CHECK(d.deletedNodes == std::vector<int>{2});    // z goes, with its edge
+    CHECK(d.deletedEdges == std::vector<int>{1});
 }
 
 TEST_CASE("weights must be positive constants", "[sema][weights]") {
