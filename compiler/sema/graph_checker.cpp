@@ -196,6 +196,7 @@ public:
     RuleChecker(Globals& g, ExprChecker& ec, const ast::RuleDecl& d) : g_(g), ec_(ec), d_(d) {}
 
     void run() {
+        const std::size_t errorsBefore = g_.diags.errorCount();
         rule_.name = d_.name.name;
         rule_.span = d_.span;
         options();
@@ -203,6 +204,9 @@ public:
         plan();
         items();
         warnUnusedLets();
+        // Advice about a rule is noise while the rule has errors.
+        if (g_.diags.errorCount() == errorsBefore)
+            for (auto& w : pendingWarnings_) g_.diags.warning(w.span, w.message).notes = w.notes;
         g_.prog.rules.push_back(std::move(rule_));
     }
 
@@ -801,10 +805,12 @@ private:
             const bool directed = g_.prog.kinds[me.kind].directed;
             const std::string edge = rule_.nodes[me.src].name + " -[" + g_.prog.kinds[me.kind].name +
                                      (directed ? "]-> " : "]- ") + rule_.nodes[me.dst].name;
-            auto& d = g_.diags.warning(me.span, "edge `" + edge + "` is deleted although both its nodes are kept (an "
-                                                "edge without a name cannot be kept); to keep it, name it (`e: " +
-                                                    edge + "`) and write `e;` in the daughter");
+            Diagnostic d;
+            d.span = me.span;
+            d.message = "edge `" + edge + "` is deleted although both its nodes are kept (an edge without a name "
+                        "cannot be kept); to keep it, name it (`e: " + edge + "`) and write `e;` in the daughter";
             d.notes.push_back({dg.span, "in this daughter"});
+            pendingWarnings_.push_back(std::move(d));
         }
     }
 
@@ -844,6 +850,7 @@ private:
     std::vector<LocalVar> locals_;               // lets in scope
     std::vector<LocalVar> finishedLocals_;       // lets out of scope, for the unused warning
     bool neverMatches_ = false;
+    std::vector<Diagnostic> pendingWarnings_;    // emitted only if the rule has no errors
 };
 
 }  // namespace
