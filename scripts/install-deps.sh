@@ -9,6 +9,7 @@ packages=(
   libfmt-dev libglm-dev libcli11-dev catch2
   nlohmann-json3-dev
   libxml2-utils
+  python3-networkx
 )
 
 missing=()

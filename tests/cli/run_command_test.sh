@@ -20,7 +20,18 @@ grep -qx '{"steps": 15, "nodes": 48, "edges": 48, "seconds": [0-9.e-]*, "seed": 
 head -c 38 k.svg | grep -q '<?xml version="1.0" encoding="UTF-8"?>' || fail "SVG header"
 [ "$(grep -c '<line ' k.svg)" = 48 ] || fail "48 lines expected in k.svg"
 grep -q '"directed": true, "multigraph": true' k.json || fail "node-link JSON header"
-if command -v xmllint >/dev/null; then xmllint --noout k.svg || fail "SVG is not well-formed"; fi
+xmllint --noout k.svg || fail "SVG is not well-formed"
+# NetworkX (Debian's python3-networkx) reads the JSON as a directed multigraph.
+/usr/bin/python3 - k.json <<'PY' || fail "networkx.node_link_graph cannot read k.json"
+import json, sys
+import networkx as nx
+g = nx.node_link_graph(json.load(open(sys.argv[1])))
+assert g.is_directed() and g.is_multigraph()
+assert g.number_of_nodes() == 48 and g.number_of_edges() == 48
+node = g.nodes[0]
+assert node["kind"] == "Point" and node["pos"] == [-4, 0] and node["age"] == 0
+assert all(d["kind"] == "Seg" and d["directed"] and d["lod"] == 2 for _, _, d in g.edges(data=True))
+PY
 
 # Default output name: the grammar's name in the current folder
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=1

@@ -258,6 +258,11 @@ TEST_CASE("a parallel step rewrites every non-overlapping match at once", "[run]
         CHECK(r.run.derivation.steps == level);
         CHECK(r.run.graph.edgeCount() == static_cast<std::size_t>(3 * std::pow(4, level)));
     }
+    // `priority P parallel` makes every rule of that priority parallel.
+    std::string byPriority = koch();
+    byPriority.replace(byPriority.find("rule Split pick oldest"), 22, "priority 0 parallel;\nrule Split");
+    auto p = derive(byPriority, 3, 3, {{"max_lod", 10LL}});
+    CHECK(p.run.graph.edgeCount() == 3 * 64u);
     // Overlapping matches: two rules' matches share a deleted node; only one applies per step.
     auto r = derive("node P; edge L;\naxiom { a: P at (0, 0); b: P at (1, 0); c: P at (2, 0); a -[L]- b; b -[L]- c; }\n"
                     "limit 1;\nrule Merge parallel { match { x: P; y: P; x -[L]- y; } produce { x; } }\n");
@@ -300,6 +305,12 @@ TEST_CASE("same grammar and seed give byte-identical SVG and JSON", "[run][deter
     };
     CHECK(output(5) == output(5));
     CHECK(output(5) != output(6));
+}
+
+TEST_CASE("the Koch snowflake has the thesis's 1158 elements after 192 steps", "[run][koch]") {
+    auto r = derive(koch(), 1, 192);
+    CHECK(r.run.derivation.steps == 192);
+    CHECK(r.run.graph.nodeCount() + r.run.graph.edgeCount() == 1158);
 }
 
 TEST_CASE("the tree reaches the thesis's 803 elements after 200 steps", "[run][tree]") {

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Renders every example to docs/gallery/*.png (several seeds for the random
+# ones) and writes docs/gallery.md with steps, elements and time per run.
+# Needs the release build (scripts/build.sh) and rsvg-convert (librsvg2-bin,
+# installed here if missing).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+g2d="$root/build/release/bin/g2d"
+[ -x "$g2d" ] || bash scripts/build.sh release
+if ! command -v rsvg-convert >/dev/null; then
+  sudo_cmd=(); [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq && "${sudo_cmd[@]}" apt-get install -y -qq librsvg2-bin
+fi
+
+out=docs/gallery
+mkdir -p "$out"
+rm -f "$out"/*.png
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+ln -s "$root/examples/assets" "$work/assets" 2>/dev/null || true
+
+# name | seeds | caption
+examples=(
+  "koch_snowflake|1|Koch snowflake, level 4 (thesis §7.1)"
+  "sierpinski|1|Sierpinski triangle, generation 5 (AGTIVE 2007 case), parallel steps"
+  "tree|1 2 3 4|Tree (thesis §7.3), 200 steps"
+  "tree_painting|1 2 3|Painted tree (thesis §7.3, Fig. 7.17)"
+  "pattern_square|1 2 3|Tiling square pattern (thesis §7.2.1)"
+  "pattern_circle|1 2 3 4|Circular pattern with Bézier leaves (thesis §7.2.2)"
+  "facade|1 2 3|Façade with unrolled blinds (thesis §7.4)"
+  "facade_varied|1 2 3|Varied façade with sills and a random door (thesis Fig. 7.21)"
+  "lsystem_filament|1|L-system filament (original tool's example)"
+  "lsystem_tree|1 2 3|L-system tree (original tool's example)"
+  "mondrian|1 2 3|Mondrian subdivision (g2d example: weights, styles)"
+  "maze|1 2 3|Maze: a grid built by rules, then carved (g2d example: NACs, phases)"
+)
+
+{
+  echo "# Gallery"
+  echo
+  echo "Every example under [examples/](../examples/), derived with \`g2d run\` and"
+  echo "rendered from its SVG with \`rsvg-convert\` by \`scripts/gallery.sh\`. Random"
+  echo "examples are shown for several seeds. *Elements* = nodes + edges at the end;"
+  echo "*time* is the derivation alone (\`--stats\` seconds) of the interpreter, on"
+  echo "the 2-core machine this page was made on."
+  echo
+} > "$work/gallery.md"
+
+for entry in "${examples[@]}"; do
+  IFS='|' read -r name seeds caption <<<"$entry"
+  file="examples/$name.g2d"
+  [ -f "$file" ] || { echo "skipping $name (no $file)" >&2; continue; }
+  {
+    echo "## $name"
+    echo
+    echo "$caption — [\`$file\`](../$file)"
+    echo
+    echo "| seed | steps | elements | stopped | time |"
+    echo "|---:|---:|---:|---|---:|"
+  } >> "$work/gallery.md"
+  images=""
+  for seed in $seeds; do
+    stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" -o "$work/$name-$seed.svg" --stats)
+    rsvg-convert -w 360 -b white "$work/$name-$seed.svg" -o "$out/$name-$seed.png"
+    read -r steps nodes edges seconds stopped < <(python3 -c 'import json,sys; d=json.loads(sys.argv[1]); print(d["steps"], d["nodes"], d["edges"], d["seconds"], d["stopped"])' "$stats")
+    printf '| %s | %s | %s | %s | %.4f s |\n' "$seed" "$steps" "$((nodes + edges))" "$stopped" "$seconds" >> "$work/gallery.md"
+    images+="<img src=\"gallery/$name-$seed.png\" width=\"240\" alt=\"$name, seed $seed\"> "
+  done
+  { echo; echo "$images"; echo; } >> "$work/gallery.md"
+done
+mv "$work/gallery.md" docs/gallery.md
+echo "wrote docs/gallery.md and $(ls "$out" | wc -l) images in $out"
