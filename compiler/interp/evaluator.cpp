@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 
+#include "g2d/ops.hpp"
 #include "g2d/vec_math.hpp"
 
 namespace g2d::interp {
@@ -37,80 +38,43 @@ bool B(const Value& v) { return std::get<bool>(v); }
 vec2 V(const Value& v) { return std::get<vec2>(v); }
 const std::string& S(const Value& v) { return std::get<std::string>(v); }
 
-[[noreturn]] void fail(const ir::Expr& e, const std::string& message) { throw EvalError(e.span, message); }
-
-double finite(const ir::Expr& e, double x) {
-    if (!std::isfinite(x)) fail(e, std::isnan(x) ? "the result is not a number (NaN)" : "the result is infinite");
-    return x;
+rt::FormatHole hole(const Value& v, const ir::Program& prog) {
+    rt::FormatHole h;
+    h.text = display(v, prog);
+    if (auto* d = std::get_if<double>(&v)) { h.kind = 1; h.number = *d; }
+    else if (auto* n = std::get_if<long long>(&v)) { h.kind = 1; h.number = static_cast<double>(*n); }
+    else if (auto* p = std::get_if<vec2>(&v)) { h.kind = 2; h.number = p->x; h.number2 = p->y; }
+    return h;
 }
 
-vec2 finite(const ir::Expr& e, vec2 v) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y)) fail(e, "the result is not a finite vector");
-    return v;
-}
-
-long long toInt(const ir::Expr& e, double x) {
-    if (!std::isfinite(x) || x >= 9.2233720368547758e18 || x < -9.2233720368547758e18)
-        fail(e, "cannot convert " + rt::formatNumber(x) + " to int: out of range");
-    return static_cast<long long>(x);
-}
-
-std::string formatTemplate(const ir::Expr& e, const std::vector<Value>& args, const ir::Program& prog) {
-    const std::string& t = S(args[0]);
-    std::string out;
-    std::size_t next = 1;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if ((t[i] == '{' || t[i] == '}') && i + 1 < t.size() && t[i + 1] == t[i]) { out += t[i++]; continue; }
-        if (t[i] != '{') { out += t[i]; continue; }
-        const std::size_t close = t.find('}', i);
-        const std::string spec = t.substr(i + 1, close - i - 1);
-        const Value& v = args.at(next++);
-        if (spec.empty()) {
-            out += display(v, prog);
-        } else {
-            const int decimals = std::stoi(spec.substr(2));
-            if (auto* d = std::get_if<double>(&v)) out += rt::formatFixed(*d, decimals);
-            else if (auto* n = std::get_if<long long>(&v)) out += rt::formatFixed(static_cast<double>(*n), decimals);
-            else if (auto* p = std::get_if<vec2>(&v))
-                out += rt::formatFixed(p->x, decimals) + " " + rt::formatFixed(p->y, decimals);
-            else out += display(v, prog);
-        }
-        i = close;
-    }
-    (void)e;
-    return out;
-}
-
+// Built-in calls; rt::OpError from the runtime's checked operations is turned
+// into an EvalError at the call by evaluate().
 Value call(const ir::Expr& e, EvalFrame& f) {
     // Arguments are evaluated left to right (random draws happen in that order).
     std::vector<Value> a;
     a.reserve(e.args.size());
     for (const auto& arg : e.args) a.push_back(evaluate(arg, f));
     const bool isInt = e.type.kind == ir::TypeKind::Int;
+    using rt::finite;
     switch (e.builtin) {
-    case Builtin::Sin: return finite(e, std::sin(F(a[0])));
-    case Builtin::Cos: return finite(e, std::cos(F(a[0])));
-    case Builtin::Tan: return finite(e, std::tan(F(a[0])));
-    case Builtin::Asin: return finite(e, std::asin(F(a[0])));
-    case Builtin::Acos: return finite(e, std::acos(F(a[0])));
-    case Builtin::Atan: return finite(e, std::atan(F(a[0])));
-    case Builtin::Atan2: return finite(e, std::atan2(F(a[0]), F(a[1])));
-    case Builtin::Sqrt: return finite(e, std::sqrt(F(a[0])));
-    case Builtin::Exp: return finite(e, std::exp(F(a[0])));
-    case Builtin::Log: return finite(e, std::log(F(a[0])));
-    case Builtin::Pow: return finite(e, std::pow(F(a[0]), F(a[1])));
-    case Builtin::Hypot: return finite(e, std::hypot(F(a[0]), F(a[1])));
-    case Builtin::Floor: return toInt(e, std::floor(F(a[0])));
-    case Builtin::Ceil: return toInt(e, std::ceil(F(a[0])));
-    case Builtin::Round: return toInt(e, rt::roundHalfAway(F(a[0])));
-    case Builtin::Radians: return F(a[0]) * 3.141592653589793 / 180.0;
-    case Builtin::Degrees: return F(a[0]) * 180.0 / 3.141592653589793;
-    case Builtin::Abs:
-        if (isInt) {
-            if (I(a[0]) == LLONG_MIN) fail(e, "integer overflow");
-            return std::llabs(I(a[0]));
-        }
-        return std::fabs(F(a[0]));
+    case Builtin::Sin: return finite(std::sin(F(a[0])));
+    case Builtin::Cos: return finite(std::cos(F(a[0])));
+    case Builtin::Tan: return finite(std::tan(F(a[0])));
+    case Builtin::Asin: return finite(std::asin(F(a[0])));
+    case Builtin::Acos: return finite(std::acos(F(a[0])));
+    case Builtin::Atan: return finite(std::atan(F(a[0])));
+    case Builtin::Atan2: return finite(std::atan2(F(a[0]), F(a[1])));
+    case Builtin::Sqrt: return finite(std::sqrt(F(a[0])));
+    case Builtin::Exp: return finite(std::exp(F(a[0])));
+    case Builtin::Log: return finite(std::log(F(a[0])));
+    case Builtin::Pow: return finite(std::pow(F(a[0]), F(a[1])));
+    case Builtin::Hypot: return finite(std::hypot(F(a[0]), F(a[1])));
+    case Builtin::Floor: return rt::floorToInt(F(a[0]));
+    case Builtin::Ceil: return rt::ceilToInt(F(a[0]));
+    case Builtin::Round: return rt::roundToInt(F(a[0]));
+    case Builtin::Radians: return finite(F(a[0]) * 3.141592653589793 / 180.0);
+    case Builtin::Degrees: return finite(F(a[0]) * 180.0 / 3.141592653589793);
+    case Builtin::Abs: return isInt ? Value{rt::absInt(I(a[0]))} : Value{std::fabs(F(a[0]))};
     case Builtin::Sign:
         if (isInt) return static_cast<long long>((I(a[0]) > 0) - (I(a[0]) < 0));
         return static_cast<double>((F(a[0]) > 0) - (F(a[0]) < 0));
@@ -128,113 +92,91 @@ Value call(const ir::Expr& e, EvalFrame& f) {
         return best;
     }
     case Builtin::MakeVec2: return vec2{F(a[0]), F(a[1])};
-    case Builtin::Dot: return finite(e, rt::dot(V(a[0]), V(a[1])));
-    case Builtin::Cross: return finite(e, rt::cross(V(a[0]), V(a[1])));
-    case Builtin::Length: return finite(e, rt::length(V(a[0])));
-    case Builtin::Distance: return finite(e, rt::distance(V(a[0]), V(a[1])));
+    case Builtin::Dot: return finite(rt::dot(V(a[0]), V(a[1])));
+    case Builtin::Cross: return finite(rt::cross(V(a[0]), V(a[1])));
+    case Builtin::Length: return finite(rt::length(V(a[0])));
+    case Builtin::Distance: return finite(rt::distance(V(a[0]), V(a[1])));
     case Builtin::Normalize: return rt::normalize(V(a[0]));
     case Builtin::PerpLeft: return rt::perpLeft(V(a[0]));
     case Builtin::PerpRight: return rt::perpRight(V(a[0]));
-    case Builtin::Rotate: return finite(e, rt::rotate(V(a[0]), F(a[1])));
-    case Builtin::RotateAround: return finite(e, rt::rotateAround(V(a[0]), F(a[1]), V(a[2])));
+    case Builtin::Rotate: return finite(rt::rotate(V(a[0]), F(a[1])));
+    case Builtin::RotateAround: return finite(rt::rotateAround(V(a[0]), F(a[1]), V(a[2])));
     case Builtin::Angle: return rt::angle(V(a[0]));
     case Builtin::AngleBetween: return rt::angleBetween(V(a[0]), V(a[1]));
     case Builtin::Lerp:
-        if (e.type.kind == ir::TypeKind::Vec2) return finite(e, rt::lerp(V(a[0]), V(a[1]), F(a[2])));
-        return finite(e, rt::lerp(F(a[0]), F(a[1]), F(a[2])));
+        if (e.type.kind == ir::TypeKind::Vec2) return finite(rt::lerp(V(a[0]), V(a[1]), F(a[2])));
+        return finite(rt::lerp(F(a[0]), F(a[1]), F(a[2])));
     case Builtin::ToInt:
-        if (auto* d = std::get_if<double>(&a[0])) return toInt(e, *d);
+        if (auto* d = std::get_if<double>(&a[0])) return rt::floatToInt(*d);
         if (auto* b = std::get_if<bool>(&a[0])) return static_cast<long long>(*b);
-        if (auto* s = std::get_if<std::string>(&a[0])) {
-            long long v = 0;
-            auto res = std::from_chars(s->data(), s->data() + s->size(), v);
-            if (res.ec != std::errc() || res.ptr != s->data() + s->size()) fail(e, "int(\"" + *s + "\"): not an integer");
-            return v;
-        }
+        if (auto* s = std::get_if<std::string>(&a[0])) return rt::parseInt(*s);
         return a[0];
     case Builtin::ToFloat:
         if (auto* n = std::get_if<long long>(&a[0])) return static_cast<double>(*n);
         if (auto* b = std::get_if<bool>(&a[0])) return *b ? 1.0 : 0.0;
-        if (auto* s = std::get_if<std::string>(&a[0])) {
-            double v = 0;
-            auto res = std::from_chars(s->data(), s->data() + s->size(), v);
-            if (res.ec != std::errc() || res.ptr != s->data() + s->size() || !std::isfinite(v))
-                fail(e, "float(\"" + *s + "\"): not a number");
-            return v;
-        }
+        if (auto* s = std::get_if<std::string>(&a[0])) return rt::parseFloat(*s);
         return a[0];
     case Builtin::ToStr: return display(a[0], *f.prog);
-    case Builtin::Format: return formatTemplate(e, a, *f.prog);
+    case Builtin::Format: {
+        std::vector<rt::FormatHole> holes;
+        for (std::size_t i = 1; i < a.size(); ++i) holes.push_back(hole(a[i], *f.prog));
+        return rt::formatTemplate(S(a[0]), holes.data(), holes.size());
+    }
     case Builtin::Random: return f.rng->unit();
     case Builtin::Uniform: return f.rng->uniform(F(a[0]), F(a[1]));
     case Builtin::RandInt:
         if (I(a[0]) > I(a[1]))
-            fail(e, "randint(" + std::to_string(I(a[0])) + ", " + std::to_string(I(a[1])) + "): empty range");
+            throw rt::OpError("randint(" + std::to_string(I(a[0])) + ", " + std::to_string(I(a[1])) + "): empty range");
         return f.rng->range(I(a[0]), I(a[1]));
     case Builtin::Choice: return a[static_cast<std::size_t>(f.rng->below(a.size()))];
     case Builtin::Normal: return f.rng->normal(F(a[0]), F(a[1]));
     }
-    fail(e, "unknown built-in");
+    throw rt::OpError("unknown built-in");
 }
 
 Value arith(const ir::Expr& e, const Value& l, const Value& r) {
     const auto lk = e.args[0].type.kind, rk = e.args[1].type.kind;
     using K = ir::TypeKind;
     if (lk == K::Int && rk == K::Int) {
-        long long a = I(l), b = I(r), out = 0;
+        const long long a = I(l), b = I(r);
         switch (e.op) {
-        case ExprOp::Add: if (__builtin_add_overflow(a, b, &out)) fail(e, "integer overflow"); return out;
-        case ExprOp::Sub: if (__builtin_sub_overflow(a, b, &out)) fail(e, "integer overflow"); return out;
-        case ExprOp::Mul: if (__builtin_mul_overflow(a, b, &out)) fail(e, "integer overflow"); return out;
-        case ExprOp::Mod:
-            if (b == 0) fail(e, "division by zero");
-            if (a == LLONG_MIN && b == -1) fail(e, "integer overflow");
-            return rt::imodFloor(a, b);
+        case ExprOp::Add: return rt::addInt(a, b);
+        case ExprOp::Sub: return rt::subInt(a, b);
+        case ExprOp::Mul: return rt::mulInt(a, b);
+        case ExprOp::Mod: return rt::modInt(a, b);
         case ExprOp::Lt: return a < b;
         case ExprOp::Le: return a <= b;
         case ExprOp::Gt: return a > b;
         case ExprOp::Ge: return a >= b;
-        case ExprOp::Eq: return a == b;
-        case ExprOp::Ne: return a != b;
         default: break;
         }
     } else if (lk == K::Float && rk == K::Float) {
-        double a = F(l), b = F(r);
+        const double a = F(l), b = F(r);
         switch (e.op) {
-        case ExprOp::Add: return finite(e, a + b);
-        case ExprOp::Sub: return finite(e, a - b);
-        case ExprOp::Mul: return finite(e, a * b);
-        case ExprOp::Div: if (b == 0) fail(e, "division by zero"); return finite(e, a / b);
-        case ExprOp::Mod: if (b == 0) fail(e, "division by zero"); return finite(e, rt::fmodFloor(a, b));
+        case ExprOp::Add: return rt::finite(a + b);
+        case ExprOp::Sub: return rt::finite(a - b);
+        case ExprOp::Mul: return rt::finite(a * b);
+        case ExprOp::Div: return rt::divFloat(a, b);
+        case ExprOp::Mod: return rt::modFloat(a, b);
         case ExprOp::Lt: return a < b;
         case ExprOp::Le: return a <= b;
         case ExprOp::Gt: return a > b;
         case ExprOp::Ge: return a >= b;
-        case ExprOp::Eq: return a == b;
-        case ExprOp::Ne: return a != b;
         default: break;
         }
     } else if (lk == K::Vec2 && rk == K::Vec2) {
-        switch (e.op) {
-        case ExprOp::Add: return finite(e, V(l) + V(r));
-        case ExprOp::Sub: return finite(e, V(l) - V(r));
-        case ExprOp::Eq: return V(l) == V(r);
-        case ExprOp::Ne: return V(l) != V(r);
-        default: break;
-        }
+        if (e.op == ExprOp::Add) return rt::finite(V(l) + V(r));
+        if (e.op == ExprOp::Sub) return rt::finite(V(l) - V(r));
     } else if (lk == K::Vec2 && rk == K::Float) {
-        if (e.op == ExprOp::Mul) return finite(e, V(l) * F(r));
-        if (e.op == ExprOp::Div) {
-            if (F(r) == 0) fail(e, "division by zero");
-            return finite(e, V(l) / F(r));
-        }
+        if (e.op == ExprOp::Mul) return rt::finite(V(l) * F(r));
+        if (e.op == ExprOp::Div) return rt::divVec(V(l), F(r));
     } else if (lk == K::Float && rk == K::Vec2 && e.op == ExprOp::Mul) {
-        return finite(e, F(l) * V(r));
+        return rt::finite(F(l) * V(r));
     }
     if (e.op == ExprOp::Add) return S(l) + S(r);
     if (e.op == ExprOp::Eq) return l == r;
     if (e.op == ExprOp::Ne) return l != r;
-    fail(e, "unsupported operation");
+    throw rt::OpError("unsupported operation");
 }
 
 Value fact(const ir::Expr& e, EvalFrame& f, bool isEdge, std::uint32_t id) {
@@ -254,9 +196,9 @@ Value fact(const ir::Expr& e, EvalFrame& f, bool isEdge, std::uint32_t id) {
     return 0LL;
 }
 
-}  // namespace
+Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f);
 
-Value evaluate(const ir::Expr& e, EvalFrame& f) {
+Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     switch (e.op) {
     case ExprOp::Literal: return fromLiteral(e.value);
     case ExprOp::Param: return (*f.params)[e.index];
@@ -277,10 +219,7 @@ Value evaluate(const ir::Expr& e, EvalFrame& f) {
     case ExprOp::VecY: return V(evaluate(e.args[0], f)).y;
     case ExprOp::Neg: {
         Value v = evaluate(e.args[0], f);
-        if (auto* i = std::get_if<long long>(&v)) {
-            if (*i == LLONG_MIN) fail(e, "integer overflow");
-            return -*i;
-        }
+        if (auto* i = std::get_if<long long>(&v)) return rt::negInt(*i);
         if (auto* d = std::get_if<double>(&v)) return -*d;
         return -V(v);
     }
@@ -302,6 +241,17 @@ Value evaluate(const ir::Expr& e, EvalFrame& f) {
         Value r = evaluate(e.args[1], f);
         return arith(e, l, r);
     }
+    }
+}
+
+}  // namespace
+
+Value evaluate(const ir::Expr& e, EvalFrame& f) {
+    try {
+        return evaluateUnchecked(e, f);
+    } catch (const rt::OpError& err) {
+        // The innermost expression that failed names the place.
+        throw EvalError(e.span, err.what());
     }
 }
 

@@ -3,6 +3,7 @@
 #include <climits>
 #include <cmath>
 
+#include "g2d/ops.hpp"
 #include "g2d/vec_math.hpp"
 
 namespace g2d::sema {
@@ -80,67 +81,50 @@ std::optional<Value> foldCall(const Expr& e, const std::vector<Value>& a) {
     }
 }
 
+// The same checked operations as at run time; a failure is a compile-time error.
 std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const Value& r, std::string* error) {
-    auto fail = [&](const char* why) -> std::optional<Value> {
-        if (error && error->empty()) *error = why;
-        return std::nullopt;
-    };
     const TypeKind lk = e.args[0].type.kind, rk = e.args[1].type.kind;
-    if (lk == TypeKind::Int && rk == TypeKind::Int) {
-        long long a = std::get<long long>(l), b = std::get<long long>(r), out = 0;
-        switch (op) {
-        case ExprOp::Add: if (__builtin_add_overflow(a, b, &out)) return fail("integer overflow"); return Value{out};
-        case ExprOp::Sub: if (__builtin_sub_overflow(a, b, &out)) return fail("integer overflow"); return Value{out};
-        case ExprOp::Mul: if (__builtin_mul_overflow(a, b, &out)) return fail("integer overflow"); return Value{out};
-        case ExprOp::Mod:
-            if (b == 0) return fail("division by zero");
-            if (a == LLONG_MIN && b == -1) return fail("integer overflow");
-            return Value{rt::imodFloor(a, b)};
-        case ExprOp::Lt: return Value{a < b};
-        case ExprOp::Le: return Value{a <= b};
-        case ExprOp::Gt: return Value{a > b};
-        case ExprOp::Ge: return Value{a >= b};
-        case ExprOp::Eq: return Value{a == b};
-        case ExprOp::Ne: return Value{a != b};
-        default: return std::nullopt;
+    try {
+        if (lk == TypeKind::Int && rk == TypeKind::Int) {
+            const long long a = std::get<long long>(l), b = std::get<long long>(r);
+            switch (op) {
+            case ExprOp::Add: return Value{rt::addInt(a, b)};
+            case ExprOp::Sub: return Value{rt::subInt(a, b)};
+            case ExprOp::Mul: return Value{rt::mulInt(a, b)};
+            case ExprOp::Mod: return Value{rt::modInt(a, b)};
+            case ExprOp::Lt: return Value{a < b};
+            case ExprOp::Le: return Value{a <= b};
+            case ExprOp::Gt: return Value{a > b};
+            case ExprOp::Ge: return Value{a >= b};
+            default: break;
+            }
+        } else if (lk == TypeKind::Float && rk == TypeKind::Float) {
+            const double a = std::get<double>(l), b = std::get<double>(r);
+            switch (op) {
+            case ExprOp::Add: return Value{rt::finite(a + b)};
+            case ExprOp::Sub: return Value{rt::finite(a - b)};
+            case ExprOp::Mul: return Value{rt::finite(a * b)};
+            case ExprOp::Div: return Value{rt::divFloat(a, b)};
+            case ExprOp::Mod: return Value{rt::modFloat(a, b)};
+            case ExprOp::Lt: return Value{a < b};
+            case ExprOp::Le: return Value{a <= b};
+            case ExprOp::Gt: return Value{a > b};
+            case ExprOp::Ge: return Value{a >= b};
+            default: break;
+            }
+        } else if (lk == TypeKind::Vec2 && rk == TypeKind::Vec2) {
+            if (op == ExprOp::Add) return fromVec(rt::finite(asVec(l) + asVec(r)));
+            if (op == ExprOp::Sub) return fromVec(rt::finite(asVec(l) - asVec(r)));
+        } else if (lk == TypeKind::Vec2 && rk == TypeKind::Float) {
+            if (op == ExprOp::Mul) return fromVec(rt::finite(asVec(l) * std::get<double>(r)));
+            if (op == ExprOp::Div) return fromVec(rt::divVec(asVec(l), std::get<double>(r)));
+        } else if (lk == TypeKind::Float && rk == TypeKind::Vec2 && op == ExprOp::Mul) {
+            return fromVec(rt::finite(std::get<double>(l) * asVec(r)));
         }
-    }
-    if (lk == TypeKind::Float && rk == TypeKind::Float) {
-        double a = std::get<double>(l), b = std::get<double>(r);
-        switch (op) {
-        case ExprOp::Add: return Value{a + b};
-        case ExprOp::Sub: return Value{a - b};
-        case ExprOp::Mul: return Value{a * b};
-        case ExprOp::Div: if (b == 0) return fail("division by zero"); return Value{a / b};
-        case ExprOp::Mod: if (b == 0) return fail("division by zero"); return Value{rt::fmodFloor(a, b)};
-        case ExprOp::Lt: return Value{a < b};
-        case ExprOp::Le: return Value{a <= b};
-        case ExprOp::Gt: return Value{a > b};
-        case ExprOp::Ge: return Value{a >= b};
-        case ExprOp::Eq: return Value{a == b};
-        case ExprOp::Ne: return Value{a != b};
-        default: return std::nullopt;
-        }
-    }
-    if (lk == TypeKind::Vec2 && rk == TypeKind::Vec2) {
-        switch (op) {
-        case ExprOp::Add: return fromVec(asVec(l) + asVec(r));
-        case ExprOp::Sub: return fromVec(asVec(l) - asVec(r));
-        case ExprOp::Eq: return Value{l == r};
-        case ExprOp::Ne: return Value{l != r};
-        default: return std::nullopt;
-        }
-    }
-    if (lk == TypeKind::Vec2 && rk == TypeKind::Float) {
-        if (op == ExprOp::Mul) return fromVec(asVec(l) * std::get<double>(r));
-        if (op == ExprOp::Div) {
-            if (std::get<double>(r) == 0) return fail("division by zero");
-            return fromVec(asVec(l) / std::get<double>(r));
-        }
+    } catch (const rt::OpError& err) {
+        if (error && error->empty()) *error = err.what();
         return std::nullopt;
     }
-    if (lk == TypeKind::Float && rk == TypeKind::Vec2 && op == ExprOp::Mul)
-        return fromVec(std::get<double>(l) * asVec(r));
     if (op == ExprOp::Add && lk == TypeKind::String) return Value{std::get<std::string>(l) + std::get<std::string>(r)};
     if (op == ExprOp::Eq) return Value{l == r};
     if (op == ExprOp::Ne) return Value{l != r};

@@ -1,0 +1,48 @@
+#pragma once
+// The language's checked operations on typed values: integer overflow,
+// division by zero, non-finite results and bad conversions throw OpError.
+// The constant folder, the interpreter and generated code all call these, so
+// they agree to the bit and fail with the same words.
+#include <stdexcept>
+#include <string>
+
+#include "g2d/vec_math.hpp"
+
+namespace g2d::rt {
+
+class OpError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+long long addInt(long long a, long long b);
+long long subInt(long long a, long long b);
+long long mulInt(long long a, long long b);
+long long modInt(long long a, long long b);     // floored; the sign follows b
+long long negInt(long long a);
+long long absInt(long long a);
+
+double finite(double x);                        // throws on NaN or infinity
+vec2 finite(vec2 v);
+double divFloat(double a, double b);
+double modFloat(double a, double b);            // floored
+vec2 divVec(vec2 v, double s);
+
+long long floatToInt(double x);                 // truncation; throws when out of range
+long long floorToInt(double x);
+long long ceilToInt(double x);
+long long roundToInt(double x);                 // halves away from zero
+long long parseInt(const std::string& s);       // int("12")
+double parseFloat(const std::string& s);        // float("2.5")
+
+// `{}` and `{:.N}` placeholders, filled with already printed values;
+// `{{`/`}}` are literal braces. `decimals[i]` is N for `{:.N}`, -1 for `{}`.
+struct FormatHole {
+    std::string text;                           // the value as `{}` prints it
+    double number = 0;                          // for `{:.N}`: the number (x for vectors)
+    double number2 = 0;                         // y for vectors
+    int kind = 0;                               // 0 text, 1 number, 2 vector
+};
+std::string formatTemplate(const std::string& templ, const FormatHole* holes, std::size_t count);
+
+}  // namespace g2d::rt
