@@ -63,6 +63,10 @@ std::string attrName(std::string p) {
 
 std::string num(double x) { return formatNumber(x); }
 
+// The frame is presentational: micro-unit steps (rounded outward) keep it tidy.
+double down(double x) { return std::floor(x * 1e6 + 1e-6) / 1e6; }
+double up(double x) { return std::ceil(x * 1e6 - 1e-6) / 1e6; }
+
 // The pass-through attributes, with g2d's defaults for those not given.
 std::string passThrough(const DrawItem& it, const std::vector<std::pair<const char*, const char*>>& defaults) {
     std::string out;
@@ -159,10 +163,10 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     if (!box.empty()) {
         const double size = std::max(box.x1 - box.x0, box.y1 - box.y0);
         const double pad = maxStroke + 0.02 * size;
-        x0 = box.x0 - pad;
-        y0 = box.y0 - pad;
-        w = std::max(box.x1 - box.x0 + 2 * pad, 1e-3);
-        h = std::max(box.y1 - box.y0 + 2 * pad, 1e-3);
+        x0 = down(box.x0 - pad);
+        y0 = down(box.y0 - pad);
+        w = up(std::max(box.x1 + pad - x0, 1e-3));
+        h = up(std::max(box.y1 + pad - y0, 1e-3));
     }
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" + num(w) +
