@@ -215,6 +215,7 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
         return fact(e, f, isEdge, isEdge ? (*f.edges)[e.elem.index] : (*f.nodes)[e.elem.index]);
     }
     case ExprOp::SelfFact: return fact(e, f, f.selfIsEdge, f.self);
+    case ExprOp::Placed: return *(*f.placed)[e.index];
     case ExprOp::VecX: return V(evaluate(e.args[0], f)).x;
     case ExprOp::VecY: return V(evaluate(e.args[0], f)).y;
     case ExprOp::Neg: {

@@ -1,5 +1,6 @@
 #pragma once
 // Evaluates IR expressions at run time, on the runtime's values and graph.
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct EvalFrame {
     const std::vector<rt::NodeId>* nodes = nullptr;  // the match's host nodes, by pattern index
     const std::vector<rt::EdgeId>* edges = nullptr;
     rt::Rng* rng = nullptr;
+    const std::vector<std::optional<rt::vec2>>* placed = nullptr;  // automatic positions, by daughter node
     bool selfIsEdge = false;                          // kind style expressions
     std::uint32_t self = rt::kNoId;
 };

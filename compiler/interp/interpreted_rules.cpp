@@ -56,11 +56,12 @@ bool InterpretedRules::orderedOk(const rt::Graph& g, const ir::Rule& r, int node
         if (static_cast<int>(j) == node || boundNodes_[j] == kNoId) continue;
         const auto& sj = *r.nodes[j].sketch;
         const rt::vec2 hj = g.pos(boundNodes_[j]);
-        // Strict: a node drawn left of another must match one that is left of it.
-        if (si.x < sj.x && !(hi.x < hj.x)) return false;
-        if (si.x > sj.x && !(hi.x > hj.x)) return false;
-        if (si.y < sj.y && !(hi.y < hj.y)) return false;
-        if (si.y > sj.y && !(hi.y > hj.y)) return false;
+        // As the thesis's tool: a node drawn left of another must not match one
+        // right of it (ties are allowed), and likewise for y.
+        if (si.x < sj.x && hi.x > hj.x) return false;
+        if (si.x > sj.x && hi.x < hj.x) return false;
+        if (si.y < sj.y && hi.y > hj.y) return false;
+        if (si.y > sj.y && hi.y < hj.y) return false;
     }
     return true;
 }
@@ -215,6 +216,40 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt:
     p.rule = rule;
     p.daughter = daughter;
     p.match = m;
+    // Automatic positions first: `at` may refine them through `placed`.
+    std::vector<std::optional<rt::vec2>> placed(d.nodes.size());
+    if (d.autoPlacement) {
+        std::vector<rt::vec2> mother, host, refDaughter, refHost;
+        for (std::size_t i = 0; i < r.nodes.size(); ++i) {
+            mother.push_back({r.nodes[i].sketch->x, r.nodes[i].sketch->y});
+            host.push_back(g.pos(m.nodes[i]));
+        }
+        for (const auto& dn : d.nodes)
+            if (dn.motherNode >= 0) {
+                refDaughter.push_back({dn.sketch->x, dn.sketch->y});
+                refHost.push_back(host[dn.motherNode]);
+            }
+        if (refDaughter.empty()) {
+            refDaughter = mother;
+            refHost = host;
+        }
+        std::optional<std::pair<int, int>> directed;
+        for (const auto& e : r.edges)
+            if (st_.prog->kinds[e.kind].directed && e.src != e.dst) {
+                directed = std::make_pair(e.src, e.dst);
+                break;
+            }
+        const rt::PlacementFrame frame = rt::placementFrame(mother, host, directed, refDaughter, refHost);
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            if (dn.motherNode >= 0 || !dn.sketch) continue;
+            const rt::vec2 pos = frame.place({dn.sketch->x, dn.sketch->y});
+            if (!std::isfinite(pos.x) || !std::isfinite(pos.y))
+                throw EvalError(dn.span, "automatic placement of `" + dn.name + "` gives a non-finite position");
+            placed[i] = pos;
+        }
+    }
+    f.placed = &placed;
     for (const auto& dn : d.nodes) {
         std::optional<rt::vec2> pos;
         if (dn.position) {
@@ -226,43 +261,8 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt:
         p.nodeValues.push_back(evaluateValues(dn.assigns, dn.styles, f));
     }
     for (const auto& de : d.edges) p.edgeValues.push_back(evaluateValues(de.assigns, de.styles, f));
-
-    if (d.autoPlacement) {
-        // Reference nodes: the kept mother nodes, or all of them if none is kept.
-        std::vector<int> ref;
-        std::vector<rt::vec2> mother, daughterSketch, host;
-        for (const auto& dn : d.nodes)
-            if (dn.motherNode >= 0) {
-                ref.push_back(dn.motherNode);
-                daughterSketch.push_back({dn.sketch->x, dn.sketch->y});
-            }
-        if (ref.empty())
-            for (std::size_t i = 0; i < r.nodes.size(); ++i) {
-                ref.push_back(static_cast<int>(i));
-                daughterSketch.push_back({r.nodes[i].sketch->x, r.nodes[i].sketch->y});
-            }
-        for (int n : ref) {
-            mother.push_back({r.nodes[n].sketch->x, r.nodes[n].sketch->y});
-            host.push_back(g.pos(m.nodes[n]));
-        }
-        std::optional<std::pair<int, int>> directed;
-        for (const auto& e : r.edges) {
-            if (!st_.prog->kinds[e.kind].directed) continue;
-            auto a = std::find(ref.begin(), ref.end(), e.src), b = std::find(ref.begin(), ref.end(), e.dst);
-            if (a == ref.end() || b == ref.end() || a == b) continue;
-            directed = std::make_pair(static_cast<int>(a - ref.begin()), static_cast<int>(b - ref.begin()));
-            break;
-        }
-        const rt::PlacementFrame frame = rt::placementFrame(mother, daughterSketch, host, directed);
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            if (dn.motherNode >= 0 || dn.position) continue;
-            const rt::vec2 pos = frame.place({dn.sketch->x, dn.sketch->y});
-            if (!std::isfinite(pos.x) || !std::isfinite(pos.y))
-                throw EvalError(dn.span, "automatic placement of `" + dn.name + "` gives a non-finite position");
-            p.nodePos[i] = pos;
-        }
-    }
+    for (std::size_t i = 0; i < d.nodes.size(); ++i)
+        if (!p.nodePos[i] && d.nodes[i].motherNode < 0) p.nodePos[i] = placed[i];
     pending_.push_back(std::move(p));
 }
 

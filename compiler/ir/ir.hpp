@@ -84,6 +84,7 @@ enum class ExprOp {
     Attr,        // elem, index = attribute of elem's kind
     SelfAttr,    // index = attribute of the element being styled (kind style expressions)
     SelfFact,    // fact of the element being styled
+    Placed,      // index = daughter node: its automatic position (`placed` in `at`)
     Fact,        // elem, fact
     VecX, VecY,  // args[0]
     Neg, Not,
@@ -248,7 +249,7 @@ struct DaughterNode {
     int motherNode = -1;               // kept mother node, or -1 for a new node
     int kind = -1;                     // -1 only for a kept wildcard
     std::optional<Expr> position;      // `at`; new nodes without it are placed automatically
-    std::optional<Vec2> sketch;
+    std::optional<Vec2> sketch;        // (`at` may read the automatic position as `placed`)
     std::vector<AttrAssign> assigns;
     std::vector<StyleAssign> styles;
     Span span;

@@ -57,6 +57,7 @@ struct ExprEnv {
     bool allowElements = true;
     bool allowLocals = true;
     int selfKind = -1;               // style expressions: bare names read the element's attributes
+    int placedNode = -1;             // `at` of a new sketched node: `placed` is its automatic position
     std::vector<LocalVar>* locals = nullptr;      // searched from the back (inner scopes last)
     const std::vector<ElemBinding>* elems = nullptr;
     std::set<ir::ElemRef>* deps = nullptr;        // collects the elements read

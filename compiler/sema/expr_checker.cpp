@@ -217,6 +217,19 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         }
         return literal(it->second[0], Type::enumeration(it->second[0].enumId), e.span);
     }
+    if (id == "placed") {
+        if (env.placedNode < 0) {
+            g_.diags.error(e.span, "`placed` (the automatic position) can only be used in `at` of a new node that has "
+                                   "a sketch position `@ (x, y)`");
+            return std::nullopt;
+        }
+        Expr r;
+        r.op = ExprOp::Placed;
+        r.index = env.placedNode;
+        r.type = ir::kVec2Type;
+        r.span = e.span;
+        return r;
+    }
     if (id == "pi") return literal(std::numbers::pi, ir::kFloatType, e.span);
     if (id == "tau") return literal(2 * std::numbers::pi, ir::kFloatType, e.span);
     if (g_.kinds.count(id)) {

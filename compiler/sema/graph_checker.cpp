@@ -52,6 +52,11 @@ bool checkArrow(Globals& g, const ast::EdgeStmt& e, int kind) {
     return false;
 }
 
+bool usesPlaced(const ir::Expr& e) {
+    if (e.op == ir::ExprOp::Placed) return true;
+    return std::any_of(e.args.begin(), e.args.end(), [](const ir::Expr& a) { return usesPlaced(a); });
+}
+
 const ast::NodeStmt* asNode(const ast::GraphStmt& s) { return std::get_if<ast::NodeStmt>(&s.stmt); }
 const ast::EdgeStmt* asEdge(const ast::GraphStmt& s) { return std::get_if<ast::EdgeStmt>(&s.stmt); }
 
@@ -689,7 +694,10 @@ private:
                     auto& dn = dg.nodes[pendingNodes[nodeCursor].index];
                     ++nodeCursor;
                     if (n->position) {
-                        auto pos = ec_.checkAs(*n->position, ir::kVec2Type, exprEnv(), "a position");
+                        ExprEnv env = exprEnv();
+                        if (dn.motherNode < 0 && dn.sketch) env.placedNode = pendingNodes[nodeCursor - 1].index;
+                        auto pos = ec_.checkAs(*n->position, ir::kVec2Type, env, "a position");
+                        if (pos && usesPlaced(*pos)) dg.autoPlacement = true;
                         if (pos) dn.position = std::move(*pos);
                     }
                     if (dn.kind >= 0) checkAssignments(g_, ec_, dn.kind, n->assigns, exprEnv(), dn.assigns, dn.styles);

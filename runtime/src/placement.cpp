@@ -15,29 +15,48 @@ vec2 mean(const std::vector<vec2>& ps) {
     return ps.empty() ? c : c / static_cast<double>(ps.size());
 }
 
-// Principal axis of the points (total least squares), oriented first → last.
-vec2 direction(const std::vector<vec2>& ps, std::optional<std::pair<int, int>> edge) {
-    vec2 u{0, 0};
-    if (edge) {
-        u = ps[edge->second] - ps[edge->first];
-    } else if (ps.size() >= 2) {
-        const vec2 c = mean(ps);
-        double sxx = 0, sxy = 0, syy = 0;
-        for (const auto& p : ps) {
-            const vec2 d = p - c;
-            sxx += d.x * d.x;
-            sxy += d.x * d.y;
-            syy += d.y * d.y;
-        }
-        if (sxx + syy > kEps) {
-            const double theta = 0.5 * std::atan2(2 * sxy, sxx - syy);
-            u = {std::cos(theta), std::sin(theta)};
-            const vec2 span = ps.back() - ps.front();
-            if (dot(u, span) < 0) u = -u;
-        }
+struct Moments {
+    double sxx = 0, sxy = 0, syy = 0;
+};
+
+Moments moments(const std::vector<vec2>& ps) {
+    Moments m;
+    const vec2 c = mean(ps);
+    for (const auto& p : ps) {
+        const vec2 d = p - c;
+        m.sxx += d.x * d.x;
+        m.sxy += d.x * d.y;
+        m.syy += d.y * d.y;
     }
-    const double l = length(u);
-    return l > kEps ? u / l : vec2{1, 0};
+    return m;
+}
+
+// No principal axis: the two eigenvalues of the covariance are (nearly) equal.
+bool isotropic(const Moments& m) {
+    const double spread = m.sxx + m.syy;
+    const double gap = std::hypot(m.sxx - m.syy, 2 * m.sxy);  // λ1 − λ2
+    return spread <= kEps || gap <= 1e-9 * spread;
+}
+
+// The direction of a point set: along the directed edge if given; else its
+// total-least-squares line, taken pointing right (angle in (-90°, 90°]) as the
+// thesis's tool did, so that a mirrored match of a symmetric pattern is not
+// turned upside down; a set with no principal axis (isotropic, e.g. a square
+// or a diamond) lies along the x axis, as a least-squares fit of it does.
+vec2 direction(const std::vector<vec2>& ps, std::optional<std::pair<int, int>> edge) {
+    if (edge) {
+        const vec2 u = ps[edge->second] - ps[edge->first];
+        const double l = length(u);
+        return l > kEps ? u / l : vec2{1, 0};
+    }
+    if (ps.size() < 2) return {1, 0};
+    const Moments m = moments(ps);
+    if (isotropic(m)) return {1, 0};
+    const double theta = 0.5 * std::atan2(2 * m.sxy, m.sxx - m.syy);
+    vec2 u{std::cos(theta), std::sin(theta)};
+    // (A vertical line's cos(±90°) is ±6e-17: within 1e-9 it counts as vertical.)
+    if (u.x < -1e-9 || (std::abs(u.x) <= 1e-9 && u.y < 0)) u = -u;
+    return u;
 }
 
 double extent(const std::vector<vec2>& ps, vec2 axis) {
@@ -58,22 +77,22 @@ vec2 PlacementFrame::place(vec2 sketch) const {
     return cH + su * dot(o, uM) * uH + sw * dot(o, wM) * wH;
 }
 
-PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& daughter,
-                              const std::vector<vec2>& host, std::optional<std::pair<int, int>> directedEdge) {
+PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& host,
+                              std::optional<std::pair<int, int>> directedEdge,
+                              const std::vector<vec2>& refDaughter, const std::vector<vec2>& refHost) {
     PlacementFrame f;
-    f.cD = mean(daughter);
-    f.cH = mean(host);
+    f.cD = mean(refDaughter);
+    f.cH = mean(refHost);
     f.uM = direction(mother, directedEdge);
     f.uH = direction(host, directedEdge);
     f.wM = perpLeft(f.uM);
     f.wH = perpLeft(f.uH);
     const double mu = extent(mother, f.uM), mw = extent(mother, f.wM);
     const double hu = extent(host, f.uH), hw = extent(host, f.wH);
-    const bool du = mu > kEps, dw = mw > kEps;
-    f.su = du ? hu / mu : 1;
-    f.sw = dw ? hw / mw : 1;
-    if (!du && dw) f.su = f.sw;
-    if (du && !dw) f.sw = f.su;
+    // An axis along which the mother sketch is flat keeps the sketch's scale (1),
+    // as in the thesis's tool.
+    f.su = mu > kEps ? hu / mu : 1;
+    f.sw = mw > kEps ? hw / mw : 1;
     return f;
 }
 

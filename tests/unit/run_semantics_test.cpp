@@ -171,7 +171,9 @@ TEST_CASE("the ordering option keeps the sketch's x and y order", "[run][ordered
         return matches.size();
     };
     CHECK(countMatches("") == 8);         // every path of length two around the square
-    CHECK(countMatches("ordered") == 1);  // only p=a, q=b, r=c keeps the order
+    // p=a, q=b, r=c keeps the order; so does its mirror p=a, q=d, r=c, because ties
+    // are allowed, as in the thesis's tool (q and r share a sketch x, d and c a host y).
+    CHECK(countMatches("ordered") == 2);
 }
 
 TEST_CASE("pick oldest applies to the oldest match first", "[run][oldest]") {
@@ -285,13 +287,53 @@ TEST_CASE("automatic placement follows the match (thesis Fig. 5.3)", "[run][plac
                     "produce { x; y; z; m: V @ (1, 0.5); } }\n");
     CHECK(s.run.graph.pos(3).x == Approx(2.0));
     CHECK(s.run.graph.pos(3).y == Approx(1.0));
-    // Without a directed edge the total-least-squares line gives the direction; a match
-    // running the other way round the path turns the picture by 180°.
+    // Along an axis where the mother sketch is flat the sketch's own scale (1) holds.
     auto t = derive("node V; edge E;\naxiom { a: V at (0, 0); b: V at (4, 0); a -[E]- b; }\nlimit 1;\n"
                     "rule Out ordered { match { x: V @ (0, 0); y: V @ (2, 0); x -[E]- y; } "
                     "produce { x; y; m: V @ (1, 1); } }\n");
     CHECK(t.run.graph.pos(2).x == Approx(2.0));
-    CHECK(t.run.graph.pos(2).y == Approx(2.0));
+    CHECK(t.run.graph.pos(2).y == Approx(1.0));
+    // A least-squares line points right: a mirrored match is not turned upside down.
+    auto mirror = derive("node V; edge E;\naxiom { a: V at (0, 0); b: V at (4, 0); a -[E]- b; }\nlimit 1;\n"
+                         "rule Up { match { x: V @ (0, 0); y: V @ (2, 0); x -[E]- y where x.pos.x > y.pos.x; } "
+                         "produce { x; y; m: V @ (1, 1); } }\n");
+    CHECK(mirror.run.graph.pos(2).y == Approx(1.0));
+}
+
+TEST_CASE("automatic placement scales by the whole match, even when one node is kept", "[run][placement]") {
+    // The rule is drawn on a 10 × 10 square; the host square is 1 × 1 (thesis §5.3: scale
+    // = extent of H^M / extent of M), so (4.5, 4.5) lands near the top-right corner.
+    auto r = derive("node V; node Centre; edge E; edge L;\n"
+                    "axiom { a: V at (0, 0); b: V at (0, 1); c: V at (1, 1); d: V at (1, 0); m: Centre at (0.5, 0.5);\n"
+                    "        a -[E]- b; b -[E]- c; c -[E]- d; d -[E]- a; m -[L]- b; }\n"
+                    "rule Fill ordered {\n"
+                    "  match { bl: V @ (-5, -5); tl: V @ (-5, 5); tr: V @ (5, 5); br: V @ (5, -5); m: Centre @ (0, 0);\n"
+                    "          bl -[E]- tl; tl -[E]- tr; tr -[E]- br; br -[E]- bl; m -[L]- tl; }\n"
+                    "  produce { m; p: V @ (4.5, 4.5); }\n"
+                    "}\nlimit 1;\n");
+    CHECK(r.run.graph.pos(5).x == Approx(0.95));
+    CHECK(r.run.graph.pos(5).y == Approx(0.95));
+}
+
+TEST_CASE("automatic placement on a square (no principal axis) is exact", "[run][placement]") {
+    auto r = derive("node V; edge E;\n"
+                    "axiom { a: V at (0.1, 0.2); b: V at (0.1, 1.2); c: V at (1.1, 1.2); d: V at (1.1, 0.2);\n"
+                    "        a -[E]- b; b -[E]- c; c -[E]- d; d -[E]- a; }\n"
+                    "rule Mark ordered {\n"
+                    "  match { bl: V @ (-5, -5); tl: V @ (-5, 5); tr: V @ (5, 5); br: V @ (5, -5);\n"
+                    "          e1: bl -[E]- tl; e2: tl -[E]- tr; e3: tr -[E]- br; e4: br -[E]- bl; }\n"
+                    "  produce { e1; e2; e3; e4; m: V @ (0, 5); }\n"
+                    "}\nlimit 1;\n");
+    CHECK(r.run.graph.pos(4).x == Approx(0.6));
+    CHECK(r.run.graph.pos(4).y == Approx(1.2));
+}
+
+TEST_CASE("`at` can refine the automatic position through `placed`", "[run][placement]") {
+    auto r = derive("node V; edge E directed;\naxiom { a: V at (0, 0); b: V at (1, 1); a -[E]-> b; }\nlimit 1;\n"
+                    "rule Double { match { x: V @ (0, 0); y: V @ (1, 0); x -[E]-> y; } "
+                    "produce { x; y; z: V @ (1.5, 0) at (placed.x, 7); } }\n");
+    CHECK(r.run.graph.pos(2).x == Approx(1.5));
+    CHECK(r.run.graph.pos(2).y == Approx(7.0));
 }
 
 TEST_CASE("same grammar and seed give byte-identical SVG and JSON", "[run][determinism]") {

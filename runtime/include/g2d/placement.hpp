@@ -4,16 +4,17 @@
 // carried into the host by the transform that takes the mother's sketch onto
 // the matched host nodes:
 //
-//   reference nodes R: the kept mother nodes (all mother nodes if none is kept)
+//   M, H: the sketch and host positions of all matched nodes (index-aligned)
+//   R: the reference nodes: the kept ones (all matched nodes if none is kept)
 //   cD = mean of R's daughter sketches, cH = mean of R's host positions
-//   u_M, u_H: direction of the mother sketch and of the host match — along the
-//       first directed mother edge if there is one, else the total-least-
-//       squares line through R (principal axis of the covariance), oriented
-//       like the vector from R's first to its last node;
+//   u_M, u_H: direction of M and of H — along the first directed mother edge
+//       if there is one; else the total-least-squares line through the points
+//       (principal axis of the covariance), taken pointing right (angle in
+//       (-90°, 90°]) as the thesis's tool did; a point set with no principal
+//       axis (isotropic: a square, a diamond) lies along the x axis;
 //       w = perp_left(u)
-//   s_u = extent_H(u_H) / extent_M(u_M), s_w likewise along w (extent = max −
-//       min of the projections); an undefined ratio (zero mother extent) takes
-//       the other one, and 1 if both are undefined
+//   s_u = extent(H along u_H) / extent(M along u_M), s_w likewise along w
+//       (extent = max − min of the projections); 1 where M's extent is zero
 //   place(d) = cH + s_u·⟨d − cD, u_M⟩·u_H + s_w·⟨d − cD, w_M⟩·w_H
 //
 // So the new nodes follow the match's translation, rotation and per-axis
@@ -33,10 +34,11 @@ struct PlacementFrame {
     vec2 place(vec2 sketch) const;
 };
 
-// `mother`, `daughter` and `host` are R's positions, index-aligned;
-// `directedEdge` is (source, target) as indices into them.
-PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& daughter,
-                              const std::vector<vec2>& host,
-                              std::optional<std::pair<int, int>> directedEdge);
+// `mother` and `host`: all matched nodes; `directedEdge`: (source, target) as
+// indices into them; `refDaughter` and `refHost`: R's daughter sketches and
+// host positions.
+PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& host,
+                              std::optional<std::pair<int, int>> directedEdge,
+                              const std::vector<vec2>& refDaughter, const std::vector<vec2>& refHost);
 
 }  // namespace g2d::rt
