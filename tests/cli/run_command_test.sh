@@ -85,5 +85,12 @@ grep -q '"steps": 7,.*"stopped": "step_limit"' out.txt || fail "--steps: $(cat o
 expect_code 0 "$g2d" run spin.g2d --no-svg
 grep -q 'warning: stopped at the default limit of 10000 steps' err.txt || fail "default limit warning: $(cat err.txt)"
 
+# An interrupted run leaves no temporary files and no output
+"$g2d" run spin.g2d --steps 100000000 -o interrupted.svg >/dev/null 2>&1 &
+pid=$!
+sleep 0.5
+kill -INT "$pid"; wait "$pid" 2>/dev/null
+ls | grep -q 'interrupted.svg' && fail "an interrupted run left $(ls | grep interrupted)"
+
 echo "$failures failed"
 [ "$failures" = 0 ]

@@ -1,6 +1,7 @@
 #pragma once
 // Output files appear whole or not at all: the text goes to a temporary file
-// in the same folder, which is renamed over the target on commit().
+// in the same folder, which is renamed over the target on commit(). Temporary
+// files are removed on failure, and on SIGINT, SIGTERM and SIGHUP too.
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +26,7 @@ public:
 private:
     std::string path_, temp_;
     int fd_ = -1;
+    int slot_ = -1;   // in the signal handler's list
     bool committed_ = false;
 };
 
