@@ -1,7 +1,5 @@
 #include "interp/run_program.hpp"
 
-#include "interp/interpreted_rules.hpp"
-
 namespace g2d::interp {
 
 std::vector<rt::Value> defaultParams(const ir::Program& prog) {
@@ -12,34 +10,20 @@ std::vector<rt::Value> defaultParams(const ir::Program& prog) {
 
 RunResult runProgram(const ir::Program& prog, std::vector<rt::Value> params, std::uint64_t seed,
                      std::optional<long long> steps, const rt::StepObserver& observer, RunFailure* failure) {
-    rt::Rng rng(seed);
     RunResult out;
-    out.state = initState(prog, std::move(params), rng);
-    out.graph = buildAxiom(out.state, rng);
-    InterpretedRules rules(out.state);
-
-    rt::DerivationLimits limits;
-    EvalFrame frame = out.state.frame(nullptr);
-    if (steps) limits.steps = *steps;
-    else if (prog.stepLimit) limits.steps = std::get<long long>(evaluate(*prog.stepLimit, frame));
-    else limits.steps = kDefaultStepLimit;
-    for (const auto& [prio, cfg] : prog.priorities)
-        if (cfg.limit) limits.perPriority[prio] = std::get<long long>(evaluate(*cfg.limit, frame));
-
+    out.grammar = std::make_unique<InterpretedRun>(prog, nullptr);
     long long step = 0;
     try {
-        out.derivation = rt::derive(out.graph, rules, rng, limits, [&](long long s, const rt::Graph& g) {
-            step = s;
-            if (observer) observer(s, g);
-        });
+        rt::DerivedRun derived = rt::deriveGrammar(*out.grammar, params, seed, steps, observer, &step);
+        out.derivation = derived.result;
+        out.hitDefaultLimit = derived.hitDefaultLimit;
     } catch (const EvalError&) {
         if (failure) {
-            failure->rule = rules.currentRule() ? rules.currentRule()->name : "";
+            failure->rule = out.grammar->currentRule();
             failure->step = step + 1;
         }
         throw;
     }
-    out.hitDefaultLimit = out.derivation.stopped == rt::StopReason::StepLimit && !steps && !prog.stepLimit;
     return out;
 }
 

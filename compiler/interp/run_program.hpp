@@ -1,21 +1,25 @@
 #pragma once
-// One whole interpreted run: state, axiom, derivation. Used by `g2d run` and
-// by the tests, so both exercise the same path.
+// One whole interpreted run, without outputs: for tests and tools. `g2d run`
+// goes through the runtime's driver (g2d/run_driver.hpp) with the same
+// InterpretedRun.
+#include <memory>
 #include <optional>
 #include <string>
 
-#include "g2d/derivation.hpp"
-#include "interp/program_state.hpp"
+#include "g2d/run_driver.hpp"
+#include "interp/interpreted_run.hpp"
 
 namespace g2d::interp {
 
-inline constexpr long long kDefaultStepLimit = 10000;
+using rt::kDefaultStepLimit;
 
 struct RunResult {
-    ProgramState state;
-    rt::Graph graph{{}};
+    std::unique_ptr<InterpretedRun> grammar;
     rt::DerivationResult derivation;
     bool hitDefaultLimit = false;   // stopped by the 10 000-step default (the grammar sets no limit)
+
+    const rt::Graph& graph() const { return grammar->graph(); }
+    const ProgramState& state() const { return grammar->state(); }
 };
 
 struct RunFailure {

@@ -41,7 +41,10 @@ std::string jsonValue(const Value& v, const JsonSchema& schema) {
 }  // namespace
 
 std::string writeJson(const Graph& g, const JsonSchema& schema,
-                      const std::vector<std::pair<std::string, Value>>& graphAttrs) {
+                      const std::vector<std::pair<std::string, Value>>& graphAttrs, const AttributeReader& reader) {
+    const AttributeReader attr = reader ? reader : AttributeReader([&](bool isEdge, std::uint32_t id, int a) {
+        return isEdge ? g.edgeAttr(id, a) : g.nodeAttr(id, a);
+    });
     std::string out = "{\"directed\": true, \"multigraph\": true, \"graph\": {";
     for (std::size_t i = 0; i < graphAttrs.size(); ++i)
         out += (i ? ", " : "") + jsonString(graphAttrs[i].first) + ": " + jsonValue(graphAttrs[i].second, schema);
@@ -55,7 +58,7 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
         out += "{\"id\": " + std::to_string(n) + ", \"kind\": " + jsonString(schema.kindNames[k]) + ", \"pos\": [" +
                formatNumber(g.pos(n).x) + ", " + formatNumber(g.pos(n).y) + "], \"age\": " + std::to_string(g.nodeAge(n));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
-            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(g.nodeAttr(n, static_cast<int>(a)), schema);
+            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(attr(false, n, static_cast<int>(a)), schema);
         out += "}";
     }
     out += "],\n\"links\": [";
@@ -72,7 +75,7 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
                jsonString(schema.kindNames[k]) + ", \"directed\": " + (g.kinds()[k].directed ? "true" : "false") +
                ", \"age\": " + std::to_string(g.edgeAge(e));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
-            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(g.edgeAttr(e, static_cast<int>(a)), schema);
+            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(attr(true, e, static_cast<int>(a)), schema);
         out += "}";
     }
     out += "]}\n";

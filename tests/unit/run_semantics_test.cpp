@@ -78,7 +78,7 @@ std::vector<std::array<long long, 4>> rounded(const std::vector<Segment>& segs) 
 TEST_CASE("the Koch snowflake is exact for levels 0 to 4", "[run][koch]") {
     for (int level = 0; level <= 4; ++level) {
         auto r = derive(koch(), 1, {}, {{"max_lod", static_cast<long long>(level)}});
-        const rt::Graph& g = r.run.graph;
+        const rt::Graph& g = r.run.graph();
         CHECK(g.edgeCount() == static_cast<std::size_t>(3 * std::pow(4, level)));
         CHECK(r.run.derivation.stopped == rt::StopReason::Terminal);
         std::vector<Segment> expected, actual;
@@ -97,8 +97,8 @@ TEST_CASE("spikes point outward: every vertex lies outside or on the triangle", 
     auto r = derive(koch(), 1, {}, {{"max_lod", 1LL}});
     // Level 1: the three spike tips are outside the triangle (-4,0), (0,6.93), (4,0).
     int outside = 0;
-    for (rt::NodeId n : r.run.graph.allNodes()) {
-        const rt::vec2 p = r.run.graph.pos(n);
+    for (rt::NodeId n : r.run.graph().allNodes()) {
+        const rt::vec2 p = r.run.graph().pos(n);
         if (p.y < -1e-9 || p.y > 6.93 * (1 - std::abs(p.x) / 4) + 1e-9) ++outside;
     }
     CHECK(outside == 3);
@@ -108,7 +108,7 @@ TEST_CASE("single-pushout deletion removes dangling edges", "[run][spo]") {
     auto r = derive("node P; node Hub; edge L;\n"
                     "axiom { h: Hub at (0, 0); a: P at (1, 0); b: P at (2, 0); c: P at (3, 0); h -[L]- a; h -[L]- b; a -[L]- c; }\n"
                     "rule DropHub { match { h: Hub; } produce { } }\n");
-    const auto& g = r.run.graph;
+    const auto& g = r.run.graph();
     CHECK(r.run.derivation.steps == 1);
     CHECK(g.nodeCount() == 3);
     CHECK(g.edgeCount() == 1);  // only a–c survives
@@ -118,7 +118,7 @@ TEST_CASE("mapping by name: kept elements keep or change attributes, new ones ge
     auto r = derive("node P { n: int = 7; tag: string = \"x\"; }\n"
                     "axiom { a: P at (0, 0) { n = 1 }; }\n"
                     "rule R { match { a: P where a.n == 1; } produce { a { n = a.n + 1 }; b: P at (1, 0); } }\n");
-    const auto& g = r.run.graph;
+    const auto& g = r.run.graph();
     CHECK(r.run.derivation.steps == 1);
     REQUIRE(g.nodeCount() == 2);
     CHECK(std::get<long long>(g.nodeAttr(0, 0)) == 2);
@@ -131,7 +131,7 @@ TEST_CASE("wildcards match any kind and stay unchanged", "[run][wildcard]") {
     auto r = derive("node P; node Q { w: int = 5; } edge L directed;\n"
                     "axiom { p: P at (0, 0); q: Q at (1, 0); r: P at (2, 0); p -[L]-> q; p -[L]-> r; }\n"
                     "rule Cut { match { p: P; x: *; e: p -[L]-> x; } produce { p; x; } }\n");
-    const auto& g = r.run.graph;
+    const auto& g = r.run.graph();
     CHECK(r.run.derivation.steps == 2);
     CHECK(g.edgeCount() == 0);
     CHECK(g.nodeCount() == 3);
@@ -147,7 +147,7 @@ TEST_CASE("element, cross-element and negative conditions", "[run][conditions]")
     // x→y with x.v < y.v: a→b (1<2) and b→c (2<3), but b→c is first rejected by the
     // NAC (c → a with a.v == 1). Step 1 rewrites a; then a.v is -1, so step 2 rewrites b;
     // c→a fails the cross-element condition (3 < -1), so the derivation ends.
-    const auto& g = r.run.graph;
+    const auto& g = r.run.graph();
     CHECK(std::get<long long>(g.nodeAttr(0, 0)) == -1);
     CHECK(std::get<long long>(g.nodeAttr(1, 0)) == -2);
     CHECK(std::get<long long>(g.nodeAttr(2, 0)) == 3);
@@ -184,7 +184,7 @@ TEST_CASE("pick oldest applies to the oldest match first", "[run][oldest]") {
                     "rule Grow pick oldest { match { x: P; y: P; e: x -[L]-> y; } "
                     "produce { x; y; e { n = 0 }; z: P at (0, 5); y -[L { n = e.n * 10 }]-> z; } }\n");
     // Both edges have age 0: a tie broken at random; after one step exactly one new edge exists with n 10 or 20.
-    const auto& g = r.run.graph;
+    const auto& g = r.run.graph();
     REQUIRE(g.edgeCount() == 3);
     const long long n = std::get<long long>(g.edgeAttr(2, 0));
     CHECK((n == 10 || n == 20));
@@ -197,8 +197,8 @@ TEST_CASE("pick oldest applies to the oldest match first", "[run][oldest]") {
     // Step 1 rewrites the axiom edge (age 0); step 2 must take one of the two edges of age 1,
     // never an edge of age 2 made in step 2.
     std::set<long long> ages;
-    for (rt::EdgeId e = 0; e < r2.run.graph.edgeCapacity(); ++e)
-        if (std::get<long long>(r2.run.graph.edgeAttr(e, 0)) == 0) ages.insert(r2.run.graph.edgeAge(e));
+    for (rt::EdgeId e = 0; e < r2.run.graph().edgeCapacity(); ++e)
+        if (std::get<long long>(r2.run.graph().edgeAttr(e, 0)) == 0) ages.insert(r2.run.graph().edgeAge(e));
     CHECK(ages == std::set<long long>{0, 1});
 }
 
@@ -212,7 +212,7 @@ TEST_CASE("daughters are chosen by weight", "[run][weights]") {
     const int runs = 4000;
     for (int seed = 0; seed < runs; ++seed) {
         auto run = interp::runProgram(*c.program, {}, static_cast<std::uint64_t>(seed), {});
-        bs += static_cast<int>(countNodes(run.graph, kindB));
+        bs += static_cast<int>(countNodes(run.graph(), kindB));
     }
     // Expected 3/4; the standard deviation of the count is sqrt(n p (1-p)) ≈ 27.4.
     CHECK(std::abs(bs - runs * 3 / 4) < 5 * 28);
@@ -231,24 +231,24 @@ TEST_CASE("priorities and both kinds of limits, as in the thesis's §4.1 example
     auto terminal = derive(grammar(200));
     CHECK(terminal.run.derivation.steps == 300);
     CHECK(terminal.run.derivation.stopped == rt::StopReason::Terminal);
-    CHECK(std::get<long long>(terminal.run.graph.nodeAttr(0, 0)) == 100);
+    CHECK(std::get<long long>(terminal.run.graph().nodeAttr(0, 0)) == 100);
     auto limited = derive(grammar(600));
     CHECK(limited.run.derivation.steps == 500);
     CHECK(limited.run.derivation.stopped == rt::StopReason::StepLimit);
-    CHECK(limited.run.graph.nodeCount() == 1 + 200);  // 400 tokens eaten after 100 counts
+    CHECK(limited.run.graph().nodeCount() == 1 + 200);  // 400 tokens eaten after 100 counts
 }
 
 TEST_CASE("lower priority values go first; equal priorities in random order", "[run][priorities]") {
     auto r = derive("node S; node A; node B;\naxiom { s: S at (0, 0); }\nlimit 1;\n"
                     "rule Late priority 5 { match { s: S; } produce { s; b: B at (0, 0); } }\n"
                     "rule Early priority -1 { match { s: S; } produce { s; a: A at (0, 0); } }\n");
-    CHECK(countNodes(r.run.graph, 1) == 1);
-    CHECK(countNodes(r.run.graph, 2) == 0);
+    CHECK(countNodes(r.run.graph(), 1) == 1);
+    CHECK(countNodes(r.run.graph(), 2) == 0);
     const std::string tie = "node S; node A; node B;\naxiom { s: S at (0, 0); }\nlimit 1;\n"
                             "rule First { match { s: S; } produce { s; a: A at (0, 0); } }\n"
                             "rule Second { match { s: S; } produce { s; b: B at (0, 0); } }\n";
     std::set<std::size_t> outcomes;
-    for (int seed = 0; seed < 20; ++seed) outcomes.insert(countNodes(derive(tie, seed).run.graph, 1));
+    for (int seed = 0; seed < 20; ++seed) outcomes.insert(countNodes(derive(tie, seed).run.graph(), 1));
     CHECK(outcomes == std::set<std::size_t>{0, 1});
 }
 
@@ -258,24 +258,24 @@ TEST_CASE("a parallel step rewrites every non-overlapping match at once", "[run]
     for (int level = 1; level <= 5; ++level) {
         auto r = derive(src, 3, level, {{"max_lod", 10LL}});
         CHECK(r.run.derivation.steps == level);
-        CHECK(r.run.graph.edgeCount() == static_cast<std::size_t>(3 * std::pow(4, level)));
+        CHECK(r.run.graph().edgeCount() == static_cast<std::size_t>(3 * std::pow(4, level)));
     }
     // `priority P parallel` makes every rule of that priority parallel.
     std::string byPriority = koch();
     byPriority.replace(byPriority.find("rule Split pick oldest"), 22, "priority 0 parallel;\nrule Split");
     auto p = derive(byPriority, 3, 3, {{"max_lod", 10LL}});
-    CHECK(p.run.graph.edgeCount() == 3 * 64u);
+    CHECK(p.run.graph().edgeCount() == 3 * 64u);
     // Overlapping matches: two rules' matches share a deleted node; only one applies per step.
     auto r = derive("node P; edge L;\naxiom { a: P at (0, 0); b: P at (1, 0); c: P at (2, 0); a -[L]- b; b -[L]- c; }\n"
                     "limit 1;\nrule Merge parallel { match { x: P; y: P; x -[L]- y; } produce { x; } }\n");
-    CHECK(r.run.graph.nodeCount() == 2);
+    CHECK(r.run.graph().nodeCount() == 2);
 }
 
 TEST_CASE("automatic placement follows the match (thesis Fig. 5.3)", "[run][placement]") {
     auto r = derive("node V; edge E directed;\naxiom { a: V at (0, 0); b: V at (1, 1); a -[E]-> b; }\nlimit 1;\n"
                     "rule Double { match { x: V @ (0, 0); y: V @ (1, 0); x -[E]-> y; } "
                     "produce { x; y; x2: V @ (-0.5, 0); y2: V @ (1.5, 0); } }\n");
-    const auto& g = r.run.graph;
+    const auto& g = r.run.graph();
     REQUIRE(g.nodeCount() == 4);
     CHECK(g.pos(2).x == Approx(-0.5));
     CHECK(g.pos(2).y == Approx(-0.5));
@@ -285,19 +285,19 @@ TEST_CASE("automatic placement follows the match (thesis Fig. 5.3)", "[run][plac
     auto s = derive("node V; edge E directed;\naxiom { a: V at (0, 0); b: V at (4, 0); c: V at (4, 2); a -[E]-> b; b -[E]-> c; }\nlimit 1;\n"
                     "rule Mid { match { x: V @ (0, 0); y: V @ (2, 0); z: V @ (2, 1); x -[E]-> y; y -[E]-> z; } "
                     "produce { x; y; z; m: V @ (1, 0.5); } }\n");
-    CHECK(s.run.graph.pos(3).x == Approx(2.0));
-    CHECK(s.run.graph.pos(3).y == Approx(1.0));
+    CHECK(s.run.graph().pos(3).x == Approx(2.0));
+    CHECK(s.run.graph().pos(3).y == Approx(1.0));
     // Along an axis where the mother sketch is flat the sketch's own scale (1) holds.
     auto t = derive("node V; edge E;\naxiom { a: V at (0, 0); b: V at (4, 0); a -[E]- b; }\nlimit 1;\n"
                     "rule Out ordered { match { x: V @ (0, 0); y: V @ (2, 0); x -[E]- y; } "
                     "produce { x; y; m: V @ (1, 1); } }\n");
-    CHECK(t.run.graph.pos(2).x == Approx(2.0));
-    CHECK(t.run.graph.pos(2).y == Approx(1.0));
+    CHECK(t.run.graph().pos(2).x == Approx(2.0));
+    CHECK(t.run.graph().pos(2).y == Approx(1.0));
     // A least-squares line points right: a mirrored match is not turned upside down.
     auto mirror = derive("node V; edge E;\naxiom { a: V at (0, 0); b: V at (4, 0); a -[E]- b; }\nlimit 1;\n"
                          "rule Up { match { x: V @ (0, 0); y: V @ (2, 0); x -[E]- y where x.pos.x > y.pos.x; } "
                          "produce { x; y; m: V @ (1, 1); } }\n");
-    CHECK(mirror.run.graph.pos(2).y == Approx(1.0));
+    CHECK(mirror.run.graph().pos(2).y == Approx(1.0));
 }
 
 TEST_CASE("automatic placement scales by the whole match, even when one node is kept", "[run][placement]") {
@@ -311,8 +311,8 @@ TEST_CASE("automatic placement scales by the whole match, even when one node is 
                     "          bl -[E]- tl; tl -[E]- tr; tr -[E]- br; br -[E]- bl; m -[L]- tl; }\n"
                     "  produce { m; p: V @ (4.5, 4.5); }\n"
                     "}\nlimit 1;\n");
-    CHECK(r.run.graph.pos(5).x == Approx(0.95));
-    CHECK(r.run.graph.pos(5).y == Approx(0.95));
+    CHECK(r.run.graph().pos(5).x == Approx(0.95));
+    CHECK(r.run.graph().pos(5).y == Approx(0.95));
 }
 
 TEST_CASE("automatic placement on a square (no principal axis) is exact", "[run][placement]") {
@@ -324,16 +324,16 @@ TEST_CASE("automatic placement on a square (no principal axis) is exact", "[run]
                     "          e1: bl -[E]- tl; e2: tl -[E]- tr; e3: tr -[E]- br; e4: br -[E]- bl; }\n"
                     "  produce { e1; e2; e3; e4; m: V @ (0, 5); }\n"
                     "}\nlimit 1;\n");
-    CHECK(r.run.graph.pos(4).x == Approx(0.6));
-    CHECK(r.run.graph.pos(4).y == Approx(1.2));
+    CHECK(r.run.graph().pos(4).x == Approx(0.6));
+    CHECK(r.run.graph().pos(4).y == Approx(1.2));
 }
 
 TEST_CASE("`at` can refine the automatic position through `placed`", "[run][placement]") {
     auto r = derive("node V; edge E directed;\naxiom { a: V at (0, 0); b: V at (1, 1); a -[E]-> b; }\nlimit 1;\n"
                     "rule Double { match { x: V @ (0, 0); y: V @ (1, 0); x -[E]-> y; } "
                     "produce { x; y; z: V @ (1.5, 0) at (placed.x, 7); } }\n");
-    CHECK(r.run.graph.pos(2).x == Approx(1.5));
-    CHECK(r.run.graph.pos(2).y == Approx(7.0));
+    CHECK(r.run.graph().pos(2).x == Approx(1.5));
+    CHECK(r.run.graph().pos(2).y == Approx(7.0));
 }
 
 TEST_CASE("same grammar and seed give byte-identical SVG and JSON", "[run][determinism]") {
@@ -342,8 +342,8 @@ TEST_CASE("same grammar and seed give byte-identical SVG and JSON", "[run][deter
     auto output = [&](std::uint64_t seed) {
         auto r = derive(tree, seed);
         const auto& prog = *r.compiled.program;
-        return rt::writeSvg(interp::drawItems(r.run.graph, r.run.state), prog.svgDefs) +
-               rt::writeJson(r.run.graph, interp::jsonSchema(prog), {{"seed", static_cast<long long>(seed)}});
+        return rt::writeSvg(interp::drawItems(r.run.graph(), r.run.state()), prog.svgDefs) +
+               rt::writeJson(r.run.graph(), interp::jsonSchema(prog), {{"seed", static_cast<long long>(seed)}});
     };
     CHECK(output(5) == output(5));
     CHECK(output(5) != output(6));
@@ -352,7 +352,7 @@ TEST_CASE("same grammar and seed give byte-identical SVG and JSON", "[run][deter
 TEST_CASE("the Koch snowflake has the thesis's 1158 elements after 192 steps", "[run][koch]") {
     auto r = derive(koch(), 1, 192);
     CHECK(r.run.derivation.steps == 192);
-    CHECK(r.run.graph.nodeCount() + r.run.graph.edgeCount() == 1158);
+    CHECK(r.run.graph().nodeCount() + r.run.graph().edgeCount() == 1158);
 }
 
 TEST_CASE("the tree reaches the thesis's 803 elements after 200 steps", "[run][tree]") {
@@ -361,7 +361,7 @@ TEST_CASE("the tree reaches the thesis's 803 elements after 200 steps", "[run][t
     for (std::uint64_t seed : {1, 2, 3}) {
         auto r = derive(tree, seed);
         CHECK(r.run.derivation.steps == 200);
-        CHECK(r.run.graph.nodeCount() + r.run.graph.edgeCount() == 803);
+        CHECK(r.run.graph().nodeCount() + r.run.graph().edgeCount() == 803);
     }
 }
 

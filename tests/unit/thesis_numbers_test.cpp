@@ -30,7 +30,7 @@ struct Stats {
 Stats run(const ir::Program& p, std::uint64_t seed) {
     auto r = interp::runProgram(p, interp::defaultParams(p), seed, {});
     CHECK(r.derivation.stopped == rt::StopReason::Terminal);
-    return {r.derivation.steps, r.graph.nodeCount(), r.graph.edgeCount()};
+    return {r.derivation.steps, r.graph().nodeCount(), r.graph().edgeCount()};
 }
 
 }  // namespace

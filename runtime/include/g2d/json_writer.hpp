@@ -4,6 +4,7 @@
 // pos, age and attributes, and whose links carry source, target, key, kind,
 // directed, age and attributes. Numbers print as the shortest round-trip
 // decimal, so every back end writes the same bytes.
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,9 +19,14 @@ struct JsonSchema {
     std::vector<std::vector<std::string>> enumValueNames; // per enum
 };
 
-// `graphAttrs` become the "graph" object (e.g. steps, seed).
+// Reads attribute `attr` of a node or edge (back ends store them their own way).
+using AttributeReader = std::function<Value(bool isEdge, std::uint32_t id, int attr)>;
+
+// `graphAttrs` become the "graph" object (e.g. steps, seed). Without a reader,
+// attributes are read from the graph's own slots.
 std::string writeJson(const Graph& g, const JsonSchema& schema,
-                      const std::vector<std::pair<std::string, Value>>& graphAttrs);
+                      const std::vector<std::pair<std::string, Value>>& graphAttrs,
+                      const AttributeReader& attr = {});
 
 std::string jsonString(const std::string& s);
 

@@ -1,0 +1,58 @@
+#pragma once
+// One run of a grammar, as a back end provides it. The interpreter implements
+// it by walking the IR; a compiled grammar by generated code. The driver
+// (run_driver.hpp) does everything else the same way for both: parameters,
+// outputs, the derivation, statistics and error messages.
+#include <exception>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "g2d/derivation.hpp"
+#include "g2d/json_writer.hpp"
+#include "g2d/param_parse.hpp"
+#include "g2d/svg_writer.hpp"
+
+namespace g2d::rt {
+
+struct ParamSpec {
+    std::string name;
+    std::string typeName;                 // for messages: int, float, vec2, an enum's name
+    ParamType type = ParamType::Int;
+    int enumId = -1;
+    std::vector<std::string> enumValues;
+    Value defaultValue;
+};
+
+// Where a run-time error happened in the grammar's source.
+struct SourceLocation {
+    std::string file;
+    unsigned line = 0, col = 0, endCol = 0;
+    std::string lineText;
+};
+
+class GrammarRun {
+public:
+    virtual ~GrammarRun() = default;
+
+    virtual const std::vector<ParamSpec>& params() const = 0;
+    // Evaluates the constants and the kinds' defaults and builds the axiom.
+    virtual void start(const std::vector<Value>& params, Rng& rng) = 0;
+    // The grammar's global limit (nullopt: it sets none) and per-priority limits.
+    virtual std::optional<long long> stepLimit() = 0;
+    virtual std::map<long long, long long> priorityLimits() = 0;
+    virtual Graph& graph() = 0;
+    virtual RuleSet& rules() = 0;
+
+    virtual std::vector<DrawItem> drawItems() = 0;
+    virtual const std::vector<std::string>& svgDefs() const = 0;
+    virtual const JsonSchema& jsonSchema() const = 0;
+    virtual Value attribute(bool isEdge, std::uint32_t id, int attr) const = 0;
+
+    // For a failure thrown by start() or the rules: where in the source, if
+    // known, and the rule being applied ("" outside rules).
+    virtual std::optional<SourceLocation> locate(const std::exception& e) const = 0;
+    virtual std::string currentRule() const = 0;
+};
+
+}  // namespace g2d::rt
