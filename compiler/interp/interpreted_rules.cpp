@@ -266,25 +266,39 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt:
     pending_.push_back(std::move(p));
 }
 
+// The order of a rewrite: deleted edges go; new nodes come; kept edges that
+// change ends are reconnected (before their old end nodes go, so they
+// survive); deleted nodes go with their remaining edges; then kept nodes
+// change, and edges are updated or created, in the daughter's order.
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (auto& p : pending_) {
         const ir::Rule& r = st_.prog->rules[p.rule];
         const ir::Daughter& d = r.daughters[p.daughter];
         for (int e : d.deletedEdges) g.removeEdge(p.match.edges[e]);
-        for (int n : d.deletedNodes) g.removeNode(p.match.nodes[n]);
         std::vector<NodeId> hostOf(d.nodes.size(), kNoId);
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            if (dn.motherNode >= 0) {
+                hostOf[i] = p.match.nodes[dn.motherNode];
+                continue;
+            }
+            std::vector<rt::Value> attrs = st_.kindDefaults[dn.kind];
+            for (auto& [attr, v] : p.nodeValues[i].attrs) attrs[attr] = std::move(v);
+            hostOf[i] = g.addNode(dn.kind, *p.nodePos[i], step, std::move(attrs));
+        }
+        for (const auto& de : d.edges) {
+            if (de.motherEdge < 0) continue;
+            const auto& me = r.edges[de.motherEdge];
+            if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
+                g.reconnectEdge(p.match.edges[de.motherEdge], hostOf[de.src], hostOf[de.dst]);
+        }
+        for (int n : d.deletedNodes) g.removeNode(p.match.nodes[n]);
         for (std::size_t i = 0; i < d.nodes.size(); ++i) {
             const auto& dn = d.nodes[i];
             auto& values = p.nodeValues[i];
             if (dn.motherNode >= 0) {
-                const NodeId h = p.match.nodes[dn.motherNode];
-                hostOf[i] = h;
-                if (p.nodePos[i]) g.setPos(h, *p.nodePos[i]);
-                for (auto& [attr, v] : values.attrs) g.setNodeAttr(h, attr, std::move(v));
-            } else {
-                std::vector<rt::Value> attrs = st_.kindDefaults[dn.kind];
-                for (auto& [attr, v] : values.attrs) attrs[attr] = std::move(v);
-                hostOf[i] = g.addNode(dn.kind, *p.nodePos[i], step, std::move(attrs));
+                if (p.nodePos[i]) g.setPos(hostOf[i], *p.nodePos[i]);
+                for (auto& [attr, v] : values.attrs) g.setNodeAttr(hostOf[i], attr, std::move(v));
             }
             for (auto& [prop, v] : values.styles) g.setNodeStyle(hostOf[i], prop, std::move(v));
         }
@@ -294,9 +308,6 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
             EdgeId h;
             if (de.motherEdge >= 0) {
                 h = p.match.edges[de.motherEdge];
-                const auto& me = r.edges[de.motherEdge];
-                if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
-                    g.reconnectEdge(h, hostOf[de.src], hostOf[de.dst]);
                 for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
             } else {
                 std::vector<rt::Value> attrs = st_.kindDefaults[de.kind];

@@ -59,7 +59,11 @@ void Graph::removeEdge(EdgeId e) {
 void Graph::removeNode(NodeId n) {
     auto& rec = nodes_[n];
     if (!rec.alive) return;
-    while (!rec.incident.empty()) removeEdge(rec.incident.back());
+    while (!rec.incident.empty()) {
+        const EdgeId e = rec.incident.back();
+        if (!edges_[e].alive) throw std::logic_error("a dead edge in an incidence list");
+        removeEdge(e);
+    }
     // Swap-remove from the indexes, fixing the moved node's slot.
     auto& kindList = kindNodes_[rec.kind];
     const NodeId movedK = kindList.back();
@@ -79,6 +83,7 @@ void Graph::removeNode(NodeId n) {
 
 void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
     auto& rec = edges_[e];
+    if (!rec.alive || !nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("reconnecting a dead edge or to a dead node");
     if (rec.src == src && rec.dst == dst) return;
     detach(rec.src, e);
     if (rec.dst != rec.src) detach(rec.dst, e);

@@ -38,43 +38,46 @@ bool isotropic(const Moments& m) {
     return spread <= kEps || gap <= 1e-9 * spread;
 }
 
-// The direction of a point set: along the directed edge if given; else its
-// total-least-squares line, taken pointing right (angle in (-90°, 90°]) as the
-// thesis's tool did, so that a mirrored match of a symmetric pattern is not
-// turned upside down; a set with no principal axis (isotropic, e.g. a square
-// or a diamond) lies along the x axis, as a least-squares fit of it does.
-vec2 direction(const std::vector<vec2>& ps, std::optional<std::pair<int, int>> edge) {
+// The direction of a point set, as an angle: along the directed edge if given;
+// else its total-least-squares line, taken pointing right (in (-90°, 90°]) as
+// the thesis's tool did, so a mirrored match of a symmetric pattern is not
+// turned upside down; 0 for a set with no principal axis (isotropic).
+double direction(const std::vector<vec2>& ps, std::optional<std::pair<int, int>> edge) {
     if (edge) {
         const vec2 u = ps[edge->second] - ps[edge->first];
-        const double l = length(u);
-        return l > kEps ? u / l : vec2{1, 0};
+        return length(u) > kEps ? std::atan2(u.y, u.x) : 0.0;
     }
-    if (ps.size() < 2) return {1, 0};
+    if (ps.size() < 2) return 0;
     const Moments m = moments(ps);
-    if (isotropic(m)) return {1, 0};
-    const double theta = 0.5 * std::atan2(2 * m.sxy, m.sxx - m.syy);
-    vec2 u{std::cos(theta), std::sin(theta)};
-    // (A vertical line's cos(±90°) is ±6e-17: within 1e-9 it counts as vertical.)
-    if (u.x < -1e-9 || (std::abs(u.x) <= 1e-9 && u.y < 0)) u = -u;
-    return u;
+    if (isotropic(m)) return 0;
+    double theta = 0.5 * std::atan2(2 * m.sxy, m.sxx - m.syy);   // in [-90°, 90°]
+    // A vertical line may come out as -90° by rounding: it points up.
+    if (theta <= -1.5707963267948966 + 1e-9) theta += 3.141592653589793;
+    return theta;
 }
 
-double extent(const std::vector<vec2>& ps, vec2 axis) {
-    if (ps.empty()) return 0;
-    double lo = dot(ps[0], axis), hi = lo;
+struct Extent {
+    double x = 0, y = 0;
+};
+
+Extent extents(const std::vector<vec2>& ps) {
+    if (ps.empty()) return {};
+    double x0 = ps[0].x, x1 = x0, y0 = ps[0].y, y1 = y0;
     for (const auto& p : ps) {
-        const double t = dot(p, axis);
-        lo = std::min(lo, t);
-        hi = std::max(hi, t);
+        x0 = std::min(x0, p.x);
+        x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y);
+        y1 = std::max(y1, p.y);
     }
-    return hi - lo;
+    return {x1 - x0, y1 - y0};
 }
 
 }  // namespace
 
 vec2 PlacementFrame::place(vec2 sketch) const {
     const vec2 o = sketch - cD;
-    return cH + su * dot(o, uM) * uH + sw * dot(o, wM) * wH;
+    const vec2 r{cosA * o.x - sinA * o.y, sinA * o.x + cosA * o.y};
+    return cH + vec2{sx * r.x, sy * r.y};
 }
 
 PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& host,
@@ -83,16 +86,16 @@ PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector
     PlacementFrame f;
     f.cD = mean(refDaughter);
     f.cH = mean(refHost);
-    f.uM = direction(mother, directedEdge);
-    f.uH = direction(host, directedEdge);
-    f.wM = perpLeft(f.uM);
-    f.wH = perpLeft(f.uH);
-    const double mu = extent(mother, f.uM), mw = extent(mother, f.wM);
-    const double hu = extent(host, f.uH), hw = extent(host, f.wH);
-    // An axis along which the mother sketch is flat keeps the sketch's scale (1),
-    // as in the thesis's tool.
-    f.su = mu > kEps ? hu / mu : 1;
-    f.sw = mw > kEps ? hw / mw : 1;
+    const double delta = direction(host, directedEdge) - direction(mother, directedEdge);
+    f.cosA = std::cos(delta);
+    f.sinA = std::sin(delta);
+    std::vector<vec2> turned;
+    for (const auto& p : mother) turned.push_back({f.cosA * p.x - f.sinA * p.y, f.sinA * p.x + f.cosA * p.y});
+    const Extent m = extents(turned), h = extents(host);
+    // An extent below 1e-9 of the larger one is rounding noise: no extent.
+    const double tiny = 1e-9 * std::max({m.x, m.y, kEps});
+    f.sx = m.x > tiny ? h.x / m.x : 1;
+    f.sy = m.y > tiny ? h.y / m.y : 1;
     return f;
 }
 

@@ -387,3 +387,23 @@ TEST_CASE("a grammar without a limit stops at the default 10 000 steps", "[run][
     CHECK(r.run.derivation.steps == interp::kDefaultStepLimit);
     CHECK(r.run.hitDefaultLimit);
 }
+
+TEST_CASE("a kept edge moved away from a deleted node survives", "[run][mapping]") {
+    // Regression: the edge went with its old end node, and the next deletion hung.
+    auto r = derive("node P;\nedge E;\naxiom { a: P at (0, 0); x: P at (1, 0); a -[E]- x; }\nlimit 2;\n"
+                    "rule R { match { a: P; x: P where x.age == 0 and a.id < x.id; e: a -[E]- x; }\n"
+                    "         produce { n: P at (2, 0); e: a -[E]- n; } }\n"
+                    "rule Drop { match { n: P where n.age == 1; } produce { } }\n");
+    const auto& g = r.run.graph();
+    CHECK(r.run.derivation.steps == 2);
+    CHECK(g.nodeCount() == 1);   // a stays; x and then n were deleted
+    CHECK(g.edgeCount() == 0);   // e went with n, its new end
+}
+
+TEST_CASE("automatic placement on a slanted match scales uniformly, as the thesis's tool", "[run][placement]") {
+    // Sketch: a→b drawn (0,0)→(0,5), a node drawn 1 to the right of b; host a→b (0,0)→(1,1).
+    auto r = derive("node P;\nedge S directed;\naxiom { a: P at (0, 0); b: P at (1, 1); a -[S]-> b; }\nlimit 1;\n"
+                    "rule R { match { a: P @ (0, 0); b: P @ (0, 5); s: a -[S]-> b; } produce { a; b; s; n: P @ (1, 5); } }\n");
+    CHECK(r.run.graph().pos(2).x == Approx(1.2));
+    CHECK(r.run.graph().pos(2).y == Approx(0.8));
+}

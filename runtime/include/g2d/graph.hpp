@@ -53,6 +53,10 @@ public:
     const Value& nodeAttr(NodeId n, int i) const { return nodes_[n].attrs[i]; }
     void setNodeAttr(NodeId n, int i, Value v) { nodes_[n].attrs[i] = std::move(v); }
     const std::vector<StyleOverride>& nodeStyle(NodeId n) const { return nodes_[n].style; }
+    // A back end's own handle for the element's attributes (compiled grammars
+    // keep them in typed arrays); kNoId until set.
+    std::uint32_t nodeSlot(NodeId n) const { return nodes_[n].slot; }
+    void setNodeSlot(NodeId n, std::uint32_t slot) { nodes_[n].slot = slot; }
     void setNodeStyle(NodeId n, const std::string& prop, Value v) { setStyle(nodes_[n].style, prop, std::move(v)); }
 
     int edgeKind(EdgeId e) const { return edges_[e].kind; }
@@ -62,6 +66,8 @@ public:
     const Value& edgeAttr(EdgeId e, int i) const { return edges_[e].attrs[i]; }
     void setEdgeAttr(EdgeId e, int i, Value v) { edges_[e].attrs[i] = std::move(v); }
     const std::vector<StyleOverride>& edgeStyle(EdgeId e) const { return edges_[e].style; }
+    std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
+    void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
     void setEdgeStyle(EdgeId e, const std::string& prop, Value v) { setStyle(edges_[e].style, prop, std::move(v)); }
 
     // Live nodes of one kind, or of every kind; order is deterministic.
@@ -82,6 +88,7 @@ private:
         vec2 pos{0, 0};
         long long age = 0;
         std::uint32_t slotInKind = 0, slotInAll = 0;
+        std::uint32_t slot = kNoId;
         std::vector<EdgeId> incident;
         std::vector<Value> attrs;
         std::vector<StyleOverride> style;
@@ -90,6 +97,7 @@ private:
         int kind = -1;
         bool alive = true;
         NodeId src = kNoId, dst = kNoId;
+        std::uint32_t slot = kNoId;
         long long age = 0;
         std::vector<Value> attrs;
         std::vector<StyleOverride> style;

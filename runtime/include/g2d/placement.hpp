@@ -1,24 +1,24 @@
 #pragma once
-// Automatic placement of new nodes (thesis §5.3). A daughter is drawn in the
-// same sketch coordinates as its mother; a new node's sketch position is
-// carried into the host by the transform that takes the mother's sketch onto
-// the matched host nodes:
+// Automatic placement of new nodes (thesis §5.3), as the thesis's tool
+// computes it. A daughter is drawn in the same sketch coordinates as its
+// mother; a new node's sketch position is carried into the host:
 //
 //   M, H: the sketch and host positions of all matched nodes (index-aligned)
 //   R: the reference nodes: the kept ones (all matched nodes if none is kept)
 //   cD = mean of R's daughter sketches, cH = mean of R's host positions
-//   u_M, u_H: direction of M and of H — along the first directed mother edge
-//       if there is one; else the total-least-squares line through the points
-//       (principal axis of the covariance), taken pointing right (angle in
-//       (-90°, 90°]) as the thesis's tool did; a point set with no principal
-//       axis (isotropic: a square, a diamond) lies along the x axis;
-//       w = perp_left(u)
-//   s_u = extent(H along u_H) / extent(M along u_M), s_w likewise along w
-//       (extent = max − min of the projections); 1 where M's extent is zero
-//   place(d) = cH + s_u·⟨d − cD, u_M⟩·u_H + s_w·⟨d − cD, w_M⟩·w_H
+//   θ_M, θ_H: the direction of M and of H — of the first directed mother edge
+//       if there is one; else of the total-least-squares line through the
+//       points, taken pointing right (angle in (-90°, 90°]); 0 for a point set
+//       with no principal axis (a square, a diamond, one point)
+//   Δ = θ_H − θ_M, and Rot the rotation by Δ
+//   s_x = x-extent(H) / x-extent(Rot·M), s_y likewise (extent = max − min);
+//       1 where Rot·M has no extent (1e-9 of the larger one)
+//   place(d) = cH + (s_x, s_y) ⊙ Rot·(d − cD)
 //
-// So the new nodes follow the match's translation, rotation and per-axis
-// stretch (Fig. 5.3: a production that doubles an edge doubles any edge).
+// So new nodes follow the match's translation, rotation and stretch (Fig.
+// 5.3: a production that doubles an edge doubles any edge); the stretch is
+// per world axis, as in the tool: across a horizontal line it is 1, along a
+// slanted one it is uniform.
 #include <optional>
 #include <utility>
 #include <vector>
@@ -29,8 +29,8 @@ namespace g2d::rt {
 
 struct PlacementFrame {
     vec2 cD{0, 0}, cH{0, 0};
-    vec2 uM{1, 0}, wM{0, 1}, uH{1, 0}, wH{0, 1};
-    double su = 1, sw = 1;
+    double cosA = 1, sinA = 0;    // the rotation Δ
+    double sx = 1, sy = 1;
     vec2 place(vec2 sketch) const;
 };
 

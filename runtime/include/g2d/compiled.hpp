@@ -1,0 +1,79 @@
+#pragma once
+// What generated grammar code includes: the runtime's public headers and a
+// few helpers that keep generated code short. Generated code calls the same
+// runtime functions as the interpreter, so both compute the same bits.
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "g2d/derivation.hpp"
+#include "g2d/grammar_run.hpp"
+#include "g2d/graph.hpp"
+#include "g2d/json_writer.hpp"
+#include "g2d/ops.hpp"
+#include "g2d/placement.hpp"
+#include "g2d/rng.hpp"
+#include "g2d/run_driver.hpp"
+#include "g2d/svg_writer.hpp"
+#include "g2d/value.hpp"
+#include "g2d/vec_math.hpp"
+
+namespace g2d::rt::compiled {
+
+// A run-time error at a known place of the grammar's source (an index into
+// the generated program's table of places).
+class PlacedError : public std::runtime_error {
+public:
+    PlacedError(int place, const std::string& message) : std::runtime_error(message), place(place) {}
+    int place;
+};
+
+struct Place {
+    const char* file;
+    unsigned line, col, endCol;
+    const char* lineText;
+};
+
+inline std::string str(long long v) { return std::to_string(v); }
+inline std::string str(double v) { return formatNumber(v); }
+inline std::string str(bool v) { return v ? "true" : "false"; }
+inline std::string str(const std::string& v) { return v; }
+inline std::string str(vec2 v) { return toString(Value{v}); }
+
+inline FormatHole hole(long long v) { return FormatHole{str(v), static_cast<double>(v), 0, 1}; }
+inline FormatHole hole(double v) { return FormatHole{str(v), v, 0, 1}; }
+inline FormatHole hole(bool v) { return FormatHole{str(v), 0, 0, 0}; }
+inline FormatHole hole(const std::string& v) { return FormatHole{v, 0, 0, 0}; }
+inline FormatHole hole(vec2 v) { return FormatHole{str(v), v.x, v.y, 2}; }
+
+inline double toFloat(long long v) { return static_cast<double>(v); }
+inline double toFloat(double v) { return v; }
+inline double toFloat(bool v) { return v ? 1.0 : 0.0; }
+inline double toFloat(const std::string& v) { return parseFloat(v); }
+inline long long toInt(long long v) { return v; }
+inline long long toInt(double v) { return floatToInt(v); }
+inline long long toInt(bool v) { return v ? 1 : 0; }
+inline long long toInt(const std::string& v) { return parseInt(v); }
+
+// Typed attribute arrays: an element's slot indexes its kind's array.
+template <class T>
+class Store {
+public:
+    std::uint32_t add(T value) {
+        items_.push_back(std::move(value));
+        return static_cast<std::uint32_t>(items_.size() - 1);
+    }
+    T& operator[](std::uint32_t slot) { return items_[slot]; }
+    const T& operator[](std::uint32_t slot) const { return items_[slot]; }
+    void clear() { items_.clear(); }
+
+private:
+    std::vector<T> items_;
+};
+
+}  // namespace g2d::rt::compiled
