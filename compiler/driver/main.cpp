@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "driver/check_command.hpp"
+#include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,21 @@ int main(int argc, char** argv) {
     run->add_option("--steps", steps, "Global step limit (overrides the grammar's)");
     run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");
 
+    auto* emitCpp = app.add_subcommand("emit-cpp", "Write the grammar as one C++ translation unit");
+    g2d::BuildOptions emitOptions;
+    emitCpp->add_option("FILE", emitOptions.file, ".g2d grammar")->required();
+    emitCpp->add_option("-o,--output", emitOptions.output, "The .cpp to write")->required();
+
+    auto* build = app.add_subcommand("build", "Compile the grammar into a native program (same output as g2d run)");
+    g2d::BuildOptions buildOptions;
+    std::string keepCpp, cxx;
+    build->add_option("FILE", buildOptions.file, ".g2d grammar")->required();
+    build->add_option("-o,--output", buildOptions.output, "The executable to write")->required();
+    build->add_option("--cxx", cxx, "C++ compiler (default: $CXX, then c++)");
+    build->add_option("-O", buildOptions.optimize, "Optimisation level: 0, 1, 2 (default), 3, s, g");
+    build->add_option("--keep-cpp", keepCpp, "Also write the generated C++ to this file");
+    build->add_flag("-v,--verbose", buildOptions.verbose, "Print the compiler command");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -48,6 +64,12 @@ int main(int argc, char** argv) {
         return g2d::runCheck(checkFiles,
                              format == "json" ? g2d::DiagnosticsFormat::Json : g2d::DiagnosticsFormat::Text,
                              werror);
+    }
+    if (emitCpp->parsed()) return g2d::runEmitCpp(emitOptions);
+    if (build->parsed()) {
+        if (!keepCpp.empty()) buildOptions.keepCpp = keepCpp;
+        if (!cxx.empty()) buildOptions.cxx = cxx;
+        return g2d::runBuild(buildOptions);
     }
     if (run->parsed()) {
         if (!svgOut.empty()) runOptions.svgOut = svgOut;

@@ -1,0 +1,303 @@
+#include "emit/cpp_expr.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <climits>
+#include <cstdio>
+
+namespace g2d::emit {
+
+using ir::Builtin;
+using ir::ExprOp;
+using ir::TypeKind;
+
+int Places::add(const Span& s) {
+    spans_.push_back(s);
+    return static_cast<int>(spans_.size() - 1);
+}
+
+std::string cppType(const ir::Type& t) {
+    switch (t.kind) {
+    case TypeKind::Int: return "long long";
+    case TypeKind::Float: return "double";
+    case TypeKind::Bool: return "bool";
+    case TypeKind::String: return "std::string";
+    case TypeKind::Vec2: return "vec2";
+    case TypeKind::Enum: return "int";
+    case TypeKind::Void: return "void";
+    }
+    return "void";
+}
+
+std::string cppString(const std::string& s) {
+    std::string out = "std::string(\"";
+    for (unsigned char c : s) {
+        if (c == '"' || c == '\\') { out += '\\'; out += static_cast<char>(c); }
+        else if (c == '\n') out += "\\n";
+        else if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else if (c < 0x20 || c == '?') {  // `?` avoids trigraph-like sequences
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\%03o", c);
+            out += buf;
+        } else out += static_cast<char>(c);
+    }
+    return out + "\", " + std::to_string(s.size()) + ")";
+}
+
+namespace {
+
+std::string doubleLiteral(double x) {
+    char buf[64];
+    auto res = std::to_chars(buf, buf + sizeof buf, x);
+    std::string s(buf, res.ptr);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // keep it a double
+    return x < 0 || (x == 0 && std::signbit(x)) ? "(" + s + ")" : s;
+}
+
+}  // namespace
+
+std::string cppLiteral(const ir::Value& v, const ir::Type& t) {
+    if (auto* i = std::get_if<long long>(&v)) {
+        if (*i == LLONG_MIN) return "(-9223372036854775807LL - 1)";
+        return *i < 0 ? "(" + std::to_string(*i) + "LL)" : std::to_string(*i) + "LL";
+    }
+    if (auto* d = std::get_if<double>(&v)) return doubleLiteral(*d);
+    if (auto* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
+    if (auto* s = std::get_if<std::string>(&v)) return cppString(*s);
+    if (auto* p = std::get_if<ir::Vec2>(&v)) return "vec2(" + doubleLiteral(p->x) + ", " + doubleLiteral(p->y) + ")";
+    (void)t;
+    return std::to_string(std::get<ir::EnumValue>(v).index);
+}
+
+std::string ExprGen::attrAccess(int kind, const std::string& id, bool isEdge, int attr, const std::string& graph) const {
+    return "store_" + std::to_string(kind) + "[" + graph + (isEdge ? ".edgeSlot(" : ".nodeSlot(") + id + ")].a" +
+           std::to_string(attr);
+    (void)prog_;
+}
+
+std::string ExprGen::place(const ir::Expr& e, std::string& out, const std::string& indent) {
+    out += indent + "loc_ = " + std::to_string(places_.add(e.span)) + ";\n";
+    return "";
+}
+
+std::string ExprGen::fact(const ir::Expr& e, const std::string& id, bool isEdge, const std::string& g) {
+    if (isEdge) return e.fact == ir::ElemFact::Age ? g + ".edgeAge(" + id + ")" : "static_cast<long long>(" + id + ")";
+    switch (e.fact) {
+    case ir::ElemFact::Pos: return g + ".pos(" + id + ")";
+    case ir::ElemFact::Age: return g + ".nodeAge(" + id + ")";
+    case ir::ElemFact::Id: return "static_cast<long long>(" + id + ")";
+    case ir::ElemFact::Degree: return "static_cast<long long>(" + g + ".degree(" + id + "))";
+    case ir::ElemFact::InDegree: return "static_cast<long long>(" + g + ".inDegree(" + id + "))";
+    case ir::ElemFact::OutDegree: return "static_cast<long long>(" + g + ".outDegree(" + id + "))";
+    }
+    return "0LL";
+}
+
+std::string ExprGen::display(const std::string& value, const ir::Type& t) {
+    if (t.kind == TypeKind::Enum) return "std::string(enum_names_" + std::to_string(t.enumId) + "[" + value + "])";
+    return "rtc::str(" + value + ")";
+}
+
+std::string ExprGen::gen(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& in) {
+    auto bind = [&](const std::string& expr) {
+        const std::string t = temp();
+        out += in + "const " + cppType(e.type) + " " + t + " = " + expr + ";\n";
+        return t;
+    };
+    switch (e.op) {
+    case ExprOp::Literal: return cppLiteral(e.value, e.type);
+    case ExprOp::Param: return "P_.p" + std::to_string(e.index);
+    case ExprOp::Const: return "C_.c" + std::to_string(e.index);
+    case ExprOp::Local: return "L" + std::to_string(e.index);
+    case ExprOp::FnArg: return "a" + std::to_string(e.index);
+    case ExprOp::Attr: {
+        const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
+        const std::string id = isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index);
+        const int kind = isEdge ? ctx.edgeKind(e.elem.index) : ctx.nodeKind(e.elem.index);
+        return bind(attrAccess(kind, id, isEdge, e.index, ctx.graph));
+    }
+    case ExprOp::SelfAttr: return bind(attrAccess(ctx.selfKind, ctx.self, ctx.selfIsEdge, e.index, ctx.graph));
+    case ExprOp::Fact: {
+        const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
+        return bind(fact(e, isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index), isEdge, ctx.graph));
+    }
+    case ExprOp::SelfFact: return bind(fact(e, ctx.self, ctx.selfIsEdge, ctx.graph));
+    case ExprOp::Placed: return bind("*placed[" + std::to_string(e.index) + "]");
+    case ExprOp::VecX: return bind("(" + gen(e.args[0], ctx, out, in) + ").x");
+    case ExprOp::VecY: return bind("(" + gen(e.args[0], ctx, out, in) + ").y");
+    case ExprOp::Neg: {
+        const std::string v = gen(e.args[0], ctx, out, in);
+        if (e.type.kind == TypeKind::Int) {
+            place(e, out, in);
+            return bind("rt::negInt(" + v + ")");
+        }
+        return bind("-" + v);
+    }
+    case ExprOp::Not: return bind("!" + gen(e.args[0], ctx, out, in));
+    case ExprOp::And:
+    case ExprOp::Or: {
+        const std::string l = gen(e.args[0], ctx, out, in);
+        const std::string t = temp();
+        out += in + "bool " + t + " = " + l + ";\n";
+        out += in + "if (" + (e.op == ExprOp::And ? "" : "!") + t + ") {\n";
+        const std::string r = gen(e.args[1], ctx, out, in + "    ");
+        out += in + "    " + t + " = " + r + ";\n" + in + "}\n";
+        return t;
+    }
+    case ExprOp::Cond: {
+        const std::string c = gen(e.args[0], ctx, out, in);
+        const std::string t = temp();
+        out += in + cppType(e.type) + " " + t + "{};\n";
+        out += in + "if (" + c + ") {\n";
+        const std::string a = gen(e.args[1], ctx, out, in + "    ");
+        out += in + "    " + t + " = " + a + ";\n" + in + "} else {\n";
+        const std::string b = gen(e.args[2], ctx, out, in + "    ");
+        out += in + "    " + t + " = " + b + ";\n" + in + "}\n";
+        return t;
+    }
+    case ExprOp::Call: return call(e, ctx, out, in);
+    case ExprOp::CallFn: {
+        std::vector<std::string> args;
+        for (const auto& a : e.args) args.push_back(gen(a, ctx, out, in));
+        std::string c = "fn_" + std::to_string(e.index) + "(";
+        for (std::size_t i = 0; i < args.size(); ++i) c += (i ? ", " : "") + args[i];
+        return bind(c + ")");
+    }
+    default: return binary(e, ctx, out, in);
+    }
+}
+
+std::string ExprGen::binary(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& in) {
+    const std::string l = gen(e.args[0], ctx, out, in);
+    const std::string r = gen(e.args[1], ctx, out, in);
+    const TypeKind lk = e.args[0].type.kind, rk = e.args[1].type.kind;
+    auto bind = [&](const std::string& expr, bool checked) {
+        if (checked) place(e, out, in);
+        const std::string t = temp();
+        out += in + "const " + cppType(e.type) + " " + t + " = " + expr + ";\n";
+        return t;
+    };
+    auto cmp = [&](const char* op) { return bind("(" + l + " " + op + " " + r + ")", false); };
+    switch (e.op) {
+    case ExprOp::Lt: return cmp("<");
+    case ExprOp::Le: return cmp("<=");
+    case ExprOp::Gt: return cmp(">");
+    case ExprOp::Ge: return cmp(">=");
+    case ExprOp::Eq: return cmp("==");
+    case ExprOp::Ne: return cmp("!=");
+    default: break;
+    }
+    if (lk == TypeKind::Int && rk == TypeKind::Int) {
+        const char* fn = e.op == ExprOp::Add ? "addInt" : e.op == ExprOp::Sub ? "subInt" : e.op == ExprOp::Mul ? "mulInt" : "modInt";
+        return bind(std::string(fn) + "(" + l + ", " + r + ")", true);
+    }
+    if (lk == TypeKind::Float && rk == TypeKind::Float) {
+        switch (e.op) {
+        case ExprOp::Add: return bind("rt::finite(" + l + " + " + r + ")", true);
+        case ExprOp::Sub: return bind("rt::finite(" + l + " - " + r + ")", true);
+        case ExprOp::Mul: return bind("rt::finite(" + l + " * " + r + ")", true);
+        case ExprOp::Div: return bind("rt::divFloat(" + l + ", " + r + ")", true);
+        default: return bind("rt::modFloat(" + l + ", " + r + ")", true);
+        }
+    }
+    if (lk == TypeKind::Vec2 && rk == TypeKind::Vec2)
+        return bind("rt::finite(" + l + (e.op == ExprOp::Add ? " + " : " - ") + r + ")", true);
+    if (lk == TypeKind::Vec2 && rk == TypeKind::Float)
+        return e.op == ExprOp::Mul ? bind("rt::finite(" + l + " * " + r + ")", true) : bind("rt::divVec(" + l + ", " + r + ")", true);
+    if (lk == TypeKind::Float && rk == TypeKind::Vec2) return bind("rt::finite(" + l + " * " + r + ")", true);
+    return bind(l + " + " + r, false);  // strings
+}
+
+std::string ExprGen::call(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& in) {
+    // Arguments first, left to right, as the interpreter evaluates them.
+    std::vector<std::string> a;
+    for (const auto& arg : e.args) a.push_back(gen(arg, ctx, out, in));
+    const bool isInt = e.type.kind == TypeKind::Int;
+    auto bind = [&](const std::string& expr, bool checked) {
+        if (checked) place(e, out, in);
+        const std::string t = temp();
+        out += in + "const " + cppType(e.type) + " " + t + " = " + expr + ";\n";
+        return t;
+    };
+    auto f1 = [&](const char* fn) { return bind(std::string("rt::finite(std::") + fn + "(" + a[0] + "))", true); };
+    auto f2 = [&](const char* fn) { return bind(std::string("rt::finite(std::") + fn + "(" + a[0] + ", " + a[1] + "))", true); };
+    switch (e.builtin) {
+    case Builtin::Sin: return f1("sin");
+    case Builtin::Cos: return f1("cos");
+    case Builtin::Tan: return f1("tan");
+    case Builtin::Asin: return f1("asin");
+    case Builtin::Acos: return f1("acos");
+    case Builtin::Atan: return f1("atan");
+    case Builtin::Sqrt: return f1("sqrt");
+    case Builtin::Exp: return f1("exp");
+    case Builtin::Log: return f1("log");
+    case Builtin::Atan2: return f2("atan2");
+    case Builtin::Pow: return f2("pow");
+    case Builtin::Hypot: return f2("hypot");
+    case Builtin::Floor: return bind("rt::floorToInt(" + a[0] + ")", true);
+    case Builtin::Ceil: return bind("rt::ceilToInt(" + a[0] + ")", true);
+    case Builtin::Round: return bind("rt::roundToInt(" + a[0] + ")", true);
+    case Builtin::Radians: return bind("rt::finite(" + a[0] + " * 3.141592653589793 / 180.0)", true);
+    case Builtin::Degrees: return bind("rt::finite(" + a[0] + " * 180.0 / 3.141592653589793)", true);
+    case Builtin::Abs: return isInt ? bind("rt::absInt(" + a[0] + ")", true) : bind("std::fabs(" + a[0] + ")", false);
+    case Builtin::Sign:
+        return bind(std::string(isInt ? "static_cast<long long>" : "static_cast<double>") + "((" + a[0] + " > 0) - (" +
+                        a[0] + " < 0))", false);
+    case Builtin::Clamp: return bind("std::min(std::max(" + a[0] + ", " + a[1] + "), " + a[2] + ")", false);
+    case Builtin::Min:
+    case Builtin::Max: {
+        const std::string t = temp();
+        out += in + cppType(e.type) + " " + t + " = " + a[0] + ";\n";
+        for (std::size_t i = 1; i < a.size(); ++i)
+            out += in + "if (" + a[i] + (e.builtin == Builtin::Min ? " < " : " > ") + t + ") " + t + " = " + a[i] + ";\n";
+        return t;
+    }
+    case Builtin::MakeVec2: return bind("vec2(" + a[0] + ", " + a[1] + ")", false);
+    case Builtin::Dot: return bind("rt::finite(rt::dot(" + a[0] + ", " + a[1] + "))", true);
+    case Builtin::Cross: return bind("rt::finite(rt::cross(" + a[0] + ", " + a[1] + "))", true);
+    case Builtin::Length: return bind("rt::finite(rt::length(" + a[0] + "))", true);
+    case Builtin::Distance: return bind("rt::finite(rt::distance(" + a[0] + ", " + a[1] + "))", true);
+    case Builtin::Normalize: return bind("rt::normalize(" + a[0] + ")", false);
+    case Builtin::PerpLeft: return bind("rt::perpLeft(" + a[0] + ")", false);
+    case Builtin::PerpRight: return bind("rt::perpRight(" + a[0] + ")", false);
+    case Builtin::Rotate: return bind("rt::finite(rt::rotate(" + a[0] + ", " + a[1] + "))", true);
+    case Builtin::RotateAround: return bind("rt::finite(rt::rotateAround(" + a[0] + ", " + a[1] + ", " + a[2] + "))", true);
+    case Builtin::Angle: return bind("rt::angle(" + a[0] + ")", false);
+    case Builtin::AngleBetween: return bind("rt::angleBetween(" + a[0] + ", " + a[1] + ")", false);
+    case Builtin::Lerp: return bind("rt::finite(rt::lerp(" + a[0] + ", " + a[1] + ", " + a[2] + "))", true);
+    case Builtin::ToInt: return bind("rtc::toInt(" + a[0] + ")", true);
+    case Builtin::ToFloat: return bind("rtc::toFloat(" + a[0] + ")", true);
+    case Builtin::ToStr: return bind(display(a[0], e.args[0].type), false);
+    case Builtin::Format: {
+        const std::string h = temp();
+        out += in + "const FormatHole " + h + "[] = {";
+        for (std::size_t i = 1; i < a.size(); ++i) {
+            if (i > 1) out += ", ";
+            const auto& t = e.args[i].type;
+            out += t.kind == TypeKind::Enum ? "FormatHole{" + display(a[i], t) + ", 0, 0, 0}" : "rtc::hole(" + a[i] + ")";
+        }
+        if (a.size() == 1) out += "FormatHole{}";
+        out += "};\n";
+        return bind("rt::formatTemplate(" + a[0] + ", " + h + ", " + std::to_string(a.size() - 1) + ")", true);
+    }
+    case Builtin::Random: return bind("rng_->unit()", false);
+    case Builtin::Uniform: return bind("rng_->uniform(" + a[0] + ", " + a[1] + ")", false);
+    case Builtin::RandInt:
+        place(e, out, in);
+        out += in + "if (" + a[0] + " > " + a[1] + ") throw OpError(\"randint(\" + std::to_string(" + a[0] +
+               ") + \", \" + std::to_string(" + a[1] + ") + \"): empty range\");\n";
+        return bind("rng_->range(" + a[0] + ", " + a[1] + ")", false);
+    case Builtin::Choice: {
+        const std::string arr = temp();
+        out += in + "const " + cppType(e.type) + " " + arr + "[] = {";
+        for (std::size_t i = 0; i < a.size(); ++i) out += (i ? ", " : "") + a[i];
+        out += "};\n";
+        return bind(arr + "[rng_->below(" + std::to_string(a.size()) + ")]", false);
+    }
+    case Builtin::Normal: return bind("rng_->normal(" + a[0] + ", " + a[1] + ")", false);
+    }
+    return "0";
+}
+
+}  // namespace g2d::emit

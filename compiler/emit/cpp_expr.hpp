@@ -1,0 +1,63 @@
+#pragma once
+// Generates C++ for IR expressions. Every subexpression lands in its own
+// temporary, in evaluation order, so random draws and errors happen exactly
+// as in the interpreter (C++ leaves the order of operands unspecified).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ir/ir.hpp"
+
+namespace g2d::emit {
+
+// The source places of run-time errors, numbered for the generated table.
+class Places {
+public:
+    int add(const Span& s);
+    const std::vector<Span>& all() const { return spans_; }
+
+private:
+    std::vector<Span> spans_;
+};
+
+std::string cppType(const ir::Type& t);
+std::string cppLiteral(const ir::Value& v, const ir::Type& t);
+std::string cppString(const std::string& s);
+
+// How an expression reaches what it reads; set per context.
+struct ExprContext {
+    std::function<std::string(int)> node;       // host id of pattern node i
+    std::function<std::string(int)> edge;       // host id of pattern edge i
+    std::function<int(int)> nodeKind;           // kind of pattern node i
+    std::function<int(int)> edgeKind;           // kind of pattern edge i
+    std::string self;                           // host id of the styled element
+    bool selfIsEdge = false;
+    int selfKind = -1;
+    std::string graph = "g";                    // the graph read
+};
+
+class ExprGen {
+public:
+    ExprGen(const ir::Program& prog, Places& places) : prog_(prog), places_(places) {}
+
+    // Appends statements computing `e` to `out` (each line prefixed by
+    // `indent`) and returns the C++ expression that names its value.
+    std::string gen(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& indent);
+
+    // C++ that reads attribute `attr` of a node or edge of kind `kind`.
+    std::string attrAccess(int kind, const std::string& id, bool isEdge, int attr, const std::string& graph) const;
+
+private:
+    std::string temp() { return "t" + std::to_string(next_++); }
+    std::string place(const ir::Expr& e, std::string& out, const std::string& indent);
+    std::string call(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& indent);
+    std::string binary(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& indent);
+    std::string fact(const ir::Expr& e, const std::string& id, bool isEdge, const std::string& graph);
+    std::string display(const std::string& value, const ir::Type& t);
+
+    const ir::Program& prog_;
+    Places& places_;
+    int next_ = 0;
+};
+
+}  // namespace g2d::emit

@@ -1,0 +1,408 @@
+#include "emit/cpp_rules.hpp"
+
+#include <algorithm>
+
+namespace g2d::emit {
+
+using ir::PlanStep;
+
+namespace {
+
+std::string str(int i) { return std::to_string(i); }
+
+class RuleEmitter {
+public:
+    RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, ExprGen& gen, Places& places)
+        : prog_(prog), r_(r), ri_(str(index)), gen_(gen), places_(places) {}
+
+    std::string emit() {
+        std::string out;
+        out += matcher();
+        for (std::size_t k = 0; k < r_.nacs.size(); ++k) out += nac(static_cast<int>(k));
+        for (std::size_t d = 0; d < r_.daughters.size(); ++d) {
+            out += writeSet(static_cast<int>(d));
+            out += prepare(static_cast<int>(d));
+        }
+        return out;
+    }
+
+private:
+    int nodeKind(int i, const ir::NegativeCondition* nac) const {
+        return i < static_cast<int>(r_.nodes.size()) ? r_.nodes[i].kind : nac->nodes[i - nac->outerNodes].kind;
+    }
+    const ir::PatternEdge& edgeOf(int i, const ir::NegativeCondition* nac) const {
+        return i < static_cast<int>(r_.edges.size()) ? r_.edges[i] : nac->edges[i - nac->outerEdges];
+    }
+    ExprContext matchContext(const ir::NegativeCondition* nac) const {
+        ExprContext c;
+        c.node = [](int i) { return "n[" + str(i) + "]"; };
+        c.edge = [](int i) { return "e[" + str(i) + "]"; };
+        c.nodeKind = [this, nac](int i) { return nodeKind(i, nac); };
+        c.edgeKind = [this, nac](int i) { return edgeOf(i, nac).kind; };
+        return c;
+    }
+
+    // The `ordered` test for node `k` against the nodes bound before it.
+    std::string orderedTest(int k, const std::vector<int>& bound) const {
+        if (!r_.ordered || k >= static_cast<int>(r_.nodes.size())) return "";
+        std::string test;
+        const auto& si = *r_.nodes[k].sketch;
+        for (int j : bound) {
+            if (j >= static_cast<int>(r_.nodes.size())) continue;
+            const auto& sj = *r_.nodes[j].sketch;
+            auto add = [&](bool cond, const std::string& t) {
+                if (cond) test += (test.empty() ? "" : " && ") + t;
+            };
+            const std::string hi = "g.pos(n[" + str(k) + "])", hj = "g.pos(n[" + str(j) + "])";
+            add(si.x < sj.x, "!(" + hi + ".x > " + hj + ".x)");
+            add(si.x > sj.x, "!(" + hi + ".x < " + hj + ".x)");
+            add(si.y < sj.y, "!(" + hi + ".y > " + hj + ".y)");
+            add(si.y > sj.y, "!(" + hi + ".y < " + hj + ".y)");
+        }
+        return test;
+    }
+
+    // Nested blocks for plan[i..]; `onComplete` is the innermost code.
+    void steps(const std::vector<PlanStep>& plan, std::size_t i, const ir::NegativeCondition* nac,
+               std::vector<int> boundNodes, std::vector<int> boundEdges, const std::string& onComplete,
+               std::string& out, const std::string& in) {
+        if (i == plan.size()) {
+            out += onComplete;
+            return;
+        }
+        const PlanStep& s = plan[i];
+        const std::string next = in + "    ";
+        auto notUsedNode = [&](const std::string& h) {
+            std::string t;
+            for (int b : boundNodes) t += " && " + h + " != n[" + str(b) + "]";
+            return t;
+        };
+        auto notUsedEdge = [&](const std::string& h) {
+            std::string t;
+            for (int b : boundEdges) t += " && " + h + " != e[" + str(b) + "]";
+            return t;
+        };
+        switch (s.op) {
+        case PlanStep::Op::Check: {
+            const auto& cond = nac ? nac->conditions[s.condition] : r_.conditions[s.condition];
+            out += in + "{\n";
+            const std::string v = gen_.gen(cond.expr, matchContext(nac), out, next);
+            out += next + "if (" + v + ") {\n";
+            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, next + "    ");
+            out += next + "}\n" + in + "}\n";
+            return;
+        }
+        case PlanStep::Op::ScanNodes: {
+            const int kind = nodeKind(s.node, nac);
+            const std::string list = kind >= 0 ? "g.nodesOfKind(" + str(kind) + ")" : "g.allNodes()";
+            const std::string c = "c" + str(static_cast<int>(i));
+            out += in + "{\n" + next + "const auto& l" + str(static_cast<int>(i)) + " = " + list + ";\n";
+            out += next + "for (std::size_t " + c + " = 0; " + c + " < l" + str(static_cast<int>(i)) + ".size(); ++" + c + ") {\n";
+            const std::string body = next + "    ";
+            out += body + "n[" + str(s.node) + "] = l" + str(static_cast<int>(i)) + "[" + c + "];\n";
+            std::string test = "true" + notUsedNode("n[" + str(s.node) + "]");
+            const std::string ord = orderedTest(s.node, boundNodes);
+            if (!ord.empty()) test += " && " + ord;
+            boundNodes.push_back(s.node);
+            out += body + "if (" + test + ") {\n";
+            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
+            out += body + "}\n" + next + "}\n" + in + "}\n";
+            return;
+        }
+        case PlanStep::Op::ExtendEdge: {
+            const auto& pe = edgeOf(s.edge, nac);
+            const bool directed = prog_.kinds[pe.kind].directed;
+            const int farKind = nodeKind(s.node, nac);
+            const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
+            const std::string from = "n[" + str(s.from) + "]";
+            out += in + "{\n" + next + "const auto& " + l + " = g.incident(" + from + ");\n";
+            out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
+            const std::string body = next + "    ";
+            const std::string ed = "e[" + str(s.edge) + "]", nd = "n[" + str(s.node) + "]";
+            out += body + ed + " = " + l + "[" + c + "];\n";
+            const std::string used = notUsedEdge(ed);
+            out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
+                   ") continue;\n";
+            if (directed) {
+                out += body + "if (" + std::string(s.fromIsSource ? "g.source(" : "g.target(") + ed + ") != " + from + ") continue;\n";
+                out += body + nd + " = " + (s.fromIsSource ? "g.target(" : "g.source(") + ed + ");\n";
+            } else {
+                out += body + nd + " = g.source(" + ed + ") == " + from + " ? g.target(" + ed + ") : g.source(" + ed + ");\n";
+            }
+            std::string test = farKind >= 0 ? "g.nodeKind(" + nd + ") == " + str(farKind) : "true";
+            test += notUsedNode(nd);
+            const std::string ord = orderedTest(s.node, boundNodes);
+            if (!ord.empty()) test += " && " + ord;
+            boundNodes.push_back(s.node);
+            boundEdges.push_back(s.edge);
+            out += body + "if (" + test + ") {\n";
+            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
+            out += body + "}\n" + next + "}\n" + in + "}\n";
+            return;
+        }
+        case PlanStep::Op::ConnectEdge: {
+            const auto& pe = edgeOf(s.edge, nac);
+            const bool directed = prog_.kinds[pe.kind].directed;
+            const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
+            const std::string hs = "n[" + str(s.from) + "]", hd = "n[" + str(s.node) + "]";
+            out += in + "{\n" + next + "const auto& " + l + " = g.incident(" + hs + ");\n";
+            out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
+            const std::string body = next + "    ";
+            const std::string ed = "e[" + str(s.edge) + "]";
+            out += body + ed + " = " + l + "[" + c + "];\n";
+            std::string used = notUsedEdge(ed);
+            out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
+                   ") continue;\n";
+            const std::string a = "g.source(" + ed + ")", b = "g.target(" + ed + ")";
+            const std::string fits = directed ? "(" + a + " == " + hs + " && " + b + " == " + hd + ")"
+                                              : "((" + a + " == " + hs + " && " + b + " == " + hd + ") || (" + a +
+                                                    " == " + hd + " && " + b + " == " + hs + "))";
+            out += body + "if (!" + fits + ") continue;\n";
+            boundEdges.push_back(s.edge);
+            out += body + "{\n";
+            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
+            out += body + "}\n" + next + "}\n" + in + "}\n";
+            return;
+        }
+        }
+    }
+
+    std::string arrays() const {
+        std::size_t maxNodes = r_.nodes.size(), maxEdges = r_.edges.size();
+        for (const auto& n : r_.nacs) {
+            maxNodes = std::max(maxNodes, r_.nodes.size() + n.nodes.size());
+            maxEdges = std::max(maxEdges, r_.edges.size() + n.edges.size());
+        }
+        return str(static_cast<int>(std::max<std::size_t>(maxNodes, 1))) + "], e[" +
+               str(static_cast<int>(std::max<std::size_t>(maxEdges, 1)));
+    }
+
+    std::string matcher() {
+        std::string out = "    void match_" + ri_ + "(const Graph& g, std::vector<Match>& out) {\n";
+        out += "        NodeId n[" + arrays() + "];\n";
+        out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
+        std::string complete = "";
+        std::string nacTest = "true";
+        for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
+        std::string push = "out.push_back(Match{{";
+        for (std::size_t i = 0; i < r_.nodes.size(); ++i) push += (i ? ", " : "") + std::string("n[") + str(static_cast<int>(i)) + "]";
+        push += "}, {";
+        for (std::size_t i = 0; i < r_.edges.size(); ++i) push += (i ? ", " : "") + std::string("e[") + str(static_cast<int>(i)) + "]";
+        push += "}});";
+        std::string body;
+        steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
+        // The innermost code, indented where it lands.
+        const auto at = body.find("@@COMPLETE@@");
+        const auto lineStart = body.rfind('\n', at) + 1;
+        const std::string indent = body.substr(lineStart, at - lineStart);
+        (void)indent;
+        body.replace(at, 12, "if (" + nacTest + ") " + push + "\n");
+        return out + body + "    }\n\n";
+    }
+
+    std::string nac(int k) {
+        const auto& n = r_.nacs[k];
+        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e) {\n";
+        std::vector<int> outerNodes, outerEdges;
+        for (int i = 0; i < n.outerNodes; ++i) outerNodes.push_back(i);
+        for (int i = 0; i < n.outerEdges; ++i) outerEdges.push_back(i);
+        std::string body;
+        steps(n.plan, 0, &n, outerNodes, outerEdges, "@@COMPLETE@@", body, "        ");
+        body.replace(body.find("@@COMPLETE@@"), 12, "return true;\n");
+        return out + body + "        return false;\n    }\n\n";
+    }
+
+    std::string writeSet(int di) {
+        const auto& d = r_.daughters[di];
+        std::string out = "    WriteSet writes_" + ri_ + "_" + str(di) + "(const Match& m) const {\n        WriteSet w;\n";
+        for (int n : d.deletedNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
+        for (int e : d.deletedEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
+        for (const auto& dn : d.nodes)
+            if (dn.motherNode >= 0 && (dn.position || !dn.assigns.empty() || !dn.styles.empty()))
+                out += "        w.nodes.push_back(m.nodes[" + str(dn.motherNode) + "]);\n";
+        for (const auto& de : d.edges) {
+            if (de.motherEdge < 0) continue;
+            const auto& me = r_.edges[de.motherEdge];
+            const bool rewired = d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst;
+            if (rewired || !de.assigns.empty() || !de.styles.empty())
+                out += "        w.edges.push_back(m.edges[" + str(de.motherEdge) + "]);\n";
+        }
+        return out + "        return w;\n    }\n\n";
+    }
+
+    std::string styleValue(const ir::Type& t, const std::string& v) const {
+        if (t.kind == ir::TypeKind::Enum) return "Value{EnumVal{" + str(t.enumId) + ", " + v + "}}";
+        return "Value{" + v + "}";
+    }
+
+    std::string prepare(int di) {
+        const auto& d = r_.daughters[di];
+        const std::string in = "        ";
+        std::string out = "    void prepare_" + ri_ + "_" + str(di) + "(const Match& m, const Graph& g) {\n";
+        ExprContext ctx;
+        ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
+        ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
+        ctx.nodeKind = [this](int i) { return r_.nodes[i].kind; };
+        ctx.edgeKind = [this](int i) { return r_.edges[i].kind; };
+        for (const auto& l : r_.lets) {
+            const std::string v = gen_.gen(l.value, ctx, out, in);
+            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n";
+        }
+        for (const auto& l : d.lets) {
+            const std::string v = gen_.gen(l.value, ctx, out, in);
+            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n";
+        }
+        if (d.autoPlacement) {
+            out += in + "std::optional<vec2> placed[" + str(static_cast<int>(d.nodes.size())) + "];\n";
+            out += placement(d, in);
+        }
+        // Values, in the daughter's order (as the interpreter evaluates them).
+        std::string commit;
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            const std::string si = str(static_cast<int>(i));
+            if (dn.position) {
+                const std::string v = gen_.gen(*dn.position, ctx, out, in);
+                out += in + "const vec2 pos" + si + " = " + v + ";\n";
+                out += in + "if (!std::isfinite(pos" + si + ".x) || !std::isfinite(pos" + si + ".y)) throw PlacedError(" +
+                       str(places_.add(dn.position->span)) + ", " + cppString("position of `" + dn.name + "` is not finite") + ");\n";
+            } else if (dn.motherNode < 0) {
+                out += in + "const vec2 pos" + si + " = *placed[" + si + "];\n";
+            }
+            for (std::size_t a = 0; a < dn.assigns.size(); ++a) {
+                const std::string v = gen_.gen(dn.assigns[a].value, ctx, out, in);
+                out += in + "const auto nv" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+            }
+            for (std::size_t a = 0; a < dn.styles.size(); ++a) {
+                const std::string v = gen_.gen(dn.styles[a].value, ctx, out, in);
+                out += in + "const auto ns" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+            }
+        }
+        for (std::size_t i = 0; i < d.edges.size(); ++i) {
+            const auto& de = d.edges[i];
+            const std::string si = str(static_cast<int>(i));
+            for (std::size_t a = 0; a < de.assigns.size(); ++a) {
+                const std::string v = gen_.gen(de.assigns[a].value, ctx, out, in);
+                out += in + "const auto ev" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+            }
+            for (std::size_t a = 0; a < de.styles.size(); ++a) {
+                const std::string v = gen_.gen(de.styles[a].value, ctx, out, in);
+                out += in + "const auto es" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+            }
+        }
+        // The rewrite, applied at commit time, in the interpreter's order:
+        // deleted edges go; new nodes come; kept edges that change ends are
+        // reconnected; deleted nodes go; kept nodes change; edges are updated or made.
+        const std::string c = "            ";
+        commit += c + "(void)step;\n";
+        for (int e : d.deletedEdges) commit += c + "G.removeEdge(m.edges[" + str(e) + "]);\n";
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            const std::string si = str(static_cast<int>(i));
+            if (dn.motherNode >= 0) {
+                commit += c + "const NodeId h" + si + " = m.nodes[" + str(dn.motherNode) + "];\n";
+                continue;
+            }
+            commit += c + "const NodeId h" + si + " = G.addNode(" + str(dn.kind) + ", pos" + si + ", step, {});\n";
+            if (!prog_.kinds[dn.kind].attrs.empty()) {
+                commit += c + "{\n" + c + "    Kind" + str(dn.kind) + " rec = default_" + str(dn.kind) + ";\n";
+                for (std::size_t a = 0; a < dn.assigns.size(); ++a)
+                    commit += c + "    rec.a" + str(dn.assigns[a].attr) + " = nv" + si + "_" + str(static_cast<int>(a)) + ";\n";
+                commit += c + "    G.setNodeSlot(h" + si + ", store_" + str(dn.kind) + ".add(rec));\n" + c + "}\n";
+            }
+        }
+        for (const auto& de : d.edges) {
+            if (de.motherEdge < 0) continue;
+            const auto& me = r_.edges[de.motherEdge];
+            if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
+                commit += c + "G.reconnectEdge(m.edges[" + str(de.motherEdge) + "], h" + str(de.src) + ", h" + str(de.dst) + ");\n";
+        }
+        for (int n : d.deletedNodes) commit += c + "G.removeNode(m.nodes[" + str(n) + "]);\n";
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            const std::string si = str(static_cast<int>(i));
+            if (dn.motherNode >= 0) {
+                if (dn.position) commit += c + "G.setPos(h" + si + ", pos" + si + ");\n";
+                for (std::size_t a = 0; a < dn.assigns.size(); ++a)
+                    commit += c + gen_.attrAccess(dn.kind, "h" + si, false, dn.assigns[a].attr, "G") + " = nv" + si + "_" +
+                              str(static_cast<int>(a)) + ";\n";
+            }
+            for (std::size_t a = 0; a < dn.styles.size(); ++a)
+                commit += c + "G.setNodeStyle(h" + si + ", " + cppString(dn.styles[a].prop) + ", " +
+                          styleValue(dn.styles[a].value.type, "ns" + si + "_" + str(static_cast<int>(a))) + ");\n";
+        }
+        for (std::size_t i = 0; i < d.edges.size(); ++i) {
+            const auto& de = d.edges[i];
+            const std::string si = str(static_cast<int>(i));
+            const std::string src = "h" + str(de.src), dst = "h" + str(de.dst);
+            if (de.motherEdge >= 0) {
+                commit += c + "const EdgeId k" + si + " = m.edges[" + str(de.motherEdge) + "];\n";
+                for (std::size_t a = 0; a < de.assigns.size(); ++a)
+                    commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = ev" + si + "_" +
+                              str(static_cast<int>(a)) + ";\n";
+            } else {
+                commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step, {});\n";
+                if (!prog_.kinds[de.kind].attrs.empty()) {
+                    commit += c + "{\n" + c + "    Kind" + str(de.kind) + " rec = default_" + str(de.kind) + ";\n";
+                    for (std::size_t a = 0; a < de.assigns.size(); ++a)
+                        commit += c + "    rec.a" + str(de.assigns[a].attr) + " = ev" + si + "_" + str(static_cast<int>(a)) + ";\n";
+                    commit += c + "    G.setEdgeSlot(k" + si + ", store_" + str(de.kind) + ".add(rec));\n" + c + "}\n";
+                }
+            }
+            for (std::size_t a = 0; a < de.styles.size(); ++a)
+                commit += c + "G.setEdgeStyle(k" + si + ", " + cppString(de.styles[a].prop) + ", " +
+                          styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
+        }
+        out += in + "pending_.push_back([=, this](Graph& G, long long step) {\n" + commit + in + "});\n";
+        return out + "    }\n\n";
+    }
+
+    std::string placement(const ir::Daughter& d, const std::string& in) {
+        std::string out = in + "{\n";
+        const std::string b = in + "    ";
+        out += b + "std::vector<vec2> mother, host, refDaughter, refHost;\n";
+        for (std::size_t i = 0; i < r_.nodes.size(); ++i) {
+            const auto& sk = *r_.nodes[i].sketch;
+            out += b + "mother.push_back(" + cppLiteral(ir::Value{ir::Vec2{sk.x, sk.y}}, ir::kVec2Type) + ");\n";
+            out += b + "host.push_back(g.pos(m.nodes[" + str(static_cast<int>(i)) + "]));\n";
+        }
+        bool anyKept = false;
+        for (const auto& dn : d.nodes)
+            if (dn.motherNode >= 0) {
+                anyKept = true;
+                out += b + "refDaughter.push_back(" + cppLiteral(ir::Value{ir::Vec2{dn.sketch->x, dn.sketch->y}}, ir::kVec2Type) + ");\n";
+                out += b + "refHost.push_back(host[" + str(dn.motherNode) + "]);\n";
+            }
+        if (!anyKept) out += b + "refDaughter = mother;\n" + b + "refHost = host;\n";
+        std::string directed = "std::nullopt";
+        for (const auto& e : r_.edges)
+            if (prog_.kinds[e.kind].directed && e.src != e.dst) {
+                directed = "std::make_pair(" + str(e.src) + ", " + str(e.dst) + ")";
+                break;
+            }
+        out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost);\n";
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            const auto& dn = d.nodes[i];
+            if (dn.motherNode >= 0 || !dn.sketch) continue;
+            const std::string si = str(static_cast<int>(i));
+            out += b + "placed[" + si + "] = frame.place(" + cppLiteral(ir::Value{ir::Vec2{dn.sketch->x, dn.sketch->y}}, ir::kVec2Type) + ");\n";
+            out += b + "if (!std::isfinite(placed[" + si + "]->x) || !std::isfinite(placed[" + si + "]->y)) throw PlacedError(" +
+                   str(places_.add(dn.span)) + ", " + cppString("automatic placement of `" + dn.name + "` gives a non-finite position") + ");\n";
+        }
+        return out + in + "}\n";
+    }
+
+    const ir::Program& prog_;
+    const ir::Rule& r_;
+    std::string ri_;
+    ExprGen& gen_;
+    Places& places_;
+};
+
+}  // namespace
+
+std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, ExprGen& gen, Places& places) {
+    return RuleEmitter(prog, rule, ruleIndex, gen, places).emit();
+}
+
+}  // namespace g2d::emit

@@ -1,0 +1,12 @@
+#pragma once
+// Emits one rule: its matcher (the search plan as nested loops), its negative
+// conditions, and for each daughter the write set and the prepare/commit code.
+#include <string>
+
+#include "emit/cpp_expr.hpp"
+
+namespace g2d::emit {
+
+std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, ExprGen& gen, Places& places);
+
+}  // namespace g2d::emit
