@@ -89,6 +89,7 @@ int runCommand(const std::vector<std::string>& args) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
+#ifdef G2D_RUNTIME_LINK_FLAGS
 std::vector<std::string> splitFlags(const std::string& flags) {
     std::vector<std::string> out;
     std::size_t i = 0;
@@ -101,6 +102,7 @@ std::vector<std::string> splitFlags(const std::string& flags) {
     }
     return out;
 }
+#endif
 
 }  // namespace
 

@@ -180,7 +180,7 @@ private:
     std::string emitStart() {
         const std::string in = "            ";
         std::string out = "    void start(const std::vector<Value>& params, Rng& rng) override {\n";
-        out += "        rng_ = &rng;\n        current_.clear();\n        pending_.clear();\n        try {\n";
+        out += "        (void)params;\n        rng_ = &rng;\n        current_.clear();\n        pending_.clear();\n        try {\n";
         for (std::size_t i = 0; i < prog_.params.size(); ++i)
             out += in + "P_.p" + str(static_cast<long long>(i)) + " = " + fromValue(prog_.params[i].type, "params[" + str(static_cast<long long>(i)) + "]") + ";\n";
         for (std::size_t i = 0; i < prog_.consts.size(); ++i) {
@@ -211,7 +211,7 @@ private:
             if (attrs) out += in + "Kind" + str(n.kind) + " arec" + si + " = default_" + str(n.kind) + ";\n";
             for (const auto& a : n.assigns)
                 out += in + "arec" + si + ".a" + str(a.attr) + " = " + gen_.gen(a.value, noElements(), out, in) + ";\n";
-            out += in + "const NodeId an" + si + " = graph_.addNode(" + str(n.kind) + ", apos" + si + ", 0, {});\n";
+            out += in + "const NodeId an" + si + " = graph_.addNode(" + str(n.kind) + ", apos" + si + ", 0, {});\n" + in + "(void)an" + si + ";\n";
             if (attrs) out += in + "graph_.setNodeSlot(an" + si + ", store_" + str(n.kind) + ".add(arec" + si + "));\n";
             for (const auto& s : n.styles)
                 out += in + "graph_.setNodeStyle(an" + si + ", " + cppString(s.prop) + ", " +
@@ -224,7 +224,7 @@ private:
             if (attrs) out += in + "Kind" + str(e.kind) + " erec" + si + " = default_" + str(e.kind) + ";\n";
             for (const auto& a : e.assigns)
                 out += in + "erec" + si + ".a" + str(a.attr) + " = " + gen_.gen(a.value, noElements(), out, in) + ";\n";
-            out += in + "const EdgeId ae" + si + " = graph_.addEdge(" + str(e.kind) + ", an" + str(e.src) + ", an" + str(e.dst) + ", 0, {});\n";
+            out += in + "const EdgeId ae" + si + " = graph_.addEdge(" + str(e.kind) + ", an" + str(e.src) + ", an" + str(e.dst) + ", 0, {});\n" + in + "(void)ae" + si + ";\n";
             if (attrs) out += in + "graph_.setEdgeSlot(ae" + si + ", store_" + str(e.kind) + ".add(erec" + si + "));\n";
             for (const auto& s : e.styles)
                 out += in + "graph_.setEdgeStyle(ae" + si + ", " + cppString(s.prop) + ", " +

@@ -214,7 +214,7 @@ private:
 
     std::string writeSet(int di) {
         const auto& d = r_.daughters[di];
-        std::string out = "    WriteSet writes_" + ri_ + "_" + str(di) + "(const Match& m) const {\n        WriteSet w;\n";
+        std::string out = "    WriteSet writes_" + ri_ + "_" + str(di) + "(const Match& m) const {\n        (void)m;\n        WriteSet w;\n";
         for (int n : d.deletedNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
         for (int e : d.deletedEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
         for (const auto& dn : d.nodes)
@@ -238,7 +238,7 @@ private:
     std::string prepare(int di) {
         const auto& d = r_.daughters[di];
         const std::string in = "        ";
-        std::string out = "    void prepare_" + ri_ + "_" + str(di) + "(const Match& m, const Graph& g) {\n";
+        std::string out = "    void prepare_" + ri_ + "_" + str(di) + "(const Match& m, const Graph& g) {\n        (void)m;\n        (void)g;\n";
         ExprContext ctx;
         ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
         ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
@@ -246,11 +246,11 @@ private:
         ctx.edgeKind = [this](int i) { return r_.edges[i].kind; };
         for (const auto& l : r_.lets) {
             const std::string v = gen_.gen(l.value, ctx, out, in);
-            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n";
+            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n" + in + "(void)L" + str(l.slot) + ";\n";
         }
         for (const auto& l : d.lets) {
             const std::string v = gen_.gen(l.value, ctx, out, in);
-            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n";
+            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n" + in + "(void)L" + str(l.slot) + ";\n";
         }
         if (d.autoPlacement) {
             out += in + "std::optional<vec2> placed[" + str(static_cast<int>(d.nodes.size())) + "];\n";
@@ -294,16 +294,16 @@ private:
         // deleted edges go; new nodes come; kept edges that change ends are
         // reconnected; deleted nodes go; kept nodes change; edges are updated or made.
         const std::string c = "            ";
-        commit += c + "(void)step;\n";
+        commit += c + "(void)step;\n" + c + "(void)G;\n";
         for (int e : d.deletedEdges) commit += c + "G.removeEdge(m.edges[" + str(e) + "]);\n";
         for (std::size_t i = 0; i < d.nodes.size(); ++i) {
             const auto& dn = d.nodes[i];
             const std::string si = str(static_cast<int>(i));
             if (dn.motherNode >= 0) {
-                commit += c + "const NodeId h" + si + " = m.nodes[" + str(dn.motherNode) + "];\n";
+                commit += c + "const NodeId h" + si + " = m.nodes[" + str(dn.motherNode) + "];\n" + c + "(void)h" + si + ";\n";
                 continue;
             }
-            commit += c + "const NodeId h" + si + " = G.addNode(" + str(dn.kind) + ", pos" + si + ", step, {});\n";
+            commit += c + "const NodeId h" + si + " = G.addNode(" + str(dn.kind) + ", pos" + si + ", step, {});\n" + c + "(void)h" + si + ";\n";
             if (!prog_.kinds[dn.kind].attrs.empty()) {
                 commit += c + "{\n" + c + "    Kind" + str(dn.kind) + " rec = default_" + str(dn.kind) + ";\n";
                 for (std::size_t a = 0; a < dn.assigns.size(); ++a)
@@ -336,12 +336,12 @@ private:
             const std::string si = str(static_cast<int>(i));
             const std::string src = "h" + str(de.src), dst = "h" + str(de.dst);
             if (de.motherEdge >= 0) {
-                commit += c + "const EdgeId k" + si + " = m.edges[" + str(de.motherEdge) + "];\n";
+                commit += c + "const EdgeId k" + si + " = m.edges[" + str(de.motherEdge) + "];\n" + c + "(void)k" + si + ";\n";
                 for (std::size_t a = 0; a < de.assigns.size(); ++a)
                     commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = ev" + si + "_" +
                               str(static_cast<int>(a)) + ";\n";
             } else {
-                commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step, {});\n";
+                commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step, {});\n" + c + "(void)k" + si + ";\n";
                 if (!prog_.kinds[de.kind].attrs.empty()) {
                     commit += c + "{\n" + c + "    Kind" + str(de.kind) + " rec = default_" + str(de.kind) + ";\n";
                     for (std::size_t a = 0; a < de.assigns.size(); ++a)
