@@ -18,7 +18,8 @@ namespace {
 
 bool colorStderr() { return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"); }
 
-std::optional<std::string> emitFor(const std::string& file) {
+std::optional<std::string> emitFor(const std::string& file, bool withMain = true,
+                                   const std::string& factory = "g2d_make_grammar") {
     LoadOptions load;
     load.importDirs = defaultImportDirs();
     CompileResult compiled = compileFile(file, load);
@@ -27,6 +28,8 @@ std::optional<std::string> emitFor(const std::string& file) {
     emit::EmitOptions options;
     options.grammarFile = file;
     options.sources = &compiled.sources;
+    options.withMain = withMain;
+    options.factoryName = factory;
     return emit::emitCpp(*compiled.program, options);
 }
 
@@ -107,7 +110,7 @@ std::vector<std::string> splitFlags(const std::string& flags) {
 }  // namespace
 
 int runEmitCpp(const BuildOptions& options) {
-    auto code = emitFor(options.file);
+    auto code = emitFor(options.file, options.withMain, options.factory);
     if (!code) return 1;
     try {
         rt::AtomicFile out(options.output);
@@ -120,8 +123,10 @@ int runEmitCpp(const BuildOptions& options) {
 
 int runBuild(const BuildOptions& options) {
     const std::string level = options.optimize;
-    if (level != "0" && level != "1" && level != "2" && level != "3" && level != "s" && level != "g")
-        return fail("-O takes 0, 1, 2, 3, s or g");
+    if (level != "0" && level != "1" && level != "2" && level != "3" && level != "s" && level != "g") {
+        std::fprintf(stderr, "g2d build: error: -O takes 0, 1, 2, 3, s or g\n");
+        return 2;  // a usage error
+    }
     auto code = emitFor(options.file);
     if (!code) return 1;
     const auto runtime = findRuntime();

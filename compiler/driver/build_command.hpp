@@ -12,6 +12,8 @@ struct BuildOptions {
     std::string optimize = "2";
     std::optional<std::string> keepCpp;  // build: also write the generated C++ here
     bool verbose = false;
+    bool withMain = true;                // emit-cpp: a program, or only the factory
+    std::string factory = "g2d_make_grammar";
 };
 
 int runEmitCpp(const BuildOptions& options);

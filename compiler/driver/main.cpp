@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
     g2d::BuildOptions emitOptions;
     emitCpp->add_option("FILE", emitOptions.file, ".g2d grammar")->required();
     emitCpp->add_option("-o,--output", emitOptions.output, "The .cpp to write")->required();
+    std::string factory;
+    emitCpp->add_option("--factory", factory,
+                        "Emit no main(); the grammar is made by `std::unique_ptr<g2d::rt::GrammarRun> NAME()`");
 
     auto* build = app.add_subcommand("build", "Compile the grammar into a native program (same output as g2d run)");
     g2d::BuildOptions buildOptions;
@@ -65,7 +68,13 @@ int main(int argc, char** argv) {
                              format == "json" ? g2d::DiagnosticsFormat::Json : g2d::DiagnosticsFormat::Text,
                              werror);
     }
-    if (emitCpp->parsed()) return g2d::runEmitCpp(emitOptions);
+    if (emitCpp->parsed()) {
+        if (!factory.empty()) {
+            emitOptions.withMain = false;
+            emitOptions.factory = factory;
+        }
+        return g2d::runEmitCpp(emitOptions);
+    }
     if (build->parsed()) {
         if (!keepCpp.empty()) buildOptions.keepCpp = keepCpp;
         if (!cxx.empty()) buildOptions.cxx = cxx;

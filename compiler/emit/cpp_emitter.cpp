@@ -71,7 +71,8 @@ public:
                "        return SourceLocation{at.file, at.line, at.col, at.endCol, at.lineText};\n    }\n\n";
         out += start + limits + emitRuleSet() + emitAttribute() + styles;
         out += "private:\n" + functions + rules + emitMembers() + "};\n\n}  // namespace\n\n";
-        out += "std::unique_ptr<GrammarRun> " + options_.factoryName + "() { return std::make_unique<Grammar>(); }\n";
+        out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "();\n";
+        out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "() { return std::make_unique<Grammar>(); }\n";
         if (options_.withMain)
             out += "\nint main(int argc, char** argv) {\n    RunRequest request;\n"
                    "    if (auto code = parseRunArguments(argc, argv, " + cLiteral(options_.grammarFile) +

@@ -1,0 +1,69 @@
+#include "g2d/grammar.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "g2d/run_driver.hpp"
+
+namespace g2d {
+
+Grammar::Grammar(std::unique_ptr<rt::GrammarRun> run, std::string fileName)
+    : run_(std::move(run)), fileName_(std::move(fileName)) {
+    for (const auto& p : run_->params()) params_.push_back(p.defaultValue);
+}
+
+std::vector<std::string> Grammar::parameterNames() const {
+    std::vector<std::string> out;
+    for (const auto& p : run_->params()) out.push_back(p.name);
+    return out;
+}
+
+void Grammar::set(const std::string& name, const std::string& value) {
+    const auto& specs = run_->params();
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].name != name) continue;
+        auto v = rt::parseParamValue(specs[i].type, value, specs[i].enumId, specs[i].enumValues);
+        if (!v) throw std::invalid_argument(name + "=" + value + ": not a valid " + specs[i].typeName);
+        params_[i] = std::move(*v);
+        return;
+    }
+    throw std::invalid_argument("the grammar has no parameter `" + name + "`");
+}
+
+rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
+    try {
+        last_ = rt::deriveGrammar(*run_, params_, seed_, steps).result;
+    } catch (const rt::RunawayError&) {
+        throw;
+    } catch (const std::exception& e) {
+        const std::string rule = run_->currentRule();
+        const std::string where = rule.empty() ? "" : " (in rule `" + rule + "`)";
+        if (auto at = run_->locate(e)) throw std::runtime_error(rt::renderLocatedError(*at, e.what() + where));
+        throw std::runtime_error(e.what() + where);
+    }
+    return last_;
+}
+
+rt::Value Grammar::attribute(bool isEdge, std::uint32_t id, const std::string& name) const {
+    const rt::Graph& g = run_->graph();
+    const int kind = isEdge ? g.edgeKind(id) : g.nodeKind(id);
+    const auto& names = run_->jsonSchema().attrNames.at(static_cast<std::size_t>(kind));
+    for (std::size_t a = 0; a < names.size(); ++a)
+        if (names[a] == name) return run_->attribute(isEdge, id, static_cast<int>(a));
+    throw std::invalid_argument("kind `" + run_->jsonSchema().kindNames.at(static_cast<std::size_t>(kind)) +
+                                "` has no attribute `" + name + "`");
+}
+
+std::string Grammar::svg() { return rt::writeSvg(run_->drawItems(), run_->svgDefs()); }
+
+std::string Grammar::json() {
+    const std::vector<std::pair<std::string, rt::Value>> meta = {
+        {"grammar", std::filesystem::path(fileName_).filename().string()},
+        {"seed", static_cast<long long>(seed_)},
+        {"steps", last_.steps},
+        {"stopped", std::string(last_.stopped == rt::StopReason::Terminal ? "terminal" : "step_limit")}};
+    return rt::writeJson(run_->graph(), run_->jsonSchema(), meta,
+                         [&](bool isEdge, std::uint32_t id, int a) { return run_->attribute(isEdge, id, a); });
+}
+
+}  // namespace g2d
