@@ -3,6 +3,8 @@
 #include "emit/cpp_expr.hpp"
 #include "emit/cpp_rules.hpp"
 
+#include <algorithm>
+
 namespace g2d::emit {
 
 namespace {
@@ -239,6 +241,13 @@ private:
             out += in + "{\n" + in + "    RuleInfo info;\n" + in + "    info.priority = " + cppLiteral(ir::Value{r.priority}, ir::kIntType) + ";\n";
             out += in + "    info.pick = " + (r.pick == ir::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
             out += in + "    info.parallel = " + (parallel ? "true" : "false") + ";\n";
+            int reach = static_cast<int>(r.nodes.size());
+            for (const auto& nac : r.nacs) reach += static_cast<int>(nac.nodes.size());
+            out += in + "    info.radius = " + str(std::max(0, reach - 1)) + ";\n";
+            out += in + "    info.edgeCount = " + str(static_cast<long long>(r.edges.size())) + ";\n";
+            out += in + "    info.nodeKinds = {";
+            for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);
+            out += "};\n";
             for (const auto& d : r.daughters) {
                 if (d.weight) {
                     out += in + "    info.weights.push_back(" + cppLiteral(ir::Value{*d.weight}, ir::kFloatType) + ");\n";
@@ -287,6 +296,13 @@ private:
         for (std::size_t r = 0; r < n; ++r)
             out += "            case " + str(static_cast<long long>(r)) + ": match_" + str(static_cast<long long>(r)) + "(g, out); break;\n";
         out += "            default: break;\n            }\n        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
+        out += "    void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, std::vector<Match>& out) override {\n" + names;
+        out += "        current_ = names[rule];\n        try {\n";
+        for (std::size_t r = 0; r < n; ++r)
+            for (std::size_t a = 0; a < prog_.rules[r].nodes.size(); ++a)
+                out += "            if (rule == " + str(static_cast<long long>(r)) + " && node == " + str(static_cast<long long>(a)) +
+                       ") match_" + str(static_cast<long long>(r)) + "_a" + str(static_cast<long long>(a)) + "(g, host, out);\n";
+        out += "            (void)node; (void)host; (void)g; (void)out;\n        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
         out += "    WriteSet writeSet(std::size_t rule, std::size_t daughter, const Match& m) const override {\n";
         for (std::size_t r = 0; r < n; ++r)
             for (std::size_t d = 0; d < prog_.rules[r].daughters.size(); ++d)

@@ -17,7 +17,8 @@ public:
 
     std::string emit() {
         std::string out;
-        out += matcher();
+        out += matcher(-1);
+        for (std::size_t a = 0; a < r_.nodes.size(); ++a) out += matcher(static_cast<int>(a));
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) out += nac(static_cast<int>(k));
         for (std::size_t d = 0; d < r_.daughters.size(); ++d) {
             out += writeSet(static_cast<int>(d));
@@ -177,10 +178,14 @@ private:
                str(static_cast<int>(std::max<std::size_t>(maxEdges, 1)));
     }
 
-    std::string matcher() {
-        std::string out = "    void match_" + ri_ + "(const Graph& g, std::vector<Match>& out) {\n";
+    // The full matcher (anchor -1), or the one with pattern node `anchor` bound to `host`.
+    std::string matcher(int anchor) {
+        std::string out = anchor < 0 ? "    void match_" + ri_ + "(const Graph& g, std::vector<Match>& out) {\n"
+                                     : "    void match_" + ri_ + "_a" + str(anchor) +
+                                           "(const Graph& g, NodeId host, std::vector<Match>& out) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
         out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
+        if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
         std::string complete = "";
         std::string nacTest = "true";
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
@@ -190,7 +195,8 @@ private:
         for (std::size_t i = 0; i < r_.edges.size(); ++i) push += (i ? ", " : "") + std::string("e[") + str(static_cast<int>(i)) + "]";
         push += "}});";
         std::string body;
-        steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
+        if (anchor < 0) steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
+        else steps(r_.anchoredPlans[anchor], 0, nullptr, {anchor}, {}, "@@COMPLETE@@", body, "        ");
         // The innermost code, indented where it lands.
         const auto at = body.find("@@COMPLETE@@");
         const auto lineStart = body.rfind('\n', at) + 1;
@@ -326,6 +332,8 @@ private:
                 for (std::size_t a = 0; a < dn.assigns.size(); ++a)
                     commit += c + gen_.attrAccess(dn.kind, "h" + si, false, dn.assigns[a].attr, "G") + " = nv" + si + "_" +
                               str(static_cast<int>(a)) + ";\n";
+                // Typed attributes change outside the graph: tell it, for incremental matching.
+                if (!dn.assigns.empty()) commit += c + "G.touchNode(h" + si + ");\n";
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a)
                 commit += c + "G.setNodeStyle(h" + si + ", " + cppString(dn.styles[a].prop) + ", " +
@@ -340,6 +348,7 @@ private:
                 for (std::size_t a = 0; a < de.assigns.size(); ++a)
                     commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = ev" + si + "_" +
                               str(static_cast<int>(a)) + ";\n";
+                if (!de.assigns.empty()) commit += c + "G.touchEdge(k" + si + ");\n";
             } else {
                 commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step, {});\n" + c + "(void)k" + si + ";\n";
                 if (!prog_.kinds[de.kind].attrs.empty()) {

@@ -33,6 +33,11 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
             }
             info.weights.push_back(w);
         }
+        int reach = static_cast<int>(r.nodes.size());
+        for (const auto& n : r.nacs) reach += static_cast<int>(n.nodes.size());
+        info.radius = std::max(0, reach - 1);
+        for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
+        info.edgeCount = static_cast<int>(r.edges.size());
         infos_.push_back(std::move(info));
         std::size_t nacNodes = 0, nacEdges = 0;
         for (const auto& n : r.nacs) {
@@ -67,8 +72,7 @@ bool InterpretedRules::orderedOk(const rt::Graph& g, const ir::Rule& r, int node
 }
 
 bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                              std::size_t i, const std::function<bool()>& onComplete) {
-    const auto& plan = nac ? nac->plan : r.plan;
+                              const std::vector<PlanStep>& plan, std::size_t i, const std::function<bool()>& onComplete) {
     if (i == plan.size()) return onComplete();
     const PlanStep& s = plan[i];
     auto nodeKind = [&](int idx) {
@@ -87,7 +91,7 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
         f.nodes = &boundNodes_;
         f.edges = &boundEdges_;
         const auto& cond = nac ? nac->conditions[s.condition] : r.conditions[s.condition];
-        return evaluateBool(cond.expr, f) && search(g, r, nac, i + 1, onComplete);
+        return evaluateBool(cond.expr, f) && search(g, r, nac, plan, i + 1, onComplete);
     }
     case PlanStep::Op::ScanNodes: {
         const int kind = nodeKind(s.node);
@@ -96,7 +100,7 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
             const NodeId h = candidates[c];
             if (nodeUsed(h)) continue;
             boundNodes_[s.node] = h;
-            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, i + 1, onComplete);
+            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
             boundNodes_[s.node] = kNoId;
             if (stop) return true;
         }
@@ -121,7 +125,7 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
             if ((farKind >= 0 && g.nodeKind(other) != farKind) || nodeUsed(other)) continue;
             boundEdges_[s.edge] = e;
             boundNodes_[s.node] = other;
-            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, i + 1, onComplete);
+            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
             boundNodes_[s.node] = kNoId;
             boundEdges_[s.edge] = kNoId;
             if (stop) return true;
@@ -140,7 +144,7 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
             const bool fits = directed ? (a == hs && b == hd) : ((a == hs && b == hd) || (a == hd && b == hs));
             if (!fits) continue;
             boundEdges_[s.edge] = e;
-            const bool stop = search(g, r, nac, i + 1, onComplete);
+            const bool stop = search(g, r, nac, plan, i + 1, onComplete);
             boundEdges_[s.edge] = kNoId;
             if (stop) return true;
         }
@@ -152,14 +156,13 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
 
 bool InterpretedRules::nacsHold(const rt::Graph& g, const ir::Rule& r) {
     for (const auto& nac : r.nacs)
-        if (search(g, r, &nac, 0, [] { return true; })) return false;
+        if (search(g, r, &nac, nac.plan, 0, [] { return true; })) return false;
     return true;
 }
 
-void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) {
-    const ir::Rule& r = st_.prog->rules[rule];
-    current_ = &r;
-    search(g, r, nullptr, 0, [&] {
+void InterpretedRules::collect(const rt::Graph& g, const ir::Rule& r, const std::vector<PlanStep>& plan,
+                               std::vector<rt::Match>& out) {
+    search(g, r, nullptr, plan, 0, [&] {
         if (nacsHold(g, r)) {
             rt::Match m;
             m.nodes.assign(boundNodes_.begin(), boundNodes_.begin() + static_cast<long>(r.nodes.size()));
@@ -168,6 +171,21 @@ void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, std::ve
         }
         return false;  // enumerate them all
     });
+}
+
+void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) {
+    const ir::Rule& r = st_.prog->rules[rule];
+    current_ = &r;
+    collect(g, r, r.plan, out);
+}
+
+void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
+                                    std::vector<rt::Match>& out) {
+    const ir::Rule& r = st_.prog->rules[rule];
+    current_ = &r;
+    boundNodes_[node] = host;
+    collect(g, r, r.anchoredPlans[node], out);
+    boundNodes_[node] = kNoId;
 }
 
 // ---- rewriting ------------------------------------------------------------------

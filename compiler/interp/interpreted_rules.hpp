@@ -17,6 +17,8 @@ public:
     std::size_t ruleCount() const override { return infos_.size(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
     void findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) override;
+    void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
+                      std::vector<rt::Match>& out) override;
     rt::WriteSet writeSet(std::size_t rule, std::size_t daughter, const rt::Match& m) const override;
     void prepare(std::size_t rule, std::size_t daughter, const rt::Match& m, const rt::Graph& g, rt::Rng& rng,
                  long long step) override;
@@ -37,8 +39,10 @@ private:
         std::vector<Values> nodeValues, edgeValues;
     };
 
-    bool search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac, std::size_t step,
-                const std::function<bool()>& onComplete);
+    bool search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
+                const std::vector<ir::PlanStep>& plan, std::size_t step, const std::function<bool()>& onComplete);
+    void collect(const rt::Graph& g, const ir::Rule& r, const std::vector<ir::PlanStep>& plan,
+                 std::vector<rt::Match>& out);
     bool orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const;
     bool nacsHold(const rt::Graph& g, const ir::Rule& r);
     Values evaluateValues(const std::vector<ir::AttrAssign>& attrs, const std::vector<ir::StyleAssign>& styles,

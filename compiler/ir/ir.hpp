@@ -289,6 +289,9 @@ struct Rule {
     std::vector<PatternEdge> edges;
     std::vector<Condition> conditions;
     std::vector<PlanStep> plan;
+    // anchoredPlans[i]: the search with node i already bound (incremental
+    // matching re-finds matches around the nodes a step changed).
+    std::vector<std::vector<PlanStep>> anchoredPlans;
     std::vector<NegativeCondition> nacs;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;

@@ -430,6 +430,9 @@ private:
 
     void plan() {
         rule_.plan = buildSearchPlan(rule_.nodes, rule_.edges, rule_.conditions, 0, 0, 0);
+        for (std::size_t i = 0; i < rule_.nodes.size(); ++i)
+            rule_.anchoredPlans.push_back(
+                buildSearchPlan(rule_.nodes, rule_.edges, rule_.conditions, 0, 0, 0, static_cast<int>(i)));
         for (auto& n : rule_.nacs)
             n.plan = buildSearchPlan(n.nodes, n.edges, n.conditions, n.outerNodes, n.outerEdges,
                                      static_cast<int>(rule_.nodes.size()));

@@ -9,10 +9,11 @@ using ir::PlanStep;
 std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
                                       const std::vector<ir::PatternEdge>& edges,
                                       const std::vector<ir::Condition>& conditions, int nodeBase, int edgeBase,
-                                      int boundOuterNodes) {
+                                      int boundOuterNodes, int anchor) {
     std::vector<PlanStep> plan;
     std::set<int> boundNodes;
     for (int i = 0; i < boundOuterNodes; ++i) boundNodes.insert(i);
+    if (anchor >= 0) boundNodes.insert(anchor);
     std::set<int> boundEdges;
     for (int i = 0; i < edgeBase; ++i) boundEdges.insert(i);
     std::vector<bool> conditionPlaced(conditions.size(), false);
@@ -47,7 +48,7 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
 
     placeConditions();
     const std::size_t total = nodes.size() + edges.size();
-    std::size_t placed = 0;
+    std::size_t placed = anchor >= 0 ? 1 : 0;
     while (placed < total) {
         bool progressed = false;
         // 1. An edge between two bound nodes: a lookup, no new candidates.

@@ -11,9 +11,10 @@ namespace g2d::sema {
 // `nodes` and `edges` are numbered from nodeBase and edgeBase (a negative
 // condition extends its rule's match: nodes below nodeBase and edges below
 // edgeBase are already bound).
+// `anchor` >= 0: that node is bound before the search starts.
 std::vector<ir::PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
                                           const std::vector<ir::PatternEdge>& edges,
                                           const std::vector<ir::Condition>& conditions, int nodeBase,
-                                          int edgeBase, int boundOuterNodes);
+                                          int edgeBase, int boundOuterNodes, int anchor = -1);
 
 }  // namespace g2d::sema

@@ -1,6 +1,8 @@
 #include "g2d/derivation.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
 #include <numeric>
 #include <unordered_set>
 
@@ -11,22 +13,6 @@ long long ageSum(const Match& m, const Graph& g) {
     for (NodeId n : m.nodes) sum += g.nodeAge(n);
     for (EdgeId e : m.edges) sum += g.edgeAge(e);
     return sum;
-}
-
-std::size_t pickMatch(const std::vector<Match>& matches, Pick pick, const Graph& g, Rng& rng) {
-    if (matches.size() == 1) return 0;
-    if (pick == Pick::Random) return static_cast<std::size_t>(rng.below(matches.size()));
-    // Oldest: the lowest mean creation step. Matches of one rule have the same
-    // number of elements, so comparing sums is exact.
-    std::vector<std::size_t> oldest;
-    long long best = 0;
-    for (std::size_t i = 0; i < matches.size(); ++i) {
-        const long long s = ageSum(matches[i], g);
-        if (oldest.empty() || s < best) { oldest.assign(1, i); best = s; }
-        else if (s == best) oldest.push_back(i);
-    }
-    if (oldest.size() == 1) return oldest[0];
-    return oldest[static_cast<std::size_t>(rng.below(oldest.size()))];
 }
 
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng) {
@@ -90,6 +76,98 @@ void parallelStep(std::size_t rule, std::vector<Match>& matches, RuleSet& rules,
 
 }  // namespace
 
+// The nodes within `radius` edges of the changed ones (changed ones first).
+std::vector<NodeId> region(const Graph& g, const std::vector<NodeId>& changed, int radius,
+                           std::vector<std::uint32_t>& seen, std::uint32_t mark) {
+    std::vector<NodeId> out;
+    if (seen.size() < g.nodeCapacity()) seen.resize(g.nodeCapacity(), 0);
+    for (NodeId n : changed)
+        if (seen[n] != mark) {
+            seen[n] = mark;
+            out.push_back(n);
+        }
+    std::size_t begin = 0;
+    for (int d = 0; d < radius; ++d) {
+        const std::size_t end = out.size();
+        for (std::size_t i = begin; i < end; ++i) {
+            const NodeId n = out[i];
+            if (!g.nodeAlive(n)) continue;
+            for (EdgeId e : g.incident(n)) {
+                const NodeId o = g.source(e) == n ? g.target(e) : g.source(e);
+                if (seen[o] != mark) {
+                    seen[o] = mark;
+                    out.push_back(o);
+                }
+            }
+        }
+        begin = end;
+    }
+    return out;
+}
+
+// Repairs every rule's matches around what the last step changed.
+class IncrementalMatches {
+public:
+    IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(rules) {
+        for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
+            const RuleInfo& info = rules.info(r);
+            sets_.emplace_back(static_cast<int>(info.nodeKinds.size()), info.edgeCount, info.pick == Pick::Oldest);
+            std::vector<Match> all;
+            rules.findMatches(r, g, all);
+            for (const Match& m : all) sets_.back().add(m, g);
+        }
+    }
+
+    MatchSet& of(std::size_t rule) { return sets_[rule]; }
+
+    // With G2D_VERIFY_MATCHES set (the tests set it): every rule's set must
+    // hold exactly the matches a full search finds.
+    void verify(const Graph& g, long long step) {
+        std::vector<Match> all;
+        for (std::size_t r = 0; r < sets_.size(); ++r) {
+            all.clear();
+            rules_.findMatches(r, g, all);
+            std::vector<Match> kept;
+            for (std::size_t i = 0; i < sets_[r].size(); ++i) kept.push_back(sets_[r].at(i));
+            auto key = [](const Match& m) { return std::make_pair(m.nodes, m.edges); };
+            auto less = [&](const Match& a, const Match& b) { return key(a) < key(b); };
+            std::sort(all.begin(), all.end(), less);
+            std::sort(kept.begin(), kept.end(), less);
+            if (all != kept)
+                throw std::logic_error("incremental matching lost track of rule " + std::to_string(r) + " after step " +
+                                       std::to_string(step) + ": " + std::to_string(kept.size()) + " matches kept, " +
+                                       std::to_string(all.size()) + " found");
+        }
+    }
+
+    void update(const Graph& g, const std::vector<NodeId>& changed) {
+        if (changed.empty()) return;
+        std::vector<Match> found;
+        for (std::size_t r = 0; r < sets_.size(); ++r) {
+            const RuleInfo& info = rules_.info(r);
+            const auto area = region(g, changed, info.radius, seen_, ++mark_);
+            MatchSet& set = sets_[r];
+            for (NodeId n : area) set.removeTouching(n);
+            for (NodeId h : area) {
+                if (!g.nodeAlive(h)) continue;
+                for (std::size_t p = 0; p < info.nodeKinds.size(); ++p) {
+                    const int kind = info.nodeKinds[p];
+                    if (kind >= 0 && kind != g.nodeKind(h)) continue;
+                    found.clear();
+                    rules_.findAnchored(r, g, static_cast<int>(p), h, found);
+                    for (const Match& m : found) set.add(m, g);
+                }
+            }
+        }
+    }
+
+private:
+    RuleSet& rules_;
+    std::vector<MatchSet> sets_;
+    std::vector<std::uint32_t> seen_;
+    std::uint32_t mark_ = 0;
+};
+
 DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
                         const StepObserver& observer) {
     const auto start = std::chrono::steady_clock::now();
@@ -109,6 +187,9 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     DerivationResult result;
     std::vector<Match> matches;
     std::vector<std::size_t> order;
+    IncrementalMatches sets(rules, g);
+    g.takeDirty();
+    static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
             result.stopped = StopReason::StepLimit;
@@ -121,18 +202,21 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             order = grp.rules;
             shuffle(order, rng);
             for (std::size_t r : order) {
-                matches.clear();
-                rules.findMatches(r, g, matches);
-                if (matches.empty()) continue;
+                MatchSet& set = sets.of(r);
+                if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
                 if (info.parallel) {
+                    matches.clear();
+                    for (std::size_t i = 0; i < set.size(); ++i) matches.push_back(set.at(i));
                     parallelStep(r, matches, rules, g, rng, step);
                 } else {
-                    const std::size_t m = pickMatch(matches, info.pick, g, rng);
+                    const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                     const std::size_t d = pickDaughter(info.weights, rng);
-                    rules.prepare(r, d, matches[m], g, rng, step);
+                    rules.prepare(r, d, m, g, rng, step);
                     rules.commit(g, step);
                 }
+                sets.update(g, g.takeDirty());
+                if (verify) sets.verify(g, step);
                 applied = true;
                 ++grp.applied;
                 break;

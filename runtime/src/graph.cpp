@@ -20,6 +20,7 @@ NodeId Graph::addNode(int kind, vec2 pos, long long age, std::vector<Value> attr
     allNodes_.push_back(id);
     nodes_.push_back(std::move(rec));
     ++liveNodes_;
+    touchNode(id);
     return id;
 }
 
@@ -36,6 +37,8 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age, std::vect
     nodes_[src].incident.push_back(id);
     if (dst != src) nodes_[dst].incident.push_back(id);
     ++liveEdges_;
+    touchNode(src);
+    touchNode(dst);
     return id;
 }
 
@@ -48,6 +51,8 @@ void Graph::detach(NodeId n, EdgeId e) {
 void Graph::removeEdge(EdgeId e) {
     auto& rec = edges_[e];
     if (!rec.alive) return;
+    touchNode(rec.src);
+    touchNode(rec.dst);
     detach(rec.src, e);
     if (rec.dst != rec.src) detach(rec.dst, e);
     rec.alive = false;
@@ -59,6 +64,7 @@ void Graph::removeEdge(EdgeId e) {
 void Graph::removeNode(NodeId n) {
     auto& rec = nodes_[n];
     if (!rec.alive) return;
+    touchNode(n);
     while (!rec.incident.empty()) {
         const EdgeId e = rec.incident.back();
         if (!edges_[e].alive) throw std::logic_error("a dead edge in an incidence list");
@@ -85,12 +91,30 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
     auto& rec = edges_[e];
     if (!rec.alive || !nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("reconnecting a dead edge or to a dead node");
     if (rec.src == src && rec.dst == dst) return;
+    touchNode(rec.src);
+    touchNode(rec.dst);
+    touchNode(src);
+    touchNode(dst);
     detach(rec.src, e);
     if (rec.dst != rec.src) detach(rec.dst, e);
     rec.src = src;
     rec.dst = dst;
     nodes_[src].incident.push_back(e);
     if (dst != src) nodes_[dst].incident.push_back(e);
+}
+
+void Graph::touchNode(NodeId n) {
+    if (n >= isDirty_.size()) isDirty_.resize(std::max<std::size_t>(nodes_.size(), n + 1) * 2, false);
+    if (isDirty_[n]) return;
+    isDirty_[n] = true;
+    dirty_.push_back(n);
+}
+
+std::vector<NodeId> Graph::takeDirty() {
+    std::vector<NodeId> out;
+    out.swap(dirty_);
+    for (NodeId n : out) isDirty_[n] = false;
+    return out;
 }
 
 int Graph::inDegree(NodeId n) const {

@@ -7,10 +7,16 @@
 // walks the IR, generated code runs specialised loops. Both share this file,
 // so they draw random numbers in the same order.
 //
-// Random draws per step, in this order (documented in docs/runtime.md):
+// The matches of every rule are found once on the axiom and then kept up to
+// date: after a step, the graph reports the nodes that changed; for each rule,
+// every match binding a node within `radius` of a changed node is dropped and
+// the matches binding such a node are found again, anchored there. So a step
+// costs what changed, not the size of the graph.
+//
+// Random draws per step, in this order:
 //   1. for each priority visited, a Fisher–Yates shuffle of its rules
 //      (no draw for a single rule);
-//   2. the match: below(n) over the matches in enumeration order (random), or
+//   2. the match: below(n) over the rule's match set in its order (random), or
 //      over the tied oldest matches (oldest); no draw when there is one;
 //   3. the daughter: one unit() draw when the rule has several daughters;
 //   4. whatever the daughter's expressions draw, in source order.
@@ -25,22 +31,24 @@
 #include <vector>
 
 #include "g2d/graph.hpp"
+#include "g2d/match_set.hpp"
 #include "g2d/rng.hpp"
 
 namespace g2d::rt {
 
 enum class Pick { Random, Oldest };
 
-struct Match {
-    std::vector<NodeId> nodes;
-    std::vector<EdgeId> edges;
-};
-
 struct RuleInfo {
     long long priority = 0;
     Pick pick = Pick::Random;
     bool parallel = false;
     std::vector<double> weights;      // one per daughter, all > 0
+    // The pattern's shape, for incremental matching: the kinds of its nodes
+    // (-1: wildcard), its edge count, and how far (in edges) from a changed
+    // node a match or its negative conditions can reach.
+    std::vector<int> nodeKinds;
+    int edgeCount = 0;
+    int radius = 0;
 };
 
 // Elements a chosen daughter deletes or changes (for parallel steps).
@@ -56,6 +64,8 @@ public:
     virtual const RuleInfo& info(std::size_t rule) const = 0;
     // Every match of `rule` on `g`, in a deterministic order.
     virtual void findMatches(std::size_t rule, const Graph& g, std::vector<Match>& out) = 0;
+    // Every match of `rule` that binds pattern node `node` to host node `host`.
+    virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, std::vector<Match>& out) = 0;
     // What applying `daughter` to `m` deletes or changes.
     virtual WriteSet writeSet(std::size_t rule, std::size_t daughter, const Match& m) const = 0;
     // Evaluates everything the daughter computes, on the graph as it is now
@@ -71,7 +81,7 @@ enum class StopReason { Terminal, StepLimit };
 struct DerivationLimits {
     std::optional<long long> steps;               // global limit (none: unlimited)
     std::map<long long, long long> perPriority;   // priority -> limit
-    std::size_t maxElements = 50'000'000;         // a runaway guard
+    std::size_t maxElements = 10'000'000;         // a runaway guard (about 2 GB)
 };
 
 struct DerivationResult {
@@ -92,7 +102,6 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                         const StepObserver& observer = {});
 
 // Helpers shared with tests: the selection rules, as specified above.
-std::size_t pickMatch(const std::vector<Match>& matches, Pick pick, const Graph& g, Rng& rng);
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);
 long long ageSum(const Match& m, const Graph& g);
 template <class T>

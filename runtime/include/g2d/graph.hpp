@@ -48,10 +48,10 @@ public:
 
     int nodeKind(NodeId n) const { return nodes_[n].kind; }
     vec2 pos(NodeId n) const { return nodes_[n].pos; }
-    void setPos(NodeId n, vec2 p) { nodes_[n].pos = p; }
+    void setPos(NodeId n, vec2 p) { nodes_[n].pos = p; touchNode(n); }
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
     const Value& nodeAttr(NodeId n, int i) const { return nodes_[n].attrs[i]; }
-    void setNodeAttr(NodeId n, int i, Value v) { nodes_[n].attrs[i] = std::move(v); }
+    void setNodeAttr(NodeId n, int i, Value v) { nodes_[n].attrs[i] = std::move(v); touchNode(n); }
     const std::vector<StyleOverride>& nodeStyle(NodeId n) const { return nodes_[n].style; }
     // A back end's own handle for the element's attributes (compiled grammars
     // keep them in typed arrays); kNoId until set.
@@ -64,7 +64,7 @@ public:
     NodeId target(EdgeId e) const { return edges_[e].dst; }
     long long edgeAge(EdgeId e) const { return edges_[e].age; }
     const Value& edgeAttr(EdgeId e, int i) const { return edges_[e].attrs[i]; }
-    void setEdgeAttr(EdgeId e, int i, Value v) { edges_[e].attrs[i] = std::move(v); }
+    void setEdgeAttr(EdgeId e, int i, Value v) { edges_[e].attrs[i] = std::move(v); touchEdge(e); }
     const std::vector<StyleOverride>& edgeStyle(EdgeId e) const { return edges_[e].style; }
     std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
     void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
@@ -80,6 +80,12 @@ public:
     int outDegree(NodeId n) const;
 
     const std::vector<KindInfo>& kinds() const { return kinds_; }
+
+    // Change tracking for incremental matching: every node that was created,
+    // deleted or changed, or whose incident edges were, since takeDirty().
+    void touchNode(NodeId n);
+    void touchEdge(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
+    std::vector<NodeId> takeDirty();
 
 private:
     struct NodeRec {
@@ -112,6 +118,8 @@ private:
     std::vector<std::vector<NodeId>> kindNodes_;
     std::vector<NodeId> allNodes_;
     std::size_t liveNodes_ = 0, liveEdges_ = 0;
+    std::vector<NodeId> dirty_;
+    std::vector<bool> isDirty_;
 };
 
 }  // namespace g2d::rt
