@@ -38,18 +38,14 @@ CompileResult compileSource(const std::string& path, const std::string& text, co
     for (const auto& d : main->decls) {
         const auto* imp = std::get_if<ast::ImportDecl>(&d.decl);
         if (!imp) continue;
-        std::vector<fs::path> candidates = {fs::path(path).parent_path() / imp->path};
-        for (const auto& dir : options.importDirs) candidates.push_back(fs::path(dir) / imp->path);
-        std::string resolved;
-        std::error_code ec;
-        for (const auto& c : candidates)
-            if (resolved.empty() && fs::exists(c, ec)) resolved = c.string();
-        if (resolved.empty()) {
-            r.diags.error(imp->span, "cannot find imported file `" + imp->path + "` (looked next to the importing file and in the standard library)");
+        const auto resolved = resolveImport(imp->path, fs::path(path).parent_path().string(), options);
+        if (!resolved) {
+            r.diags.error(imp->span, "cannot find imported file `" + imp->path +
+                                         "` (looked next to the importing file and in the standard library)");
             ok = false;
             continue;
         }
-        ok = loadGrammar(resolved, options, r.sources, r.diags, imported) && ok;
+        ok = loadGrammar(*resolved, options, r.sources, r.diags, imported) && ok;
     }
     if (ok) r.program = analyzeAll(imported, &*main, r.diags);
     return r;

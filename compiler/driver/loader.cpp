@@ -64,22 +64,6 @@ struct Loader {
         return ss.str();
     }
 
-    std::optional<fs::path> resolveImport(const std::string& name, const fs::path& fromDir) {
-        std::vector<fs::path> candidates;
-        fs::path rel(name);
-        if (rel.is_absolute()) {
-            candidates.push_back(rel);
-        } else {
-            candidates.push_back(fromDir / rel);
-            for (const auto& d : options.importDirs) candidates.push_back(fs::path(d) / rel);
-        }
-        for (const auto& c : candidates) {
-            std::error_code ec;
-            if (fs::exists(c, ec)) return c;
-        }
-        return std::nullopt;
-    }
-
     bool load(const std::string& display, const fs::path& path, Span from) {
         std::error_code ec;
         fs::path canonical = fs::weakly_canonical(path, ec);
@@ -107,7 +91,9 @@ struct Loader {
         for (const auto& d : program->decls) {
             const auto* imp = std::get_if<ast::ImportDecl>(&d.decl);
             if (!imp) continue;
-            auto resolved = resolveImport(imp->path, path.parent_path());
+            auto found = resolveImport(imp->path, path.parent_path().string(), options);
+            std::optional<fs::path> resolved;
+            if (found) resolved = fs::path(*found);
             if (!resolved) {
                 diags.error(imp->span, "cannot find imported file `" + imp->path + "`" +
                                            (fs::path(imp->path).is_absolute()
@@ -127,6 +113,23 @@ struct Loader {
 };
 
 }  // namespace
+
+std::optional<std::string> resolveImport(const std::string& name, const std::string& fromDir,
+                                         const LoadOptions& options) {
+    std::vector<fs::path> candidates;
+    const fs::path rel(name);
+    if (rel.is_absolute()) {
+        candidates.push_back(rel);
+    } else {
+        candidates.push_back(fs::path(fromDir) / rel);
+        for (const auto& d : options.importDirs) candidates.push_back(fs::path(d) / rel);
+    }
+    for (const auto& c : candidates) {
+        std::error_code ec;
+        if (fs::exists(c, ec)) return c.string();
+    }
+    return std::nullopt;
+}
 
 bool loadGrammar(const std::string& path, const LoadOptions& options, SourceManager& sm, Diagnostics& diags,
                  std::vector<ast::Program>& out) {

@@ -1,5 +1,6 @@
 #pragma once
 // Reads a grammar file and, recursively, the files it imports.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,11 @@ struct LoadOptions {
 // The folders `import` searches by default: $G2D_STDLIB (if set), the source
 // tree's stdlib/ (for a build tree), and the installed share/g2d/stdlib.
 std::vector<std::string> defaultImportDirs();
+
+// Where `import "name"` in a file of folder `fromDir` refers to: the folder
+// first, then `options.importDirs`; nothing if no such file exists.
+std::optional<std::string> resolveImport(const std::string& name, const std::string& fromDir,
+                                         const LoadOptions& options);
 
 // Loads `path` and its imports. On success `out` holds the parsed files in
 // dependency order, the main file last. Returns false if anything failed

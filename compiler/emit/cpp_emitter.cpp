@@ -65,7 +65,7 @@ public:
         out += "    Graph& graph() override { return graph_; }\n    RuleSet& rules() override { return *this; }\n";
         out += "    const std::vector<std::string>& svgDefs() const override { return defs_; }\n";
         out += "    const JsonSchema& jsonSchema() const override { return schema_; }\n";
-        out += "    std::string currentRule() const override { return current_; }\n";
+        out += "    std::string currentRule() const override { return std::string(current_); }\n";
         out += "    std::optional<SourceLocation> locate(const std::exception& e) const override {\n"
                "        const auto* p = dynamic_cast<const PlacedError*>(&e);\n"
                "        if (!p || p->place < 0) return std::nullopt;\n"
@@ -183,7 +183,7 @@ private:
     std::string emitStart() {
         const std::string in = "            ";
         std::string out = "    void start(const std::vector<Value>& params, Rng& rng) override {\n";
-        out += "        (void)params;\n        rng_ = &rng;\n        current_.clear();\n        pending_.clear();\n        try {\n";
+        out += "        (void)params;\n        rng_ = &rng;\n        current_ = \"\";\n        pending_.clear();\n        try {\n";
         for (std::size_t i = 0; i < prog_.params.size(); ++i)
             out += in + "P_.p" + str(static_cast<long long>(i)) + " = " + fromValue(prog_.params[i].type, "params[" + str(static_cast<long long>(i)) + "]") + ";\n";
         for (std::size_t i = 0; i < prog_.consts.size(); ++i) {
@@ -387,7 +387,7 @@ private:
     }
 
     std::string emitMembers() {
-        std::string out = "    Params P_;\n    Consts C_;\n    Rng* rng_ = nullptr;\n    int loc_ = -1;\n    std::string current_;\n";
+        std::string out = "    Params P_;\n    Consts C_;\n    Rng* rng_ = nullptr;\n    int loc_ = -1;\n    const char* current_ = \"\";  // the rule being matched or applied (no copy in the hot path)\n";
         out += "    Graph graph_;\n    std::vector<ParamSpec> specs_;\n    JsonSchema schema_;\n    std::vector<std::string> defs_;\n";
         out += "    std::vector<RuleInfo> infos_;\n    std::vector<std::function<void(Graph&, long long)>> pending_;\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
