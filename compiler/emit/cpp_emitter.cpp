@@ -1,5 +1,7 @@
 #include "emit/cpp_emitter.hpp"
 
+#include <functional>
+
 #include "emit/cpp_expr.hpp"
 #include "emit/cpp_rules.hpp"
 
@@ -50,8 +52,11 @@ public:
         std::string start = emitStart();
         std::string limits = emitLimits();
         std::string rules;
-        for (std::size_t r = 0; r < prog_.rules.size(); ++r)
-            rules += emitRule(prog_, prog_.rules[r], static_cast<int>(r), gen_, places_);
+        int firstDaughter = 0;
+        for (std::size_t r = 0; r < prog_.rules.size(); ++r) {
+            rules += emitRule(prog_, prog_.rules[r], static_cast<int>(r), firstDaughter, gen_, places_);
+            firstDaughter += static_cast<int>(prog_.rules[r].daughters.size());
+        }
         std::string styles = emitStyles();
 
         std::string out;
@@ -183,7 +188,7 @@ private:
     std::string emitStart() {
         const std::string in = "            ";
         std::string out = "    void start(const std::vector<Value>& params, Rng& rng) override {\n";
-        out += "        (void)params;\n        rng_ = &rng;\n        current_ = \"\";\n        pending_.clear();\n        try {\n";
+        out += "        (void)params;\n        rng_ = &rng;\n        current_ = \"\";\n        clearPending();\n        try {\n";
         for (std::size_t i = 0; i < prog_.params.size(); ++i)
             out += in + "P_.p" + str(static_cast<long long>(i)) + " = " + fromValue(prog_.params[i].type, "params[" + str(static_cast<long long>(i)) + "]") + ";\n";
         for (std::size_t i = 0; i < prog_.consts.size(); ++i) {
@@ -214,7 +219,7 @@ private:
             if (attrs) out += in + "Kind" + str(n.kind) + " arec" + si + " = default_" + str(n.kind) + ";\n";
             for (const auto& a : n.assigns)
                 out += in + "arec" + si + ".a" + str(a.attr) + " = " + gen_.gen(a.value, noElements(), out, in) + ";\n";
-            out += in + "const NodeId an" + si + " = graph_.addNode(" + str(n.kind) + ", apos" + si + ", 0, {});\n" + in + "(void)an" + si + ";\n";
+            out += in + "const NodeId an" + si + " = graph_.addNode(" + str(n.kind) + ", apos" + si + ", 0);\n" + in + "(void)an" + si + ";\n";
             if (attrs) out += in + "graph_.setNodeSlot(an" + si + ", store_" + str(n.kind) + ".add(arec" + si + "));\n";
             for (const auto& s : n.styles)
                 out += in + "graph_.setNodeStyle(an" + si + ", " + cppString(s.prop) + ", " +
@@ -227,7 +232,7 @@ private:
             if (attrs) out += in + "Kind" + str(e.kind) + " erec" + si + " = default_" + str(e.kind) + ";\n";
             for (const auto& a : e.assigns)
                 out += in + "erec" + si + ".a" + str(a.attr) + " = " + gen_.gen(a.value, noElements(), out, in) + ";\n";
-            out += in + "const EdgeId ae" + si + " = graph_.addEdge(" + str(e.kind) + ", an" + str(e.src) + ", an" + str(e.dst) + ", 0, {});\n" + in + "(void)ae" + si + ";\n";
+            out += in + "const EdgeId ae" + si + " = graph_.addEdge(" + str(e.kind) + ", an" + str(e.src) + ", an" + str(e.dst) + ", 0);\n" + in + "(void)ae" + si + ";\n";
             if (attrs) out += in + "graph_.setEdgeSlot(ae" + si + ", store_" + str(e.kind) + ".add(erec" + si + "));\n";
             for (const auto& s : e.styles)
                 out += in + "graph_.setEdgeStyle(ae" + si + ", " + cppString(s.prop) + ", " +
@@ -291,32 +296,58 @@ private:
         names += "};\n";
         std::string out = "    std::size_t ruleCount() const override { return " + str(static_cast<long long>(n)) + "; }\n";
         out += "    const RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }\n\n";
-        out += "    void findMatches(std::size_t rule, const Graph& g, std::vector<Match>& out) override {\n" + names;
-        out += "        current_ = names[rule];\n        try {\n            switch (rule) {\n";
-        for (std::size_t r = 0; r < n; ++r)
-            out += "            case " + str(static_cast<long long>(r)) + ": match_" + str(static_cast<long long>(r)) + "(g, out); break;\n";
-        out += "            default: break;\n            }\n        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
-        out += "    void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, std::vector<Match>& out) override {\n" + names;
+        // Dispatch by switch: these run for every anchored search and every rewrite.
+        auto perRule = [&](const std::string& inner, const std::function<std::string(std::size_t)>& body) {
+            std::string t = inner + "switch (rule) {\n";
+            for (std::size_t r = 0; r < n; ++r) t += inner + "case " + str(static_cast<long long>(r)) + ":\n" + body(r) + inner + "    break;\n";
+            return t + inner + "default: break;\n" + inner + "}\n";
+        };
+        auto perDaughter = [&](const std::string& inner, const std::string& call) {
+            return perRule(inner, [&](std::size_t r) {
+                std::string t = inner + "    switch (daughter) {\n";
+                for (std::size_t d = 0; d < prog_.rules[r].daughters.size(); ++d) {
+                    const std::string rd = str(static_cast<long long>(r)) + "_" + str(static_cast<long long>(d));
+                    t += inner + "    case " + str(static_cast<long long>(d)) + ": " + call.substr(0, call.find('@')) + rd +
+                         call.substr(call.find('@') + 1) + "; break;\n";
+                }
+                return t + inner + "    default: break;\n" + inner + "    }\n";
+            });
+        };
+        const std::string catchOp = "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n";
+        out += "    void findMatches(std::size_t rule, const Graph& g, MatchBuffer& out) override {\n" + names;
         out += "        current_ = names[rule];\n        try {\n";
-        for (std::size_t r = 0; r < n; ++r)
+        out += perRule("            ", [&](std::size_t r) { return "                match_" + str(static_cast<long long>(r)) + "(g, out);\n"; });
+        out += catchOp + "    }\n\n";
+        out += "    void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out) override {\n" + names;
+        out += "        current_ = names[rule];\n        try {\n";
+        out += perRule("            ", [&](std::size_t r) {
+            std::string t = "                switch (node) {\n";
             for (std::size_t a = 0; a < prog_.rules[r].nodes.size(); ++a)
-                out += "            if (rule == " + str(static_cast<long long>(r)) + " && node == " + str(static_cast<long long>(a)) +
-                       ") match_" + str(static_cast<long long>(r)) + "_a" + str(static_cast<long long>(a)) + "(g, host, out);\n";
-        out += "            (void)node; (void)host; (void)g; (void)out;\n        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
-        out += "    WriteSet writeSet(std::size_t rule, std::size_t daughter, const Match& m) const override {\n";
-        for (std::size_t r = 0; r < n; ++r)
-            for (std::size_t d = 0; d < prog_.rules[r].daughters.size(); ++d)
-                out += "        if (rule == " + str(static_cast<long long>(r)) + " && daughter == " + str(static_cast<long long>(d)) + ") return writes_" +
-                       str(static_cast<long long>(r)) + "_" + str(static_cast<long long>(d)) + "(m);\n";
-        out += "        (void)rule; (void)daughter; (void)m;\n        return {};\n    }\n\n";
-        out += "    void prepare(std::size_t rule, std::size_t daughter, const Match& m, const Graph& g, Rng& rng, long long) override {\n" + names;
+                t += "                case " + str(static_cast<long long>(a)) + ": match_" + str(static_cast<long long>(r)) + "_a" +
+                     str(static_cast<long long>(a)) + "(g, host, out); break;\n";
+            return t + "                default: break;\n                }\n";
+        });
+        out += "            (void)node; (void)host; (void)g; (void)out;\n" + catchOp + "    }\n\n";
+        out += "    void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& w) const override {\n";
+        out += perDaughter("        ", "writes_@(m, w)");
+        out += "        (void)daughter; (void)m; (void)w;\n    }\n\n";
+        out += "    void prepare(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng, long long) override {\n" + names;
         out += "        rng_ = &rng;\n        current_ = names[rule];\n        try {\n";
+        out += perDaughter("            ", "prepare_@(m, g)");
+        out += "            (void)daughter; (void)m; (void)g;\n" + catchOp + "    }\n\n";
+        // Prepared rewrites are applied in the order they were prepared.
+        out += "    void commit(Graph& G, long long step) override {\n        for (const PendingRef& ref : pendingOrder_) {\n";
+        out += "            switch (ref.daughter) {\n";
+        std::string clears;
+        int key = 0;
         for (std::size_t r = 0; r < n; ++r)
-            for (std::size_t d = 0; d < prog_.rules[r].daughters.size(); ++d)
-                out += "            if (rule == " + str(static_cast<long long>(r)) + " && daughter == " + str(static_cast<long long>(d)) + ") prepare_" +
-                       str(static_cast<long long>(r)) + "_" + str(static_cast<long long>(d)) + "(m, g);\n";
-        out += "            (void)daughter; (void)m; (void)g;\n        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
-        out += "    void commit(Graph& G, long long step) override {\n        for (auto& apply : pending_) apply(G, step);\n        pending_.clear();\n    }\n\n";
+            for (std::size_t d = 0; d < prog_.rules[r].daughters.size(); ++d, ++key) {
+                const std::string rd = str(static_cast<long long>(r)) + "_" + str(static_cast<long long>(d));
+                out += "            case " + str(static_cast<long long>(key)) + ": apply_" + rd + "(G, step, pending_" + rd + "_[ref.index]); break;\n";
+                clears += "        pending_" + rd + "_.clear();\n";
+            }
+        out += "            default: break;\n            }\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
+        out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";
         return out;
     }
 
@@ -389,7 +420,8 @@ private:
     std::string emitMembers() {
         std::string out = "    Params P_;\n    Consts C_;\n    Rng* rng_ = nullptr;\n    int loc_ = -1;\n    const char* current_ = \"\";  // the rule being matched or applied (no copy in the hot path)\n";
         out += "    Graph graph_;\n    std::vector<ParamSpec> specs_;\n    JsonSchema schema_;\n    std::vector<std::string> defs_;\n";
-        out += "    std::vector<RuleInfo> infos_;\n    std::vector<std::function<void(Graph&, long long)>> pending_;\n";
+        out += "    std::vector<RuleInfo> infos_;\n";
+        out += "    struct PendingRef {\n        std::uint32_t daughter, index;\n    };\n    std::vector<PendingRef> pendingOrder_;\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             if (prog_.kinds[k].attrs.empty()) continue;
             const std::string sk = str(static_cast<long long>(k));

@@ -12,8 +12,8 @@ std::string str(int i) { return std::to_string(i); }
 
 class RuleEmitter {
 public:
-    RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, ExprGen& gen, Places& places)
-        : prog_(prog), r_(r), ri_(str(index)), gen_(gen), places_(places) {}
+    RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places)
+        : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen), places_(places) {}
 
     std::string emit() {
         std::string out;
@@ -114,22 +114,17 @@ private:
             const auto& pe = edgeOf(s.edge, nac);
             const bool directed = prog_.kinds[pe.kind].directed;
             const int farKind = nodeKind(s.node, nac);
-            const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
             const std::string from = "n[" + str(s.from) + "]";
-            out += in + "{\n" + next + "const auto& " + l + " = g.incident(" + from + ");\n";
-            out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
-            const std::string body = next + "    ";
             const std::string ed = "e[" + str(s.edge) + "]", nd = "n[" + str(s.node) + "]";
-            out += body + ed + " = " + l + "[" + c + "];\n";
+            const std::string body = next + "    ";
+            out += in + "{\n" + edgeLoop(static_cast<int>(i), from, ed, directed, s.fromIsSource, next);
             const std::string used = notUsedEdge(ed);
             out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
                    ") continue;\n";
-            if (directed) {
-                out += body + "if (" + std::string(s.fromIsSource ? "g.source(" : "g.target(") + ed + ") != " + from + ") continue;\n";
+            if (directed)
                 out += body + nd + " = " + (s.fromIsSource ? "g.target(" : "g.source(") + ed + ");\n";
-            } else {
+            else
                 out += body + nd + " = g.source(" + ed + ") == " + from + " ? g.target(" + ed + ") : g.source(" + ed + ");\n";
-            }
             std::string test = farKind >= 0 ? "g.nodeKind(" + nd + ") == " + str(farKind) : "true";
             test += notUsedNode(nd);
             const std::string ord = orderedTest(s.node, boundNodes);
@@ -144,18 +139,15 @@ private:
         case PlanStep::Op::ConnectEdge: {
             const auto& pe = edgeOf(s.edge, nac);
             const bool directed = prog_.kinds[pe.kind].directed;
-            const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
             const std::string hs = "n[" + str(s.from) + "]", hd = "n[" + str(s.node) + "]";
-            out += in + "{\n" + next + "const auto& " + l + " = g.incident(" + hs + ");\n";
-            out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
-            const std::string body = next + "    ";
             const std::string ed = "e[" + str(s.edge) + "]";
-            out += body + ed + " = " + l + "[" + c + "];\n";
+            const std::string body = next + "    ";
+            out += in + "{\n" + edgeLoop(static_cast<int>(i), hs, ed, directed, true, next);
             std::string used = notUsedEdge(ed);
             out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
                    ") continue;\n";
             const std::string a = "g.source(" + ed + ")", b = "g.target(" + ed + ")";
-            const std::string fits = directed ? "(" + a + " == " + hs + " && " + b + " == " + hd + ")"
+            const std::string fits = directed ? "(" + b + " == " + hd + ")"
                                               : "((" + a + " == " + hs + " && " + b + " == " + hd + ") || (" + a +
                                                     " == " + hd + " && " + b + " == " + hs + "))";
             out += body + "if (!" + fits + ") continue;\n";
@@ -166,6 +158,24 @@ private:
             return;
         }
         }
+    }
+
+    // The loop header over the edges at `from` that may bind `ed`: a directed
+    // edge among `from`'s outgoing (or incoming) edges only, an undirected one
+    // among both (outgoing first, self-loops once), as the interpreter.
+    static std::string edgeLoop(int step, const std::string& from, const std::string& ed, bool directed, bool outgoing,
+                                const std::string& in) {
+        const std::string x = "x" + str(step);
+        if (directed) {
+            const std::string first = outgoing ? "g.firstOut(" : "g.firstIn(", next = outgoing ? "g.nextOut(" : "g.nextIn(";
+            return in + "for (EdgeId " + x + " = " + first + from + "); " + x + " != kNoId; " + x + " = " + next + x + ")) {\n" +
+                   in + "    " + ed + " = " + x + ";\n";
+        }
+        const std::string ph = "ph" + str(step);
+        return in + "for (int " + ph + " = 0; " + ph + " < 2; ++" + ph + ")\n" + in + "for (EdgeId " + x + " = " + ph +
+               " == 0 ? g.firstOut(" + from + ") : g.firstIn(" + from + "); " + x + " != kNoId; " + x + " = " + ph +
+               " == 0 ? g.nextOut(" + x + ") : g.nextIn(" + x + ")) {\n" + in + "    if (" + ph + " == 1 && g.source(" + x +
+               ") == g.target(" + x + ")) continue;\n" + in + "    " + ed + " = " + x + ";\n";
     }
 
     std::string arrays() const {
@@ -180,20 +190,16 @@ private:
 
     // The full matcher (anchor -1), or the one with pattern node `anchor` bound to `host`.
     std::string matcher(int anchor) {
-        std::string out = anchor < 0 ? "    void match_" + ri_ + "(const Graph& g, std::vector<Match>& out) {\n"
+        std::string out = anchor < 0 ? "    void match_" + ri_ + "(const Graph& g, MatchBuffer& out) {\n"
                                      : "    void match_" + ri_ + "_a" + str(anchor) +
-                                           "(const Graph& g, NodeId host, std::vector<Match>& out) {\n";
+                                           "(const Graph& g, NodeId host, MatchBuffer& out) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
         out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
         if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
         std::string complete = "";
         std::string nacTest = "true";
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
-        std::string push = "out.push_back(Match{{";
-        for (std::size_t i = 0; i < r_.nodes.size(); ++i) push += (i ? ", " : "") + std::string("n[") + str(static_cast<int>(i)) + "]";
-        push += "}, {";
-        for (std::size_t i = 0; i < r_.edges.size(); ++i) push += (i ? ", " : "") + std::string("e[") + str(static_cast<int>(i)) + "]";
-        push += "}});";
+        const std::string push = "out.add(n, e);";
         std::string body;
         if (anchor < 0) steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
         else steps(r_.anchoredPlans[anchor], 0, nullptr, {anchor}, {}, "@@COMPLETE@@", body, "        ");
@@ -220,7 +226,7 @@ private:
 
     std::string writeSet(int di) {
         const auto& d = r_.daughters[di];
-        std::string out = "    WriteSet writes_" + ri_ + "_" + str(di) + "(const Match& m) const {\n        (void)m;\n        WriteSet w;\n";
+        std::string out = "    void writes_" + ri_ + "_" + str(di) + "(Match m, WriteSet& w) const {\n        (void)m;\n        (void)w;\n";
         for (int n : d.deletedNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
         for (int e : d.deletedEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
         for (const auto& dn : d.nodes)
@@ -233,7 +239,7 @@ private:
             if (rewired || !de.assigns.empty() || !de.styles.empty())
                 out += "        w.edges.push_back(m.edges[" + str(de.motherEdge) + "]);\n";
         }
-        return out + "        return w;\n    }\n\n";
+        return out + "    }\n\n";
     }
 
     std::string styleValue(const ir::Type& t, const std::string& v) const {
@@ -244,7 +250,10 @@ private:
     std::string prepare(int di) {
         const auto& d = r_.daughters[di];
         const std::string in = "        ";
-        std::string out = "    void prepare_" + ri_ + "_" + str(di) + "(const Match& m, const Graph& g) {\n        (void)m;\n        (void)g;\n";
+        const std::string rd = ri_ + "_" + str(di);
+        std::string out = "    void prepare_" + rd + "(Match m, const Graph& g) {\n        (void)m;\n        (void)g;\n";
+        // What the rewrite needs at commit time: (type, name) of each value.
+        std::vector<std::pair<std::string, std::string>> kept;
         ExprContext ctx;
         ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
         ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
@@ -272,16 +281,22 @@ private:
                 out += in + "const vec2 pos" + si + " = " + v + ";\n";
                 out += in + "if (!std::isfinite(pos" + si + ".x) || !std::isfinite(pos" + si + ".y)) throw PlacedError(" +
                        str(places_.add(dn.position->span)) + ", " + cppString("position of `" + dn.name + "` is not finite") + ");\n";
+                kept.emplace_back("vec2", "pos" + si);
             } else if (dn.motherNode < 0) {
                 out += in + "const vec2 pos" + si + " = *placed[" + si + "];\n";
+                kept.emplace_back("vec2", "pos" + si);
             }
             for (std::size_t a = 0; a < dn.assigns.size(); ++a) {
                 const std::string v = gen_.gen(dn.assigns[a].value, ctx, out, in);
-                out += in + "const auto nv" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+                const std::string name = "nv" + si + "_" + str(static_cast<int>(a));
+                out += in + "const auto " + name + " = " + v + ";\n";
+                kept.emplace_back(cppType(dn.assigns[a].value.type), name);
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a) {
                 const std::string v = gen_.gen(dn.styles[a].value, ctx, out, in);
-                out += in + "const auto ns" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+                const std::string name = "ns" + si + "_" + str(static_cast<int>(a));
+                out += in + "const auto " + name + " = " + v + ";\n";
+                kept.emplace_back(cppType(dn.styles[a].value.type), name);
             }
         }
         for (std::size_t i = 0; i < d.edges.size(); ++i) {
@@ -289,17 +304,21 @@ private:
             const std::string si = str(static_cast<int>(i));
             for (std::size_t a = 0; a < de.assigns.size(); ++a) {
                 const std::string v = gen_.gen(de.assigns[a].value, ctx, out, in);
-                out += in + "const auto ev" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+                const std::string name = "ev" + si + "_" + str(static_cast<int>(a));
+                out += in + "const auto " + name + " = " + v + ";\n";
+                kept.emplace_back(cppType(de.assigns[a].value.type), name);
             }
             for (std::size_t a = 0; a < de.styles.size(); ++a) {
                 const std::string v = gen_.gen(de.styles[a].value, ctx, out, in);
-                out += in + "const auto es" + si + "_" + str(static_cast<int>(a)) + " = " + v + ";\n";
+                const std::string name = "es" + si + "_" + str(static_cast<int>(a));
+                out += in + "const auto " + name + " = " + v + ";\n";
+                kept.emplace_back(cppType(de.styles[a].value.type), name);
             }
         }
         // The rewrite, applied at commit time, in the interpreter's order:
         // deleted edges go; new nodes come; kept edges that change ends are
         // reconnected; deleted nodes go; kept nodes change; edges are updated or made.
-        const std::string c = "            ";
+        const std::string c = "        ";
         commit += c + "(void)step;\n" + c + "(void)G;\n";
         for (int e : d.deletedEdges) commit += c + "G.removeEdge(m.edges[" + str(e) + "]);\n";
         for (std::size_t i = 0; i < d.nodes.size(); ++i) {
@@ -309,7 +328,7 @@ private:
                 commit += c + "const NodeId h" + si + " = m.nodes[" + str(dn.motherNode) + "];\n" + c + "(void)h" + si + ";\n";
                 continue;
             }
-            commit += c + "const NodeId h" + si + " = G.addNode(" + str(dn.kind) + ", pos" + si + ", step, {});\n" + c + "(void)h" + si + ";\n";
+            commit += c + "const NodeId h" + si + " = G.addNode(" + str(dn.kind) + ", pos" + si + ", step);\n" + c + "(void)h" + si + ";\n";
             if (!prog_.kinds[dn.kind].attrs.empty()) {
                 commit += c + "{\n" + c + "    Kind" + str(dn.kind) + " rec = default_" + str(dn.kind) + ";\n";
                 for (std::size_t a = 0; a < dn.assigns.size(); ++a)
@@ -350,7 +369,7 @@ private:
                               str(static_cast<int>(a)) + ";\n";
                 if (!de.assigns.empty()) commit += c + "G.touchEdge(k" + si + ");\n";
             } else {
-                commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step, {});\n" + c + "(void)k" + si + ";\n";
+                commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step);\n" + c + "(void)k" + si + ";\n";
                 if (!prog_.kinds[de.kind].attrs.empty()) {
                     commit += c + "{\n" + c + "    Kind" + str(de.kind) + " rec = default_" + str(de.kind) + ";\n";
                     for (std::size_t a = 0; a < de.assigns.size(); ++a)
@@ -362,8 +381,23 @@ private:
                 commit += c + "G.setEdgeStyle(k" + si + ", " + cppString(de.styles[a].prop) + ", " +
                           styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
         }
-        out += in + "pending_.push_back([=, this](Graph& G, long long step) {\n" + commit + in + "});\n";
-        return out + "    }\n\n";
+        // Kept in a typed buffer until commit (no allocation once warm).
+        const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));
+        const std::string ne = str(static_cast<int>(std::max<std::size_t>(r_.edges.size(), 1)));
+        std::string record = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n";
+        for (const auto& [type, name] : kept) record += "        " + type + " " + name + ";\n";
+        record += "    };\n    std::vector<Pending_" + rd + "> pending_" + rd + "_;\n\n";
+        out += in + "Pending_" + rd + "& p = pending_" + rd + "_.emplace_back();\n";
+        out += in + "std::copy(m.nodes, m.nodes + " + str(static_cast<int>(r_.nodes.size())) + ", p.mn);\n";
+        out += in + "std::copy(m.edges, m.edges + " + str(static_cast<int>(r_.edges.size())) + ", p.me);\n";
+        for (const auto& kv : kept) out += in + "p." + kv.second + " = " + kv.second + ";\n";
+        out += in + "pendingOrder_.push_back(PendingRef{" + str(firstDaughter_ + di) + ", static_cast<std::uint32_t>(pending_" + rd +
+               "_.size() - 1)});\n";
+        out += "    }\n\n";
+        std::string apply = "    void apply_" + rd + "(Graph& G, long long step, const Pending_" + rd + "& p) {\n";
+        apply += "        const Match m{p.mn, p.me};\n        (void)m;\n";
+        for (const auto& kv : kept) apply += "        const auto& " + kv.second + " = p." + kv.second + ";\n";
+        return record + out + apply + commit + "    }\n\n";
     }
 
     std::string placement(const ir::Daughter& d, const std::string& in) {
@@ -404,14 +438,16 @@ private:
     const ir::Program& prog_;
     const ir::Rule& r_;
     std::string ri_;
+    int firstDaughter_;
     ExprGen& gen_;
     Places& places_;
 };
 
 }  // namespace
 
-std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, ExprGen& gen, Places& places) {
-    return RuleEmitter(prog, rule, ruleIndex, gen, places).emit();
+std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
+                     Places& places) {
+    return RuleEmitter(prog, rule, ruleIndex, firstDaughter, gen, places).emit();
 }
 
 }  // namespace g2d::emit

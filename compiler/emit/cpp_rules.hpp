@@ -7,6 +7,9 @@
 
 namespace g2d::emit {
 
-std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, ExprGen& gen, Places& places);
+// `firstDaughter` numbers the rule's first daughter among all rules' daughters
+// (the key of its pending rewrites).
+std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
+                     Places& places);
 
 }  // namespace g2d::emit

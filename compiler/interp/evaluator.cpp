@@ -206,13 +206,13 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     case ExprOp::Local: return (*f.locals)[e.index];
     case ExprOp::FnArg: return (*f.fnArgs)[e.index];
     case ExprOp::Attr:
-        if (e.elem.cls == ir::ElemClass::Edge) return f.graph->edgeAttr((*f.edges)[e.elem.index], e.index);
-        return f.graph->nodeAttr((*f.nodes)[e.elem.index], e.index);
+        if (e.elem.cls == ir::ElemClass::Edge) return f.graph->edgeAttr(f.edges[e.elem.index], e.index);
+        return f.graph->nodeAttr(f.nodes[e.elem.index], e.index);
     case ExprOp::SelfAttr:
         return f.selfIsEdge ? f.graph->edgeAttr(f.self, e.index) : f.graph->nodeAttr(f.self, e.index);
     case ExprOp::Fact: {
         const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
-        return fact(e, f, isEdge, isEdge ? (*f.edges)[e.elem.index] : (*f.nodes)[e.elem.index]);
+        return fact(e, f, isEdge, isEdge ? f.edges[e.elem.index] : f.nodes[e.elem.index]);
     }
     case ExprOp::SelfFact: return fact(e, f, f.selfIsEdge, f.self);
     case ExprOp::Placed: return *(*f.placed)[e.index];

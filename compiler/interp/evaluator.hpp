@@ -25,8 +25,8 @@ struct EvalFrame {
     std::vector<rt::Value>* locals = nullptr;
     const std::vector<rt::Value>* fnArgs = nullptr;
     const rt::Graph* graph = nullptr;
-    const std::vector<rt::NodeId>* nodes = nullptr;  // the match's host nodes, by pattern index
-    const std::vector<rt::EdgeId>* edges = nullptr;
+    const rt::NodeId* nodes = nullptr;  // the match's host nodes, by pattern index
+    const rt::EdgeId* edges = nullptr;
     rt::Rng* rng = nullptr;
     const std::vector<std::optional<rt::vec2>>* placed = nullptr;  // automatic positions, by daughter node
     bool selfIsEdge = false;                          // kind style expressions

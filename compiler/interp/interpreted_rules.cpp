@@ -71,25 +71,22 @@ bool InterpretedRules::orderedOk(const rt::Graph& g, const ir::Rule& r, int node
     return true;
 }
 
+template <class OnComplete>
 bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                              const std::vector<PlanStep>& plan, std::size_t i, const std::function<bool()>& onComplete) {
+                              const std::vector<PlanStep>& plan, std::size_t i, OnComplete& onComplete) {
     if (i == plan.size()) return onComplete();
     const PlanStep& s = plan[i];
     auto nodeKind = [&](int idx) {
         return idx < static_cast<int>(r.nodes.size()) ? r.nodes[idx].kind : nac->nodes[idx - nac->outerNodes].kind;
     };
-    auto edgeOf = [&](int idx) -> const ir::PatternEdge& {
-        return idx < static_cast<int>(r.edges.size()) ? r.edges[idx] : nac->edges[idx - nac->outerEdges];
-    };
     auto nodeUsed = [&](NodeId h) { return std::find(boundNodes_.begin(), boundNodes_.end(), h) != boundNodes_.end(); };
-    auto edgeUsed = [&](EdgeId h) { return std::find(boundEdges_.begin(), boundEdges_.end(), h) != boundEdges_.end(); };
 
     switch (s.op) {
     case PlanStep::Op::Check: {
         EvalFrame f = st_.frame(nullptr);
         f.graph = &g;
-        f.nodes = &boundNodes_;
-        f.edges = &boundEdges_;
+        f.nodes = boundNodes_.data();
+        f.edges = boundEdges_.data();
         const auto& cond = nac ? nac->conditions[s.condition] : r.conditions[s.condition];
         return evaluateBool(cond.expr, f) && search(g, r, nac, plan, i + 1, onComplete);
     }
@@ -106,81 +103,83 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
         }
         return false;
     }
-    case PlanStep::Op::ExtendEdge: {
-        const auto& pe = edgeOf(s.edge);
-        const bool directed = g.kinds()[pe.kind].directed;
-        const NodeId from = boundNodes_[s.from];
-        const int farKind = nodeKind(s.node);
-        const auto& incident = g.incident(from);
-        for (std::size_t c = 0; c < incident.size(); ++c) {
-            const EdgeId e = incident[c];
-            if (g.edgeKind(e) != pe.kind || edgeUsed(e)) continue;
-            NodeId other;
-            if (directed) {
-                if (s.fromIsSource ? g.source(e) != from : g.target(e) != from) continue;
-                other = s.fromIsSource ? g.target(e) : g.source(e);
-            } else {
-                other = g.source(e) == from ? g.target(e) : g.source(e);
-            }
-            if ((farKind >= 0 && g.nodeKind(other) != farKind) || nodeUsed(other)) continue;
-            boundEdges_[s.edge] = e;
-            boundNodes_[s.node] = other;
-            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
-            boundNodes_[s.node] = kNoId;
-            boundEdges_[s.edge] = kNoId;
-            if (stop) return true;
-        }
-        return false;
-    }
+    case PlanStep::Op::ExtendEdge:
     case PlanStep::Op::ConnectEdge: {
-        const auto& pe = edgeOf(s.edge);
-        const bool directed = g.kinds()[pe.kind].directed;
-        const NodeId hs = boundNodes_[s.from], hd = boundNodes_[s.node];
-        const auto& incident = g.incident(hs);
-        for (std::size_t c = 0; c < incident.size(); ++c) {
-            const EdgeId e = incident[c];
-            if (g.edgeKind(e) != pe.kind || edgeUsed(e)) continue;
-            const NodeId a = g.source(e), b = g.target(e);
-            const bool fits = directed ? (a == hs && b == hd) : ((a == hs && b == hd) || (a == hd && b == hs));
-            if (!fits) continue;
-            boundEdges_[s.edge] = e;
-            const bool stop = search(g, r, nac, plan, i + 1, onComplete);
-            boundEdges_[s.edge] = kNoId;
-            if (stop) return true;
-        }
+        // A directed edge is looked for among the bound end's outgoing or
+        // incoming edges only; an undirected one among both.
+        const auto& pe = s.edge < static_cast<int>(r.edges.size()) ? r.edges[s.edge] : nac->edges[s.edge - nac->outerEdges];
+        const NodeId from = boundNodes_[s.from];
+        const bool outgoing = s.op == PlanStep::Op::ConnectEdge || s.fromIsSource;
+        if (!g.kinds()[pe.kind].directed || outgoing)
+            for (EdgeId e = g.firstOut(from); e != kNoId; e = g.nextOut(e))
+                if (tryEdge(g, r, nac, plan, i, onComplete, e)) return true;
+        if (!g.kinds()[pe.kind].directed || !outgoing)
+            for (EdgeId e = g.firstIn(from); e != kNoId; e = g.nextIn(e))
+                if (g.source(e) != g.target(e) && tryEdge(g, r, nac, plan, i, onComplete, e)) return true;
         return false;
     }
     }
     return false;
 }
 
+// One candidate edge for an ExtendEdge or ConnectEdge step.
+template <class OnComplete>
+bool InterpretedRules::tryEdge(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
+                               const std::vector<PlanStep>& plan, std::size_t i, OnComplete& onComplete, EdgeId e) {
+    const PlanStep& s = plan[i];
+    const auto& pe = s.edge < static_cast<int>(r.edges.size()) ? r.edges[s.edge] : nac->edges[s.edge - nac->outerEdges];
+    if (g.edgeKind(e) != pe.kind) return false;
+    if (std::find(boundEdges_.begin(), boundEdges_.end(), e) != boundEdges_.end()) return false;
+    const bool directed = g.kinds()[pe.kind].directed;
+    const NodeId from = boundNodes_[s.from];
+    if (s.op == PlanStep::Op::ConnectEdge) {
+        const NodeId hd = boundNodes_[s.node];
+        const NodeId a = g.source(e), b = g.target(e);
+        const bool fits = directed ? (a == from && b == hd) : ((a == from && b == hd) || (a == hd && b == from));
+        if (!fits) return false;
+        boundEdges_[s.edge] = e;
+        const bool stop = search(g, r, nac, plan, i + 1, onComplete);
+        boundEdges_[s.edge] = kNoId;
+        return stop;
+    }
+    if (directed && (s.fromIsSource ? g.source(e) != from : g.target(e) != from)) return false;
+    const NodeId other = g.source(e) == from ? g.target(e) : g.source(e);
+    const int farKind = s.node < static_cast<int>(r.nodes.size()) ? r.nodes[s.node].kind
+                                                                   : nac->nodes[s.node - nac->outerNodes].kind;
+    if (farKind >= 0 && g.nodeKind(other) != farKind) return false;
+    if (std::find(boundNodes_.begin(), boundNodes_.end(), other) != boundNodes_.end()) return false;
+    boundEdges_[s.edge] = e;
+    boundNodes_[s.node] = other;
+    const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
+    boundNodes_[s.node] = kNoId;
+    boundEdges_[s.edge] = kNoId;
+    return stop;
+}
+
 bool InterpretedRules::nacsHold(const rt::Graph& g, const ir::Rule& r) {
+    auto found = [] { return true; };
     for (const auto& nac : r.nacs)
-        if (search(g, r, &nac, nac.plan, 0, [] { return true; })) return false;
+        if (search(g, r, &nac, nac.plan, 0, found)) return false;
     return true;
 }
 
 void InterpretedRules::collect(const rt::Graph& g, const ir::Rule& r, const std::vector<PlanStep>& plan,
-                               std::vector<rt::Match>& out) {
-    search(g, r, nullptr, plan, 0, [&] {
-        if (nacsHold(g, r)) {
-            rt::Match m;
-            m.nodes.assign(boundNodes_.begin(), boundNodes_.begin() + static_cast<long>(r.nodes.size()));
-            m.edges.assign(boundEdges_.begin(), boundEdges_.begin() + static_cast<long>(r.edges.size()));
-            out.push_back(std::move(m));
-        }
+                               rt::MatchBuffer& out) {
+    auto record = [&] {
+        if (nacsHold(g, r)) out.add(boundNodes_.data(), boundEdges_.data());
         return false;  // enumerate them all
-    });
+    };
+    search(g, r, nullptr, plan, 0, record);
 }
 
-void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) {
+void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) {
     const ir::Rule& r = st_.prog->rules[rule];
     current_ = &r;
     collect(g, r, r.plan, out);
 }
 
 void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
-                                    std::vector<rt::Match>& out) {
+                                    rt::MatchBuffer& out) {
     const ir::Rule& r = st_.prog->rules[rule];
     current_ = &r;
     boundNodes_[node] = host;
@@ -190,10 +189,9 @@ void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int no
 
 // ---- rewriting ------------------------------------------------------------------
 
-rt::WriteSet InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, const rt::Match& m) const {
+void InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& w) const {
     const ir::Rule& r = st_.prog->rules[rule];
     const ir::Daughter& d = r.daughters[daughter];
-    rt::WriteSet w;
     for (int n : d.deletedNodes) w.nodes.push_back(m.nodes[n]);
     for (int e : d.deletedEdges) w.edges.push_back(m.edges[e]);
     for (const auto& dn : d.nodes)
@@ -205,18 +203,17 @@ rt::WriteSet InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, 
         const bool rewired = d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst;
         if (rewired || !de.assigns.empty() || !de.styles.empty()) w.edges.push_back(m.edges[de.motherEdge]);
     }
-    return w;
 }
 
-InterpretedRules::Values InterpretedRules::evaluateValues(const std::vector<ir::AttrAssign>& attrs,
-                                                          const std::vector<ir::StyleAssign>& styles, EvalFrame& f) {
-    Values v;
+void InterpretedRules::evaluateValues(const std::vector<ir::AttrAssign>& attrs,
+                                      const std::vector<ir::StyleAssign>& styles, EvalFrame& f, Values& v) {
+    v.attrs.clear();
+    v.styles.clear();
     for (const auto& a : attrs) v.attrs.emplace_back(a.attr, evaluate(a.value, f));
     for (const auto& s : styles) v.styles.emplace_back(s.prop, evaluate(s.value, f));
-    return v;
 }
 
-void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt::Match& m, const rt::Graph& g,
+void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
                                rt::Rng& rng, long long) {
     const ir::Rule& r = st_.prog->rules[rule];
     const ir::Daughter& d = r.daughters[daughter];
@@ -224,18 +221,24 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt:
     locals_.assign(static_cast<std::size_t>(r.localSlots), rt::Value{});
     EvalFrame f = st_.frame(&rng);
     f.graph = &g;
-    f.nodes = &m.nodes;
-    f.edges = &m.edges;
+    f.nodes = m.nodes;
+    f.edges = m.edges;
     f.locals = &locals_;
     for (const auto& l : r.lets) locals_[l.slot] = evaluate(l.value, f);
     for (const auto& l : d.lets) locals_[l.slot] = evaluate(l.value, f);
 
-    Prepared p;
+    if (pendingCount_ == pending_.size()) pending_.emplace_back();
+    Prepared& p = pending_[pendingCount_];
     p.rule = rule;
     p.daughter = daughter;
-    p.match = m;
+    p.nodes.assign(m.nodes, m.nodes + r.nodes.size());
+    p.edges.assign(m.edges, m.edges + r.edges.size());
+    p.nodePos.clear();
+    p.nodeValues.resize(d.nodes.size());
+    p.edgeValues.resize(d.edges.size());
     // Automatic positions first: `at` may refine them through `placed`.
-    std::vector<std::optional<rt::vec2>> placed(d.nodes.size());
+    auto& placed = placed_;
+    placed.assign(d.nodes.size(), std::nullopt);
     if (d.autoPlacement) {
         std::vector<rt::vec2> mother, host, refDaughter, refHost;
         for (std::size_t i = 0; i < r.nodes.size(); ++i) {
@@ -276,12 +279,12 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt:
                 throw EvalError(dn.position->span, "position of `" + dn.name + "` is not finite");
         }
         p.nodePos.push_back(pos);
-        p.nodeValues.push_back(evaluateValues(dn.assigns, dn.styles, f));
+        evaluateValues(dn.assigns, dn.styles, f, p.nodeValues[&dn - d.nodes.data()]);
     }
-    for (const auto& de : d.edges) p.edgeValues.push_back(evaluateValues(de.assigns, de.styles, f));
+    for (std::size_t i = 0; i < d.edges.size(); ++i) evaluateValues(d.edges[i].assigns, d.edges[i].styles, f, p.edgeValues[i]);
     for (std::size_t i = 0; i < d.nodes.size(); ++i)
         if (!p.nodePos[i] && d.nodes[i].motherNode < 0) p.nodePos[i] = placed[i];
-    pending_.push_back(std::move(p));
+    ++pendingCount_;
 }
 
 // The order of a rewrite: deleted edges go; new nodes come; kept edges that
@@ -289,28 +292,29 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, const rt:
 // survive); deleted nodes go with their remaining edges; then kept nodes
 // change, and edges are updated or created, in the daughter's order.
 void InterpretedRules::commit(rt::Graph& g, long long step) {
-    for (auto& p : pending_) {
+    for (std::size_t k = 0; k < pendingCount_; ++k) {
+        Prepared& p = pending_[k];
         const ir::Rule& r = st_.prog->rules[p.rule];
         const ir::Daughter& d = r.daughters[p.daughter];
-        for (int e : d.deletedEdges) g.removeEdge(p.match.edges[e]);
-        std::vector<NodeId> hostOf(d.nodes.size(), kNoId);
+        for (int e : d.deletedEdges) g.removeEdge(p.edges[e]);
+        auto& hostOf = hostOf_;
+        hostOf.assign(d.nodes.size(), kNoId);
         for (std::size_t i = 0; i < d.nodes.size(); ++i) {
             const auto& dn = d.nodes[i];
             if (dn.motherNode >= 0) {
-                hostOf[i] = p.match.nodes[dn.motherNode];
+                hostOf[i] = p.nodes[dn.motherNode];
                 continue;
             }
-            std::vector<rt::Value> attrs = st_.kindDefaults[dn.kind];
-            for (auto& [attr, v] : p.nodeValues[i].attrs) attrs[attr] = std::move(v);
-            hostOf[i] = g.addNode(dn.kind, *p.nodePos[i], step, std::move(attrs));
+            hostOf[i] = g.addNode(dn.kind, *p.nodePos[i], step);
+            for (auto& [attr, v] : p.nodeValues[i].attrs) g.setNodeAttr(hostOf[i], attr, std::move(v));
         }
         for (const auto& de : d.edges) {
             if (de.motherEdge < 0) continue;
             const auto& me = r.edges[de.motherEdge];
             if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
-                g.reconnectEdge(p.match.edges[de.motherEdge], hostOf[de.src], hostOf[de.dst]);
+                g.reconnectEdge(p.edges[de.motherEdge], hostOf[de.src], hostOf[de.dst]);
         }
-        for (int n : d.deletedNodes) g.removeNode(p.match.nodes[n]);
+        for (int n : d.deletedNodes) g.removeNode(p.nodes[n]);
         for (std::size_t i = 0; i < d.nodes.size(); ++i) {
             const auto& dn = d.nodes[i];
             auto& values = p.nodeValues[i];
@@ -325,17 +329,16 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
             auto& values = p.edgeValues[i];
             EdgeId h;
             if (de.motherEdge >= 0) {
-                h = p.match.edges[de.motherEdge];
+                h = p.edges[de.motherEdge];
                 for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
             } else {
-                std::vector<rt::Value> attrs = st_.kindDefaults[de.kind];
-                for (auto& [attr, v] : values.attrs) attrs[attr] = std::move(v);
-                h = g.addEdge(de.kind, hostOf[de.src], hostOf[de.dst], step, std::move(attrs));
+                h = g.addEdge(de.kind, hostOf[de.src], hostOf[de.dst], step);
+                for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
             }
             for (auto& [prop, v] : values.styles) g.setEdgeStyle(h, prop, std::move(v));
         }
     }
-    pending_.clear();
+    pendingCount_ = 0;
 }
 
 }  // namespace g2d::interp

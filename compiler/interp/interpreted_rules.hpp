@@ -16,11 +16,10 @@ public:
 
     std::size_t ruleCount() const override { return infos_.size(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
-    void findMatches(std::size_t rule, const rt::Graph& g, std::vector<rt::Match>& out) override;
-    void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
-                      std::vector<rt::Match>& out) override;
-    rt::WriteSet writeSet(std::size_t rule, std::size_t daughter, const rt::Match& m) const override;
-    void prepare(std::size_t rule, std::size_t daughter, const rt::Match& m, const rt::Graph& g, rt::Rng& rng,
+    void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override;
+    void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out) override;
+    void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override;
+    void prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g, rt::Rng& rng,
                  long long step) override;
     void commit(rt::Graph& g, long long step) override;
 
@@ -32,25 +31,35 @@ private:
         std::vector<std::pair<int, rt::Value>> attrs;
         std::vector<std::pair<std::string, rt::Value>> styles;
     };
+    // One prepared application; kept in a pool so that its vectors are reused.
     struct Prepared {
         std::size_t rule = 0, daughter = 0;
-        rt::Match match;
+        std::vector<rt::NodeId> nodes;                  // the match
+        std::vector<rt::EdgeId> edges;
         std::vector<std::optional<rt::vec2>> nodePos;   // per daughter node
         std::vector<Values> nodeValues, edgeValues;
     };
 
+    // Calls onComplete() for every way to finish binding `plan` from step
+    // `step` on; stops early when it returns true.
+    template <class OnComplete>
     bool search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                const std::vector<ir::PlanStep>& plan, std::size_t step, const std::function<bool()>& onComplete);
-    void collect(const rt::Graph& g, const ir::Rule& r, const std::vector<ir::PlanStep>& plan,
-                 std::vector<rt::Match>& out);
+                const std::vector<ir::PlanStep>& plan, std::size_t step, OnComplete& onComplete);
+    template <class OnComplete>
+    bool tryEdge(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
+                 const std::vector<ir::PlanStep>& plan, std::size_t step, OnComplete& onComplete, rt::EdgeId e);
+    void collect(const rt::Graph& g, const ir::Rule& r, const std::vector<ir::PlanStep>& plan, rt::MatchBuffer& out);
     bool orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const;
     bool nacsHold(const rt::Graph& g, const ir::Rule& r);
-    Values evaluateValues(const std::vector<ir::AttrAssign>& attrs, const std::vector<ir::StyleAssign>& styles,
-                          EvalFrame& f);
+    void evaluateValues(const std::vector<ir::AttrAssign>& attrs, const std::vector<ir::StyleAssign>& styles,
+                        EvalFrame& f, Values& out);
 
     const ProgramState& st_;
     std::vector<rt::RuleInfo> infos_;
-    std::vector<Prepared> pending_;
+    std::vector<Prepared> pending_;   // the first pendingCount_ are in use
+    std::size_t pendingCount_ = 0;
+    std::vector<rt::NodeId> hostOf_;
+    std::vector<std::optional<rt::vec2>> placed_;
     std::vector<rt::NodeId> boundNodes_;
     std::vector<rt::EdgeId> boundEdges_;
     std::vector<rt::Value> locals_;

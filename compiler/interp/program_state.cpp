@@ -39,6 +39,7 @@ std::vector<rt::KindInfo> kindInfos(const ir::Program& prog) {
 rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
     const ir::Program& prog = *st.prog;
     rt::Graph g(kindInfos(prog));
+    for (std::size_t k = 0; k < st.kindDefaults.size(); ++k) g.setKindDefaults(static_cast<int>(k), st.kindDefaults[k]);
     std::vector<rt::NodeId> ids;
     for (const auto& n : prog.axiom.nodes) {
         EvalFrame f = st.frame(&rng);

@@ -1,17 +1,18 @@
 #include "g2d/derivation.hpp"
 
+#include "g2d/incremental_matches.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 #include <numeric>
-#include <unordered_set>
 
 namespace g2d::rt {
 
-long long ageSum(const Match& m, const Graph& g) {
+long long ageSum(Match m, int nodes, int edges, const Graph& g) {
     long long sum = 0;
-    for (NodeId n : m.nodes) sum += g.nodeAge(n);
-    for (EdgeId e : m.edges) sum += g.edgeAge(e);
+    for (int i = 0; i < nodes; ++i) sum += g.nodeAge(m.nodes[i]);
+    for (int i = 0; i < edges; ++i) sum += g.edgeAge(m.edges[i]);
     return sum;
 }
 
@@ -36,137 +37,68 @@ struct Group {
     long long applied = 0;
 };
 
-// Applies a maximal set of non-overlapping matches, all found before the step.
-void parallelStep(std::size_t rule, std::vector<Match>& matches, RuleSet& rules, Graph& g, Rng& rng,
-                  long long step) {
-    const RuleInfo& info = rules.info(rule);
-    if (info.pick == Pick::Random) {
-        shuffle(matches, rng);
-    } else {
-        std::vector<long long> sums(matches.size());
-        for (std::size_t i = 0; i < matches.size(); ++i) sums[i] = ageSum(matches[i], g);
-        std::vector<std::size_t> order(matches.size());
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sums[a] < sums[b]; });
-        std::vector<Match> sorted;
-        sorted.reserve(matches.size());
-        for (std::size_t i : order) sorted.push_back(std::move(matches[i]));
-        matches = std::move(sorted);
-    }
-    std::unordered_set<NodeId> readNodes, writtenNodes;
-    std::unordered_set<EdgeId> readEdges, writtenEdges;
-    for (const Match& m : matches) {
-        bool clash = false;
-        for (NodeId n : m.nodes) clash = clash || writtenNodes.count(n);
-        for (EdgeId e : m.edges) clash = clash || writtenEdges.count(e);
-        if (clash) continue;
-        const std::size_t daughter = pickDaughter(info.weights, rng);
-        const WriteSet w = rules.writeSet(rule, daughter, m);
-        for (NodeId n : w.nodes) clash = clash || readNodes.count(n);
-        for (EdgeId e : w.edges) clash = clash || readEdges.count(e);
-        if (clash) continue;
-        readNodes.insert(m.nodes.begin(), m.nodes.end());
-        readEdges.insert(m.edges.begin(), m.edges.end());
-        writtenNodes.insert(w.nodes.begin(), w.nodes.end());
-        writtenEdges.insert(w.edges.begin(), w.edges.end());
-        rules.prepare(rule, daughter, m, g, rng, step);
-    }
-    rules.commit(g, step);
-}
-
-}  // namespace
-
-// The nodes within `radius` edges of the changed ones (changed ones first).
-std::vector<NodeId> region(const Graph& g, const std::vector<NodeId>& changed, int radius,
-                           std::vector<std::uint32_t>& seen, std::uint32_t mark) {
-    std::vector<NodeId> out;
-    if (seen.size() < g.nodeCapacity()) seen.resize(g.nodeCapacity(), 0);
-    for (NodeId n : changed)
-        if (seen[n] != mark) {
-            seen[n] = mark;
-            out.push_back(n);
-        }
-    std::size_t begin = 0;
-    for (int d = 0; d < radius; ++d) {
-        const std::size_t end = out.size();
-        for (std::size_t i = begin; i < end; ++i) {
-            const NodeId n = out[i];
-            if (!g.nodeAlive(n)) continue;
-            for (EdgeId e : g.incident(n)) {
-                const NodeId o = g.source(e) == n ? g.target(e) : g.source(e);
-                if (seen[o] != mark) {
-                    seen[o] = mark;
-                    out.push_back(o);
-                }
-            }
-        }
-        begin = end;
-    }
-    return out;
-}
-
-// Repairs every rule's matches around what the last step changed.
-class IncrementalMatches {
+// Applies a maximal set of non-overlapping matches, all found before the
+// step. Marks are step-stamped arrays, so a step costs O(matches).
+class ParallelStep {
 public:
-    IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(rules) {
-        for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
-            const RuleInfo& info = rules.info(r);
-            sets_.emplace_back(static_cast<int>(info.nodeKinds.size()), info.edgeCount, info.pick == Pick::Oldest);
-            std::vector<Match> all;
-            rules.findMatches(r, g, all);
-            for (const Match& m : all) sets_.back().add(m, g);
+    void run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step) {
+        const RuleInfo& info = rules.info(rule);
+        const int nn = set.nodes(), ne = set.edges();
+        const std::size_t width = static_cast<std::size_t>(nn + ne);
+        // Copy the matches: the set is repaired only after the step, but the
+        // rules keep views until commit().
+        batch_.clear();
+        for (std::size_t i = 0; i < set.size(); ++i) batch_.insert(batch_.end(), set.idsAt(i), set.idsAt(i) + width);
+        order_.resize(set.size());
+        std::iota(order_.begin(), order_.end(), 0);
+        if (info.pick == Pick::Random) {
+            shuffle(order_, rng);
+        } else {
+            sums_.resize(set.size());
+            for (std::size_t i = 0; i < set.size(); ++i) sums_[i] = set.ageSumAt(i);
+            std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return sums_[a] < sums_[b]; });
         }
-    }
-
-    MatchSet& of(std::size_t rule) { return sets_[rule]; }
-
-    // With G2D_VERIFY_MATCHES set (the tests set it): every rule's set must
-    // hold exactly the matches a full search finds.
-    void verify(const Graph& g, long long step) {
-        std::vector<Match> all;
-        for (std::size_t r = 0; r < sets_.size(); ++r) {
-            all.clear();
-            rules_.findMatches(r, g, all);
-            std::vector<Match> kept;
-            for (std::size_t i = 0; i < sets_[r].size(); ++i) kept.push_back(sets_[r].at(i));
-            auto key = [](const Match& m) { return std::make_pair(m.nodes, m.edges); };
-            auto less = [&](const Match& a, const Match& b) { return key(a) < key(b); };
-            std::sort(all.begin(), all.end(), less);
-            std::sort(kept.begin(), kept.end(), less);
-            if (all != kept)
-                throw std::logic_error("incremental matching lost track of rule " + std::to_string(r) + " after step " +
-                                       std::to_string(step) + ": " + std::to_string(kept.size()) + " matches kept, " +
-                                       std::to_string(all.size()) + " found");
+        if (++stamp_ == 0) {
+            for (auto* v : {&readNodes_, &writtenNodes_, &readEdges_, &writtenEdges_}) std::fill(v->begin(), v->end(), 0);
+            stamp_ = 1;
         }
-    }
-
-    void update(const Graph& g, const std::vector<NodeId>& changed) {
-        if (changed.empty()) return;
-        std::vector<Match> found;
-        for (std::size_t r = 0; r < sets_.size(); ++r) {
-            const RuleInfo& info = rules_.info(r);
-            const auto area = region(g, changed, info.radius, seen_, ++mark_);
-            MatchSet& set = sets_[r];
-            for (NodeId n : area) set.removeTouching(n);
-            for (NodeId h : area) {
-                if (!g.nodeAlive(h)) continue;
-                for (std::size_t p = 0; p < info.nodeKinds.size(); ++p) {
-                    const int kind = info.nodeKinds[p];
-                    if (kind >= 0 && kind != g.nodeKind(h)) continue;
-                    found.clear();
-                    rules_.findAnchored(r, g, static_cast<int>(p), h, found);
-                    for (const Match& m : found) set.add(m, g);
-                }
-            }
+        grow(readNodes_, g.nodeCapacity());
+        grow(writtenNodes_, g.nodeCapacity());
+        grow(readEdges_, g.edgeCapacity());
+        grow(writtenEdges_, g.edgeCapacity());
+        for (std::uint32_t i : order_) {
+            const Match m{&batch_[i * width], &batch_[i * width] + nn};
+            bool clash = false;
+            for (int k = 0; k < nn; ++k) clash = clash || writtenNodes_[m.nodes[k]] == stamp_;
+            for (int k = 0; k < ne; ++k) clash = clash || writtenEdges_[m.edges[k]] == stamp_;
+            if (clash) continue;
+            const std::size_t daughter = pickDaughter(info.weights, rng);
+            writes_.clear();
+            rules.writeSet(rule, daughter, m, writes_);
+            for (NodeId n : writes_.nodes) clash = clash || readNodes_[n] == stamp_;
+            for (EdgeId e : writes_.edges) clash = clash || readEdges_[e] == stamp_;
+            if (clash) continue;
+            for (int k = 0; k < nn; ++k) readNodes_[m.nodes[k]] = stamp_;
+            for (int k = 0; k < ne; ++k) readEdges_[m.edges[k]] = stamp_;
+            for (NodeId n : writes_.nodes) writtenNodes_[n] = stamp_;
+            for (EdgeId e : writes_.edges) writtenEdges_[e] = stamp_;
+            rules.prepare(rule, daughter, m, g, rng, step);
         }
+        rules.commit(g, step);
     }
 
 private:
-    RuleSet& rules_;
-    std::vector<MatchSet> sets_;
-    std::vector<std::uint32_t> seen_;
-    std::uint32_t mark_ = 0;
+    static void grow(std::vector<std::uint32_t>& v, std::size_t n) {
+        if (v.size() < n) v.resize(n + n / 2, 0);
+    }
+    std::vector<std::uint32_t> batch_, order_;
+    std::vector<long long> sums_;
+    std::vector<std::uint32_t> readNodes_, writtenNodes_, readEdges_, writtenEdges_;
+    std::uint32_t stamp_ = 0;
+    WriteSet writes_;
 };
+
+}  // namespace
 
 DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
                         const StepObserver& observer) {
@@ -185,10 +117,11 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     }
 
     DerivationResult result;
-    std::vector<Match> matches;
     std::vector<std::size_t> order;
+    std::vector<NodeId> changed;
+    ParallelStep parallel;
     IncrementalMatches sets(rules, g);
-    g.takeDirty();
+    g.takeDirty(changed);
     static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
@@ -206,16 +139,15 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
                 if (info.parallel) {
-                    matches.clear();
-                    for (std::size_t i = 0; i < set.size(); ++i) matches.push_back(set.at(i));
-                    parallelStep(r, matches, rules, g, rng, step);
+                    parallel.run(r, set, rules, g, rng, step);
                 } else {
                     const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                     const std::size_t d = pickDaughter(info.weights, rng);
                     rules.prepare(r, d, m, g, rng, step);
                     rules.commit(g, step);
                 }
-                sets.update(g, g.takeDirty());
+                g.takeDirty(changed);
+                sets.update(g, changed);
                 if (verify) sets.verify(g, step);
                 applied = true;
                 ++grp.applied;

@@ -1,51 +1,136 @@
 #include "g2d/graph.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 namespace g2d::rt {
 
-Graph::Graph(std::vector<KindInfo> kinds) : kinds_(std::move(kinds)), kindNodes_(kinds_.size()) {}
+namespace {
+const std::vector<StyleOverride> kNoStyle;
+}
 
-NodeId Graph::addNode(int kind, vec2 pos, long long age, std::vector<Value> attrs) {
+IncidentRange::iterator IncidentRange::begin() const {
+    return iterator(g_, n_, g_->firstOut(n_), false);
+}
+
+void IncidentRange::iterator::settle() {
+    // Out of outgoing edges: continue with incoming ones, skipping self-loops
+    // (already seen among the outgoing).
+    while (true) {
+        if (e_ == kNoId) {
+            if (in_) return;
+            in_ = true;
+            e_ = g_->firstIn(n_);
+            continue;
+        }
+        if (in_ && g_->source(e_) == n_) {
+            e_ = g_->nextIn(e_);
+            continue;
+        }
+        return;
+    }
+}
+
+IncidentRange::iterator& IncidentRange::iterator::operator++() {
+    e_ = in_ ? g_->nextIn(e_) : g_->nextOut(e_);
+    settle();
+    return *this;
+}
+
+Graph::Graph(std::vector<KindInfo> kinds)
+    : kinds_(std::move(kinds)), defaults_(kinds_.size()), pool_(kinds_.size()), kindNodes_(kinds_.size()) {
+    if (kinds_.size() > 32767) throw std::length_error("a grammar may declare at most 32767 kinds");
+}
+
+void Graph::setKindDefaults(int kind, std::vector<Value> defaults) { defaults_[kind] = std::move(defaults); }
+
+std::uint32_t Graph::newAttrBlock(int kind, std::vector<Value>* attrs) {
+    const auto& defaults = defaults_[kind];
+    if (defaults.empty()) return kNoId;
+    auto& pool = pool_[kind];
+    const auto slot = static_cast<std::uint32_t>(pool.size() / defaults.size());
+    if (attrs && attrs->size() == defaults.size())
+        for (auto& v : *attrs) pool.push_back(std::move(v));
+    else
+        pool.insert(pool.end(), defaults.begin(), defaults.end());
+    return slot;
+}
+
+void Graph::clearAttrBlock(int kind, std::uint32_t slot) {
+    // Ids are never reused, so neither are blocks; only free what values own.
+    if (slot == kNoId || defaults_[kind].empty()) return;
+    for (std::size_t i = 0; i < defaults_[kind].size(); ++i) pool_[kind][attrIndex(kind, slot, static_cast<int>(i))] = Value{};
+}
+
+NodeId Graph::addNode(int kind, vec2 pos, long long age) {
+    std::vector<Value>* none = nullptr;
     const auto id = static_cast<NodeId>(nodes_.size());
     NodeRec rec;
-    rec.kind = kind;
+    rec.kind = static_cast<std::int16_t>(kind);
     rec.pos = pos;
     rec.age = age;
-    rec.attrs = std::move(attrs);
+    rec.slot = newAttrBlock(kind, none);
     rec.slotInKind = static_cast<std::uint32_t>(kindNodes_[kind].size());
     rec.slotInAll = static_cast<std::uint32_t>(allNodes_.size());
     kindNodes_[kind].push_back(id);
     allNodes_.push_back(id);
-    nodes_.push_back(std::move(rec));
+    nodes_.push_back(rec);
     ++liveNodes_;
     touchNode(id);
     return id;
 }
 
-EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age, std::vector<Value> attrs) {
+NodeId Graph::addNode(int kind, vec2 pos, long long age, std::vector<Value> attrs) {
+    const NodeId id = addNode(kind, pos, age);
+    for (std::size_t i = 0; i < attrs.size() && i < defaults_[kind].size(); ++i)
+        pool_[kind][attrIndex(kind, nodes_[id].slot, static_cast<int>(i))] = std::move(attrs[i]);
+    return id;
+}
+
+EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
     if (!nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("edge endpoint is not a live node");
     const auto id = static_cast<EdgeId>(edges_.size());
     EdgeRec rec;
-    rec.kind = kind;
+    rec.kind = static_cast<std::int16_t>(kind);
     rec.src = src;
     rec.dst = dst;
     rec.age = age;
-    rec.attrs = std::move(attrs);
-    edges_.push_back(std::move(rec));
-    nodes_[src].incident.push_back(id);
-    if (dst != src) nodes_[dst].incident.push_back(id);
+    rec.slot = newAttrBlock(kind, nullptr);
+    edges_.push_back(rec);
+    link(id);
     ++liveEdges_;
     touchNode(src);
     touchNode(dst);
     return id;
 }
 
-void Graph::detach(NodeId n, EdgeId e) {
-    auto& inc = nodes_[n].incident;
-    auto it = std::find(inc.begin(), inc.end(), e);
-    if (it != inc.end()) inc.erase(it);  // keep the order: it decides the order of matches
+EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age, std::vector<Value> attrs) {
+    const EdgeId id = addEdge(kind, src, dst, age);
+    for (std::size_t i = 0; i < attrs.size() && i < defaults_[kind].size(); ++i)
+        pool_[kind][attrIndex(kind, edges_[id].slot, static_cast<int>(i))] = std::move(attrs[i]);
+    return id;
+}
+
+void Graph::link(EdgeId e) {
+    auto& rec = edges_[e];
+    rec.nextOut = nodes_[rec.src].firstOut;
+    nodes_[rec.src].firstOut = e;
+    rec.nextIn = nodes_[rec.dst].firstIn;
+    nodes_[rec.dst].firstIn = e;
+}
+
+void Graph::unlink(EdgeId e) {
+    // O(degree): the lists are singly linked to keep edge records small.
+    const auto& rec = edges_[e];
+    for (EdgeId* p = &nodes_[rec.src].firstOut; *p != kNoId; p = &edges_[*p].nextOut)
+        if (*p == e) {
+            *p = rec.nextOut;
+            break;
+        }
+    for (EdgeId* p = &nodes_[rec.dst].firstIn; *p != kNoId; p = &edges_[*p].nextIn)
+        if (*p == e) {
+            *p = rec.nextIn;
+            break;
+        }
 }
 
 void Graph::removeEdge(EdgeId e) {
@@ -53,11 +138,11 @@ void Graph::removeEdge(EdgeId e) {
     if (!rec.alive) return;
     touchNode(rec.src);
     touchNode(rec.dst);
-    detach(rec.src, e);
-    if (rec.dst != rec.src) detach(rec.dst, e);
+    unlink(e);
     rec.alive = false;
-    rec.attrs.clear();
-    rec.style.clear();
+    clearAttrBlock(rec.kind, rec.slot);
+    if (rec.styled) edgeStyles_.erase(e);
+    rec.styled = false;
     --liveEdges_;
 }
 
@@ -65,11 +150,8 @@ void Graph::removeNode(NodeId n) {
     auto& rec = nodes_[n];
     if (!rec.alive) return;
     touchNode(n);
-    while (!rec.incident.empty()) {
-        const EdgeId e = rec.incident.back();
-        if (!edges_[e].alive) throw std::logic_error("a dead edge in an incidence list");
-        removeEdge(e);
-    }
+    while (rec.firstOut != kNoId) removeEdge(rec.firstOut);
+    while (rec.firstIn != kNoId) removeEdge(rec.firstIn);
     // Swap-remove from the indexes, fixing the moved node's slot.
     auto& kindList = kindNodes_[rec.kind];
     const NodeId movedK = kindList.back();
@@ -81,9 +163,9 @@ void Graph::removeNode(NodeId n) {
     nodes_[movedA].slotInAll = rec.slotInAll;
     allNodes_.pop_back();
     rec.alive = false;
-    rec.attrs.clear();
-    rec.style.clear();
-    rec.incident.shrink_to_fit();
+    clearAttrBlock(rec.kind, rec.slot);
+    if (rec.styled) nodeStyles_.erase(n);
+    rec.styled = false;
     --liveNodes_;
 }
 
@@ -95,12 +177,38 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
     touchNode(rec.dst);
     touchNode(src);
     touchNode(dst);
-    detach(rec.src, e);
-    if (rec.dst != rec.src) detach(rec.dst, e);
+    unlink(e);
     rec.src = src;
     rec.dst = dst;
-    nodes_[src].incident.push_back(e);
-    if (dst != src) nodes_[dst].incident.push_back(e);
+    link(e);
+}
+
+void Graph::setNodeAttr(NodeId n, int i, Value v) {
+    pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)] = std::move(v);
+    touchNode(n);
+}
+
+void Graph::setEdgeAttr(EdgeId e, int i, Value v) {
+    pool_[edges_[e].kind][attrIndex(edges_[e].kind, edges_[e].slot, i)] = std::move(v);
+    touchEdge(e);
+}
+
+const std::vector<StyleOverride>& Graph::nodeStyle(NodeId n) const {
+    return nodes_[n].styled ? nodeStyles_.at(n) : kNoStyle;
+}
+
+const std::vector<StyleOverride>& Graph::edgeStyle(EdgeId e) const {
+    return edges_[e].styled ? edgeStyles_.at(e) : kNoStyle;
+}
+
+void Graph::setNodeStyle(NodeId n, const std::string& prop, Value v) {
+    nodes_[n].styled = true;
+    setStyle(nodeStyles_[n], prop, std::move(v));
+}
+
+void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v) {
+    edges_[e].styled = true;
+    setStyle(edgeStyles_[e], prop, std::move(v));
 }
 
 void Graph::touchNode(NodeId n) {
@@ -110,23 +218,37 @@ void Graph::touchNode(NodeId n) {
     dirty_.push_back(n);
 }
 
-std::vector<NodeId> Graph::takeDirty() {
-    std::vector<NodeId> out;
+void Graph::takeDirty(std::vector<NodeId>& out) {
+    out.clear();
     out.swap(dirty_);
     for (NodeId n : out) isDirty_[n] = false;
-    return out;
+}
+
+int Graph::degree(NodeId n) const {
+    int d = 0;
+    for (EdgeId e = firstOut(n); e != kNoId; e = nextOut(e)) ++d;
+    for (EdgeId e = firstIn(n); e != kNoId; e = nextIn(e)) d += edges_[e].src != n;
+    return d;
 }
 
 int Graph::inDegree(NodeId n) const {
     int d = 0;
-    for (EdgeId e : nodes_[n].incident) d += edges_[e].dst == n;
+    for (EdgeId e = firstIn(n); e != kNoId; e = nextIn(e)) ++d;
     return d;
 }
 
 int Graph::outDegree(NodeId n) const {
     int d = 0;
-    for (EdgeId e : nodes_[n].incident) d += edges_[e].src == n;
+    for (EdgeId e = firstOut(n); e != kNoId; e = nextOut(e)) ++d;
     return d;
+}
+
+std::size_t Graph::memoryBytes() const {
+    std::size_t bytes = nodes_.capacity() * sizeof(NodeRec) + edges_.capacity() * sizeof(EdgeRec) +
+                        allNodes_.capacity() * sizeof(NodeId) + isDirty_.capacity() / 8;
+    for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
+    for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
+    return bytes;
 }
 
 void Graph::setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v) {

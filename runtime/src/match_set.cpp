@@ -1,129 +1,102 @@
 #include "g2d/match_set.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace g2d::rt {
 
-Match MatchSet::get(Id id) const {
-    Match m;
-    const std::uint32_t* p = &data_[static_cast<std::size_t>(id) * (nn_ + ne_)];
-    m.nodes.assign(p, p + nn_);
-    m.edges.assign(p + nn_, p + nn_ + ne_);
-    return m;
+MatchSet::MatchSet(int nodes, int edges, bool byAge)
+    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)), byAge_(byAge) {
+    if (nodes <= 0) throw std::logic_error("a pattern without nodes");
 }
 
-bool MatchSet::matches(Id id, const Match& m) const {
-    const std::uint32_t* p = &data_[static_cast<std::size_t>(id) * (nn_ + ne_)];
-    return std::equal(m.nodes.begin(), m.nodes.end(), p) && std::equal(m.edges.begin(), m.edges.end(), p + nn_);
-}
-
-std::uint64_t MatchSet::hash(const Match& m) const {
-    std::uint64_t h = 1469598103934665603ULL;
-    for (auto v : m.nodes) h = (h ^ v) * 1099511628211ULL;
-    for (auto v : m.edges) h = (h ^ (v + 0x9e3779b9u)) * 1099511628211ULL;
-    return h;
-}
-
-bool MatchSet::add(const Match& m, const Graph& g) {
-    const std::uint64_t h = hash(m);
-    auto range = byHash_.equal_range(h);
-    for (auto it = range.first; it != range.second; ++it)
-        if (matches(it->second, m)) return false;
+void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
     Id id;
-    const std::size_t width = static_cast<std::size_t>(nn_ + ne_);
     if (!free_.empty()) {
         id = free_.back();
         free_.pop_back();
     } else {
         id = static_cast<Id>(livePos_.size());
-        data_.resize(data_.size() + width);
+        data_.resize(data_.size() + width_);
         livePos_.push_back(kNoId);
-        ageSum_.push_back(0);
-        agePos_.push_back(0);
+        next_.resize(next_.size() + static_cast<std::size_t>(nn_));
+        prev_.resize(prev_.size() + static_cast<std::size_t>(nn_));
+        if (byAge_) ageSum_.push_back(0);
     }
-    std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width];
-    std::copy(m.nodes.begin(), m.nodes.end(), p);
-    std::copy(m.edges.begin(), m.edges.end(), p + nn_);
+    std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width_];
+    std::copy(ids, ids + width_, p);
     livePos_[id] = static_cast<std::uint32_t>(live_.size());
     live_.push_back(id);
-    byHash_.emplace(h, id);
-    for (NodeId n : m.nodes) {
-        if (n >= byNode_.size()) byNode_.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1));
-        byNode_[n].push_back(id);
+    for (int i = 0; i < nn_; ++i) {
+        const NodeId n = p[i];
+        if (n >= head_.size()) head_.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1) + head_.size() / 2, kNoId);
+        const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
+        next_[link] = head_[n];
+        prev_[link] = kNoId;
+        if (head_[n] != kNoId) prev_[head_[n]] = link;
+        head_[n] = link;
     }
     if (byAge_) {
         long long sum = 0;
-        for (NodeId n : m.nodes) sum += g.nodeAge(n);
-        for (EdgeId e : m.edges) sum += g.edgeAge(e);
+        for (int i = 0; i < nn_; ++i) sum += g.nodeAge(p[i]);
+        for (int i = 0; i < ne_; ++i) sum += g.edgeAge(p[nn_ + i]);
         ageSum_[id] = sum;
-        auto& bucket = byAgeSum_[sum];
-        agePos_[id] = static_cast<std::uint32_t>(bucket.size());
-        bucket.push_back(id);
+        ageBuckets_.insert(id, sum);
     }
-    return true;
 }
 
-void MatchSet::unlink(Id id) {
-    // Out of the live order (swap with the last), the hash index and the age bucket.
+void MatchSet::remove(Id id) {
+    const std::uint32_t* p = data(id);
+    for (int i = 0; i < nn_; ++i) {
+        const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
+        if (prev_[link] != kNoId)
+            next_[prev_[link]] = next_[link];
+        else
+            head_[p[i]] = next_[link];
+        if (next_[link] != kNoId) prev_[next_[link]] = prev_[link];
+    }
+    // Out of the live order: swap with the last.
     const std::uint32_t pos = livePos_[id];
     const Id last = live_.back();
     live_[pos] = last;
     livePos_[last] = pos;
     live_.pop_back();
     livePos_[id] = kNoId;
-    const Match m = get(id);
-    auto range = byHash_.equal_range(hash(m));
-    for (auto it = range.first; it != range.second; ++it)
-        if (it->second == id) {
-            byHash_.erase(it);
-            break;
-        }
-    if (byAge_) {
-        auto b = byAgeSum_.find(ageSum_[id]);
-        auto& bucket = b->second;
-        const Id moved = bucket.back();
-        bucket[agePos_[id]] = moved;
-        agePos_[moved] = agePos_[id];
-        bucket.pop_back();
-        if (bucket.empty()) byAgeSum_.erase(b);
-    }
+    if (byAge_) ageBuckets_.erase(id, ageSum_[id]);
     free_.push_back(id);
 }
 
 void MatchSet::removeTouching(NodeId n) {
-    if (n >= byNode_.size()) return;
-    std::vector<Id> ids;
-    ids.swap(byNode_[n]);
-    const std::size_t width = static_cast<std::size_t>(nn_ + ne_);
-    for (Id id : ids) {
-        if (livePos_[id] == kNoId) continue;  // stale: removed before
-        const std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width];
-        if (std::find(p, p + nn_, n) == p + nn_) continue;  // stale: the id was reused
-        unlink(id);
-    }
+    if (n >= head_.size()) return;
+    while (head_[n] != kNoId) remove(head_[n] / static_cast<std::uint32_t>(nn_));
 }
 
 void MatchSet::clear() {
     data_.clear();
-    ageSum_.clear();
     livePos_.clear();
     live_.clear();
     free_.clear();
-    byNode_.clear();
-    byHash_.clear();
-    byAgeSum_.clear();
-    agePos_.clear();
+    head_.clear();
+    next_.clear();
+    prev_.clear();
+    ageSum_.clear();
+    ageBuckets_.clear();
 }
 
 Match MatchSet::pickRandom(Rng& rng) const {
-    if (live_.size() == 1) return get(live_[0]);
-    return get(live_[static_cast<std::size_t>(rng.below(live_.size()))]);
+    if (live_.size() == 1) return view(live_[0]);
+    return view(live_[static_cast<std::size_t>(rng.below(live_.size()))]);
 }
 
-Match MatchSet::pickOldest(Rng& rng) const {
-    const auto& bucket = byAgeSum_.begin()->second;
-    if (bucket.size() == 1) return get(bucket[0]);
-    return get(bucket[static_cast<std::size_t>(rng.below(bucket.size()))]);
+Match MatchSet::pickOldest(Rng& rng) {
+    const auto& bucket = ageBuckets_.lowest();
+    if (bucket.size() == 1) return view(bucket[0]);
+    return view(bucket[static_cast<std::size_t>(rng.below(bucket.size()))]);
+}
+
+std::size_t MatchSet::memoryBytes() const {
+    return (data_.capacity() + livePos_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() +
+            next_.capacity() + prev_.capacity()) * 4 + ageSum_.capacity() * 8 + ageBuckets_.memoryBytes();
 }
 
 }  // namespace g2d::rt

@@ -166,7 +166,8 @@ TEST_CASE("the ordering option keeps the sketch's x and y order", "[run][ordered
         auto st = interp::initState(*c.program, interp::defaultParams(*c.program), rng);
         rt::Graph g = interp::buildAxiom(st, rng);
         interp::InterpretedRules rules(st);
-        std::vector<rt::Match> matches;
+        rt::MatchBuffer matches;
+        matches.reset(3, 2);
         rules.findMatches(0, g, matches);
         return matches.size();
     };

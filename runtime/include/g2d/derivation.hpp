@@ -55,6 +55,10 @@ struct RuleInfo {
 struct WriteSet {
     std::vector<NodeId> nodes;
     std::vector<EdgeId> edges;
+    void clear() {
+        nodes.clear();
+        edges.clear();
+    }
 };
 
 class RuleSet {
@@ -62,15 +66,16 @@ public:
     virtual ~RuleSet() = default;
     virtual std::size_t ruleCount() const = 0;
     virtual const RuleInfo& info(std::size_t rule) const = 0;
-    // Every match of `rule` on `g`, in a deterministic order.
-    virtual void findMatches(std::size_t rule, const Graph& g, std::vector<Match>& out) = 0;
+    // Every match of `rule` on `g`, in a deterministic order, appended to
+    // `out` (reset by the caller to the rule's widths).
+    virtual void findMatches(std::size_t rule, const Graph& g, MatchBuffer& out) = 0;
     // Every match of `rule` that binds pattern node `node` to host node `host`.
-    virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, std::vector<Match>& out) = 0;
-    // What applying `daughter` to `m` deletes or changes.
-    virtual WriteSet writeSet(std::size_t rule, std::size_t daughter, const Match& m) const = 0;
+    virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out) = 0;
+    // What applying `daughter` to `m` deletes or changes, appended to `out`.
+    virtual void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& out) const = 0;
     // Evaluates everything the daughter computes, on the graph as it is now
-    // (before the step), and keeps it until commit().
-    virtual void prepare(std::size_t rule, std::size_t daughter, const Match& m, const Graph& g, Rng& rng,
+    // (before the step), and keeps it (and the match's ids) until commit().
+    virtual void prepare(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng,
                          long long step) = 0;
     // Applies every prepared application, in order, and forgets them.
     virtual void commit(Graph& g, long long step) = 0;
@@ -103,7 +108,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
 
 // Helpers shared with tests: the selection rules, as specified above.
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);
-long long ageSum(const Match& m, const Graph& g);
+long long ageSum(Match m, int nodes, int edges, const Graph& g);
 template <class T>
 void shuffle(std::vector<T>& v, Rng& rng) {
     for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);

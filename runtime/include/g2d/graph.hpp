@@ -1,13 +1,21 @@
 #pragma once
 // The host graph: nodes and edges with stable ids (never reused), kinds,
-// positions, typed attribute slots, per-element style overrides and ages.
-// Per-kind indexes and per-node incidence lists make every step of a search
-// O(1); deleting an element is O(degree).
+// positions, attributes, per-element style overrides and ages.
+//
+// Laid out for millions of elements: a node record is 48 bytes and an edge
+// record 32. Each node heads two intrusive lists (its outgoing and its
+// incoming edges) threaded through the edge records, so adding an edge is
+// O(1), deleting one is O(degree) and nothing is allocated per element.
+// Per-kind node indexes make a search's first step O(1) per candidate.
+// Attributes live in per-kind pools (an element's `slot` indexes its kind's
+// pool); a compiled grammar keeps them in its own typed arrays instead and
+// uses the slot for those. Style overrides are rare and live in a side table.
 //
 // Element classes are explicit (nodes, edges) so that faces can be added as
 // a third class with their own index and incidences.
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "g2d/value.hpp"
@@ -29,11 +37,47 @@ struct StyleOverride {
     Value value;
 };
 
+class Graph;
+
+// The edges touching a node, each once (outgoing first, then incoming; a
+// self-loop only among the outgoing), newest first within each list.
+class IncidentRange {
+public:
+    class iterator {
+    public:
+        iterator(const Graph* g, NodeId n, EdgeId e, bool in) : g_(g), n_(n), e_(e), in_(in) { settle(); }
+        EdgeId operator*() const { return e_; }
+        iterator& operator++();
+        bool operator!=(const iterator& o) const { return e_ != o.e_ || in_ != o.in_; }
+        bool operator==(const iterator& o) const { return !(*this != o); }
+
+    private:
+        void settle();
+        const Graph* g_;
+        NodeId n_;
+        EdgeId e_;
+        bool in_;
+    };
+    IncidentRange(const Graph* g, NodeId n) : g_(g), n_(n) {}
+    iterator begin() const;
+    iterator end() const { return iterator(g_, n_, kNoId, true); }
+
+private:
+    const Graph* g_;
+    NodeId n_;
+};
+
 class Graph {
 public:
     explicit Graph(std::vector<KindInfo> kinds);
 
+    // Attributes a new element of `kind` starts with when none are given
+    // (the interpreter's defaults; compiled grammars keep none here).
+    void setKindDefaults(int kind, std::vector<Value> defaults);
+
+    NodeId addNode(int kind, vec2 pos, long long age);
     NodeId addNode(int kind, vec2 pos, long long age, std::vector<Value> attrs);
+    EdgeId addEdge(int kind, NodeId src, NodeId dst, long long age);
     EdgeId addEdge(int kind, NodeId src, NodeId dst, long long age, std::vector<Value> attrs);
     void removeEdge(EdgeId e);
     void removeNode(NodeId n);                  // with its incident (dangling) edges
@@ -50,32 +94,38 @@ public:
     vec2 pos(NodeId n) const { return nodes_[n].pos; }
     void setPos(NodeId n, vec2 p) { nodes_[n].pos = p; touchNode(n); }
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
-    const Value& nodeAttr(NodeId n, int i) const { return nodes_[n].attrs[i]; }
-    void setNodeAttr(NodeId n, int i, Value v) { nodes_[n].attrs[i] = std::move(v); touchNode(n); }
-    const std::vector<StyleOverride>& nodeStyle(NodeId n) const { return nodes_[n].style; }
+    const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
+    void setNodeAttr(NodeId n, int i, Value v);
+    const std::vector<StyleOverride>& nodeStyle(NodeId n) const;
     // A back end's own handle for the element's attributes (compiled grammars
     // keep them in typed arrays); kNoId until set.
     std::uint32_t nodeSlot(NodeId n) const { return nodes_[n].slot; }
     void setNodeSlot(NodeId n, std::uint32_t slot) { nodes_[n].slot = slot; }
-    void setNodeStyle(NodeId n, const std::string& prop, Value v) { setStyle(nodes_[n].style, prop, std::move(v)); }
+    void setNodeStyle(NodeId n, const std::string& prop, Value v);
 
     int edgeKind(EdgeId e) const { return edges_[e].kind; }
     NodeId source(EdgeId e) const { return edges_[e].src; }
     NodeId target(EdgeId e) const { return edges_[e].dst; }
     long long edgeAge(EdgeId e) const { return edges_[e].age; }
-    const Value& edgeAttr(EdgeId e, int i) const { return edges_[e].attrs[i]; }
-    void setEdgeAttr(EdgeId e, int i, Value v) { edges_[e].attrs[i] = std::move(v); touchEdge(e); }
-    const std::vector<StyleOverride>& edgeStyle(EdgeId e) const { return edges_[e].style; }
+    const Value& edgeAttr(EdgeId e, int i) const { return pool_[edges_[e].kind][attrIndex(edges_[e].kind, edges_[e].slot, i)]; }
+    void setEdgeAttr(EdgeId e, int i, Value v);
+    const std::vector<StyleOverride>& edgeStyle(EdgeId e) const;
     std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
     void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
-    void setEdgeStyle(EdgeId e, const std::string& prop, Value v) { setStyle(edges_[e].style, prop, std::move(v)); }
+    void setEdgeStyle(EdgeId e, const std::string& prop, Value v);
 
     // Live nodes of one kind, or of every kind; order is deterministic.
     const std::vector<NodeId>& nodesOfKind(int kind) const { return kindNodes_[kind]; }
     const std::vector<NodeId>& allNodes() const { return allNodes_; }
-    // Edges touching a node (a self-loop appears once).
-    const std::vector<EdgeId>& incident(NodeId n) const { return nodes_[n].incident; }
-    int degree(NodeId n) const { return static_cast<int>(nodes_[n].incident.size()); }
+
+    // Incidence, as intrusive lists (newest first):
+    //   for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) ...
+    EdgeId firstOut(NodeId n) const { return nodes_[n].firstOut; }
+    EdgeId nextOut(EdgeId e) const { return edges_[e].nextOut; }
+    EdgeId firstIn(NodeId n) const { return nodes_[n].firstIn; }
+    EdgeId nextIn(EdgeId e) const { return edges_[e].nextIn; }
+    IncidentRange incident(NodeId n) const { return IncidentRange(this, n); }
+    int degree(NodeId n) const;                 // a self-loop counts once
     int inDegree(NodeId n) const;
     int outDegree(NodeId n) const;
 
@@ -85,38 +135,52 @@ public:
     // deleted or changed, or whose incident edges were, since takeDirty().
     void touchNode(NodeId n);
     void touchEdge(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
-    std::vector<NodeId> takeDirty();
+    // Moves the changed nodes into `out` (cleared first).
+    void takeDirty(std::vector<NodeId>& out);
+
+    // Bytes held by the graph's own arrays (for the benchmarks).
+    std::size_t memoryBytes() const;
 
 private:
-    struct NodeRec {
-        int kind = -1;
-        bool alive = true;
+    struct NodeRec {                         // 48 bytes
         vec2 pos{0, 0};
         long long age = 0;
-        std::uint32_t slotInKind = 0, slotInAll = 0;
-        std::uint32_t slot = kNoId;
-        std::vector<EdgeId> incident;
-        std::vector<Value> attrs;
-        std::vector<StyleOverride> style;
-    };
-    struct EdgeRec {
-        int kind = -1;
+        std::int16_t kind = -1;
         bool alive = true;
-        NodeId src = kNoId, dst = kNoId;
+        bool styled = false;
         std::uint32_t slot = kNoId;
-        long long age = 0;
-        std::vector<Value> attrs;
-        std::vector<StyleOverride> style;
+        std::uint32_t slotInKind = 0, slotInAll = 0;
+        EdgeId firstOut = kNoId, firstIn = kNoId;
     };
+    struct EdgeRec {                         // 32 bytes
+        long long age = 0;
+        std::int16_t kind = -1;
+        bool alive = true;
+        bool styled = false;
+        std::uint32_t slot = kNoId;
+        NodeId src = kNoId, dst = kNoId;
+        EdgeId nextOut = kNoId, nextIn = kNoId;
+    };
+    static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 32);
 
+    std::size_t attrIndex(int kind, std::uint32_t slot, int i) const {
+        return static_cast<std::size_t>(slot) * defaults_[kind].size() + static_cast<std::size_t>(i);
+    }
+    std::uint32_t newAttrBlock(int kind, std::vector<Value>* attrs);
+    void clearAttrBlock(int kind, std::uint32_t slot);
+    void link(EdgeId e);
+    void unlink(EdgeId e);
     static void setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v);
-    void detach(NodeId n, EdgeId e);
 
     std::vector<KindInfo> kinds_;
+    std::vector<std::vector<Value>> defaults_;   // per kind
+    std::vector<std::vector<Value>> pool_;       // per kind: blocks of defaults_[kind].size()
     std::vector<NodeRec> nodes_;
     std::vector<EdgeRec> edges_;
     std::vector<std::vector<NodeId>> kindNodes_;
     std::vector<NodeId> allNodes_;
+    std::unordered_map<NodeId, std::vector<StyleOverride>> nodeStyles_;
+    std::unordered_map<EdgeId, std::vector<StyleOverride>> edgeStyles_;
     std::size_t liveNodes_ = 0, liveEdges_ = 0;
     std::vector<NodeId> dirty_;
     std::vector<bool> isDirty_;

@@ -1,60 +1,98 @@
 #pragma once
-// The matches of one rule, kept up to date between steps instead of being
-// found again (see derivation.cpp). Stores matches flat, in a deterministic
-// order; gives a uniform random match in O(1) and a uniform random oldest
-// match in O(log n) (matches bucketed by the sum of their elements' ages).
+// Matches: a view type, a flat buffer that searches fill, and the set of one
+// rule's matches that the derivation keeps up to date between steps (see
+// derivation.cpp).
+//
+// MatchSet stores matches flat (no allocation per match once warm), indexes
+// them by node through intrusive lists (dropping every match that binds a
+// node is O(those matches)), and draws
+//   - random: a match uniformly from the whole set, one below(n) draw, O(1);
+//   - oldest: a match uniformly among those with the lowest sum of their
+//     elements' creation steps, one below(k) draw only when k > 1 tie,
+//     O(log distinct sums).
 #include <cstdint>
-#include <map>
-#include <unordered_map>
 #include <vector>
 
+#include "g2d/age_buckets.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/rng.hpp"
 
 namespace g2d::rt {
 
+// One match: the host nodes bound to the pattern's nodes, and the host edges
+// bound to its edges, in pattern order. A view: valid while what it points
+// into is unchanged.
 struct Match {
-    std::vector<NodeId> nodes;
-    std::vector<EdgeId> edges;
-    bool operator==(const Match&) const = default;
+    const NodeId* nodes = nullptr;
+    const EdgeId* edges = nullptr;
+};
+
+// Matches as a search finds them, stored flat: a rule's node ids then edge ids.
+class MatchBuffer {
+public:
+    void reset(int nodes, int edges) {
+        nn_ = nodes;
+        ne_ = edges;
+        ids_.clear();
+        count_ = 0;
+    }
+    void add(const NodeId* nodes, const EdgeId* edges) {
+        ids_.insert(ids_.end(), nodes, nodes + nn_);
+        ids_.insert(ids_.end(), edges, edges + ne_);
+        ++count_;
+    }
+    std::size_t size() const { return count_; }
+    const std::uint32_t* ids(std::size_t i) const { return ids_.data() + i * static_cast<std::size_t>(nn_ + ne_); }
+    Match operator[](std::size_t i) const { return Match{ids(i), ids(i) + nn_}; }
+    int nodes() const { return nn_; }
+    int edges() const { return ne_; }
+
+private:
+    int nn_ = 0, ne_ = 0;
+    std::vector<std::uint32_t> ids_;
+    std::size_t count_ = 0;
 };
 
 class MatchSet {
 public:
-    MatchSet(int nodes, int edges, bool byAge) : nn_(nodes), ne_(edges), byAge_(byAge) {}
+    MatchSet(int nodes, int edges, bool byAge);
 
-    // Adds `m` unless an identical match is already there; returns whether it did.
-    bool add(const Match& m, const Graph& g);
+    // Adds a match (nodes, then edges); the caller guarantees it is not there yet.
+    void add(const std::uint32_t* ids, const Graph& g);
     // Removes every match that binds node `n`.
     void removeTouching(NodeId n);
     void clear();
 
     std::size_t size() const { return live_.size(); }
     bool empty() const { return live_.empty(); }
-    Match at(std::size_t i) const { return get(live_[i]); }   // in the set's order
-    // A uniform match (one below(n) draw, none when there is one match).
+    Match at(std::size_t i) const { return view(live_[i]); }   // in the set's order
+    const std::uint32_t* idsAt(std::size_t i) const { return data(live_[i]); }
+    int nodes() const { return nn_; }
+    int edges() const { return ne_; }
+    long long ageSumAt(std::size_t i) const { return ageSum_[live_[i]]; }
     Match pickRandom(Rng& rng) const;
-    // A uniform match among those with the lowest sum of ages (a draw only on ties).
-    Match pickOldest(Rng& rng) const;
+    Match pickOldest(Rng& rng);
+    std::size_t memoryBytes() const;
 
 private:
     using Id = std::uint32_t;
-    Match get(Id id) const;
-    bool matches(Id id, const Match& m) const;
-    std::uint64_t hash(const Match& m) const;
-    void unlink(Id id);
+    const std::uint32_t* data(Id id) const { return &data_[static_cast<std::size_t>(id) * width_]; }
+    Match view(Id id) const { return Match{data(id), data(id) + nn_}; }
+    void remove(Id id);
 
     int nn_, ne_;
+    std::size_t width_;
     bool byAge_;
     std::vector<std::uint32_t> data_;        // per id: nn_ nodes, then ne_ edges
-    std::vector<long long> ageSum_;          // per id
     std::vector<std::uint32_t> livePos_;     // per id: position in live_, or kNoId
     std::vector<Id> live_;
     std::vector<Id> free_;
-    std::vector<std::vector<Id>> byNode_;    // node -> ids (may hold stale ids)
-    std::unordered_multimap<std::uint64_t, Id> byHash_;
-    std::map<long long, std::vector<Id>> byAgeSum_;
-    std::vector<std::uint32_t> agePos_;      // per id: position in its age bucket
+    // Per node, the matches binding it: a doubly linked list through the
+    // (match, position) pairs, numbered id * nn_ + position.
+    std::vector<std::uint32_t> head_;        // per node
+    std::vector<std::uint32_t> next_, prev_; // per (match, position)
+    std::vector<long long> ageSum_;          // per id (oldest only)
+    AgeBuckets ageBuckets_;
 };
 
 }  // namespace g2d::rt

@@ -1,0 +1,40 @@
+#pragma once
+// Every rule's matches, found once on the axiom and then repaired after each
+// step around what the step changed: for each rule, every match binding a
+// node within `radius` edges of a changed node is dropped, and the matches
+// binding such a node are found again by anchored searches. A match found
+// from several anchors is kept only from its first pattern node bound inside
+// the repaired area, so no lookup is needed to avoid duplicates. A step thus
+// costs what changed, not the size of the graph.
+#include <cstdint>
+#include <vector>
+
+#include "g2d/derivation.hpp"
+
+namespace g2d::rt {
+
+class IncrementalMatches {
+public:
+    IncrementalMatches(RuleSet& rules, const Graph& g);
+
+    MatchSet& of(std::size_t rule) { return sets_[rule]; }
+    // Repairs every rule's set after the nodes in `changed` changed.
+    void update(const Graph& g, const std::vector<NodeId>& changed);
+    // Throws std::logic_error unless every rule's set holds exactly the
+    // matches a full search finds (the tests check this after every step).
+    void verify(const Graph& g, long long step);
+    std::size_t memoryBytes() const;
+
+private:
+    // The nodes within `radius` edges of `changed` (changed ones first), marked in seen_.
+    void region(const Graph& g, const std::vector<NodeId>& changed, int radius);
+
+    RuleSet& rules_;
+    std::vector<MatchSet> sets_;
+    std::vector<std::uint32_t> seen_;
+    std::uint32_t mark_ = 0;
+    std::vector<NodeId> area_;
+    MatchBuffer found_;
+};
+
+}  // namespace g2d::rt
