@@ -246,9 +246,7 @@ private:
             out += in + "{\n" + in + "    RuleInfo info;\n" + in + "    info.priority = " + cppLiteral(ir::Value{r.priority}, ir::kIntType) + ";\n";
             out += in + "    info.pick = " + (r.pick == ir::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
             out += in + "    info.parallel = " + (parallel ? "true" : "false") + ";\n";
-            int reach = static_cast<int>(r.nodes.size());
-            for (const auto& nac : r.nacs) reach += static_cast<int>(nac.nodes.size());
-            out += in + "    info.radius = " + str(std::max(0, reach - 1)) + ";\n";
+            out += in + "    info.radius = " + str(r.repairRadius) + ";\n";
             out += in + "    info.edgeCount = " + str(static_cast<long long>(r.edges.size())) + ";\n";
             out += in + "    info.nodeKinds = {";
             for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);

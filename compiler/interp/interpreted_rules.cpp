@@ -33,9 +33,7 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
             }
             info.weights.push_back(w);
         }
-        int reach = static_cast<int>(r.nodes.size());
-        for (const auto& n : r.nacs) reach += static_cast<int>(n.nodes.size());
-        info.radius = std::max(0, reach - 1);
+        info.radius = r.repairRadius;
         for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
         info.edgeCount = static_cast<int>(r.edges.size());
         infos_.push_back(std::move(info));

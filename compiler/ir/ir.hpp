@@ -293,6 +293,12 @@ struct Rule {
     // matching re-finds matches around the nodes a step changed).
     std::vector<std::vector<PlanStep>> anchoredPlans;
     std::vector<NegativeCondition> nacs;
+    // How far (in edges) from a changed node a match of this rule can be
+    // affected: 0 without negative conditions (a match reads only its own
+    // elements), else the depth of the deepest negative-condition node;
+    // -1 when a negative condition has a part not connected to the match
+    // (then any change anywhere may matter).
+    int repairRadius = 0;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

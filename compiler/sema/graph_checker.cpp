@@ -436,6 +436,7 @@ private:
         for (auto& n : rule_.nacs)
             n.plan = buildSearchPlan(n.nodes, n.edges, n.conditions, n.outerNodes, n.outerEdges,
                                      static_cast<int>(rule_.nodes.size()));
+        rule_.repairRadius = repairRadius(rule_);
     }
 
     bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {

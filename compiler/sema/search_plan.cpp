@@ -1,5 +1,6 @@
 #include "sema/search_plan.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace g2d::sema {
@@ -114,6 +115,32 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
         placeConditions();
     }
     return plan;
+}
+
+int repairRadius(const ir::Rule& rule) {
+    // Breadth-first over each negative condition's edges, from the match's
+    // nodes (all at depth 0).
+    int radius = 0;
+    const int outer = static_cast<int>(rule.nodes.size());
+    for (const auto& nac : rule.nacs) {
+        const int total = outer + static_cast<int>(nac.nodes.size());
+        std::vector<int> depth(static_cast<std::size_t>(total), -1);
+        for (int i = 0; i < outer; ++i) depth[static_cast<std::size_t>(i)] = 0;
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (const auto& e : nac.edges) {
+                auto& a = depth[static_cast<std::size_t>(e.src)];
+                auto& b = depth[static_cast<std::size_t>(e.dst)];
+                if (a >= 0 && (b < 0 || b > a + 1)) { b = a + 1; grew = true; }
+                if (b >= 0 && (a < 0 || a > b + 1)) { a = b + 1; grew = true; }
+            }
+        }
+        for (int d : depth) {
+            if (d < 0) return -1;
+            radius = std::max(radius, d);
+        }
+    }
+    return radius;
 }
 
 }  // namespace g2d::sema

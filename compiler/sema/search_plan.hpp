@@ -18,3 +18,10 @@ std::vector<ir::PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& no
                                           int edgeBase, int boundOuterNodes, int anchor = -1);
 
 }  // namespace g2d::sema
+
+namespace g2d::sema {
+
+// Rule::repairRadius of a rule whose match and negative conditions are built.
+int repairRadius(const ir::Rule& rule);
+
+}  // namespace g2d::sema

@@ -8,9 +8,12 @@ namespace g2d::rt {
 namespace {
 constexpr std::uint32_t kEmpty = 0xffffffffu;
 
+// Keys close together (matches made in nearby steps) land in nearby slots,
+// runs of 64 keys are scattered over the table.
 std::size_t hashKey(long long key, std::size_t mask) {
-    std::uint64_t x = static_cast<std::uint64_t>(key) * 0x9e3779b97f4a7c15ULL;
-    return static_cast<std::size_t>(x ^ (x >> 29)) & mask;
+    const auto k = static_cast<std::uint64_t>(key);
+    std::uint64_t x = (k >> 6) * 0x9e3779b97f4a7c15ULL;
+    return static_cast<std::size_t>(((x ^ (x >> 29)) << 6) | (k & 63)) & mask;
 }
 }  // namespace
 
@@ -81,14 +84,19 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
     } else if (buckets_[b].ids.empty()) {
         --emptyBuckets_;
     }
-    if (id >= posInBucket_.size()) posInBucket_.resize(std::max<std::size_t>(id + 1, posInBucket_.size() * 2));
+    if (id >= posInBucket_.size()) {
+        posInBucket_.resize(std::max<std::size_t>(id + 1, posInBucket_.size() * 2));
+        bucketOf_.resize(posInBucket_.size());
+    }
     posInBucket_[id] = static_cast<std::uint32_t>(buckets_[b].ids.size());
+    bucketOf_[id] = b;
     buckets_[b].ids.push_back(id);
     ++count_;
 }
 
 void AgeBuckets::erase(std::uint32_t id, long long key) {
-    auto& ids = buckets_[find(key)].ids;
+    (void)key;
+    auto& ids = buckets_[bucketOf_[id]].ids;
     const std::uint32_t pos = posInBucket_[id];
     const std::uint32_t moved = ids.back();
     ids[pos] = moved;
@@ -132,7 +140,7 @@ void AgeBuckets::clear() { *this = AgeBuckets(); }
 std::size_t AgeBuckets::memoryBytes() const {
     std::size_t bytes = buckets_.capacity() * sizeof(Bucket) + heap_.capacity() * sizeof(long long) +
                         slotKey_.capacity() * sizeof(long long) + slotBucket_.capacity() * 4 +
-                        posInBucket_.capacity() * 4 + freeBuckets_.capacity() * 4;
+                        posInBucket_.capacity() * 8 + freeBuckets_.capacity() * 4;
     for (const auto& b : buckets_) bytes += b.ids.capacity() * 4;
     return bytes;
 }

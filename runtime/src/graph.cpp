@@ -212,16 +212,15 @@ void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v) {
 }
 
 void Graph::touchNode(NodeId n) {
-    if (n >= isDirty_.size()) isDirty_.resize(std::max<std::size_t>(nodes_.size(), n + 1) * 2, false);
-    if (isDirty_[n]) return;
-    isDirty_[n] = true;
+    if (nodes_[n].dirty) return;
+    nodes_[n].dirty = 1;
     dirty_.push_back(n);
 }
 
 void Graph::takeDirty(std::vector<NodeId>& out) {
     out.clear();
     out.swap(dirty_);
-    for (NodeId n : out) isDirty_[n] = false;
+    for (NodeId n : out) nodes_[n].dirty = 0;
 }
 
 int Graph::degree(NodeId n) const {
@@ -245,7 +244,7 @@ int Graph::outDegree(NodeId n) const {
 
 std::size_t Graph::memoryBytes() const {
     std::size_t bytes = nodes_.capacity() * sizeof(NodeRec) + edges_.capacity() * sizeof(EdgeRec) +
-                        allNodes_.capacity() * sizeof(NodeId) + isDirty_.capacity() / 8;
+                        allNodes_.capacity() * sizeof(NodeId) + dirty_.capacity() * sizeof(NodeId);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
     return bytes;

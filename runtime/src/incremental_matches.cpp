@@ -58,8 +58,16 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& chang
     if (changed.empty()) return;
     for (std::size_t r = 0; r < sets_.size(); ++r) {
         const RuleInfo& info = rules_.info(r);
-        region(g, changed, info.radius);
         MatchSet& set = sets_[r];
+        if (info.radius < 0) {
+            // Not local: find them all again.
+            set.clear();
+            found_.reset(set.nodes(), set.edges());
+            rules_.findMatches(r, g, found_);
+            for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
+            continue;
+        }
+        region(g, changed, info.radius);
         for (NodeId n : area_) set.removeTouching(n);
         const int nn = set.nodes();
         for (NodeId h : area_) {

@@ -8,56 +8,27 @@
 
 namespace g2d::rt {
 
+void throwOverflow() { throw OpError("integer overflow"); }
+void throwDivisionByZero() { throw OpError("division by zero"); }
+void throwNonFinite(double x) {
+    throw OpError(std::isnan(x) ? "the result is not a number (NaN)" : "the result is infinite");
+}
+void throwNonFiniteVec() { throw OpError("the result is not a finite vector"); }
+
 namespace {
-[[noreturn]] void overflow() { throw OpError("integer overflow"); }
-[[noreturn]] void divisionByZero() { throw OpError("division by zero"); }
+[[noreturn]] void overflow() { throwOverflow(); }
+[[noreturn]] void divisionByZero() { throwDivisionByZero(); }
 }  // namespace
 
-long long addInt(long long a, long long b) {
-    long long r;
-    if (__builtin_add_overflow(a, b, &r)) overflow();
-    return r;
-}
-long long subInt(long long a, long long b) {
-    long long r;
-    if (__builtin_sub_overflow(a, b, &r)) overflow();
-    return r;
-}
-long long mulInt(long long a, long long b) {
-    long long r;
-    if (__builtin_mul_overflow(a, b, &r)) overflow();
-    return r;
-}
 long long modInt(long long a, long long b) {
     if (b == 0) divisionByZero();
     if (a == LLONG_MIN && b == -1) overflow();
     return imodFloor(a, b);
 }
-long long negInt(long long a) {
-    if (a == LLONG_MIN) overflow();
-    return -a;
-}
-long long absInt(long long a) { return a < 0 ? negInt(a) : a; }
 
-double finite(double x) {
-    if (!std::isfinite(x)) throw OpError(std::isnan(x) ? "the result is not a number (NaN)" : "the result is infinite");
-    return x;
-}
-vec2 finite(vec2 v) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y)) throw OpError("the result is not a finite vector");
-    return v;
-}
-double divFloat(double a, double b) {
-    if (b == 0) divisionByZero();
-    return finite(a / b);
-}
 double modFloat(double a, double b) {
     if (b == 0) divisionByZero();
     return finite(fmodFloor(a, b));
-}
-vec2 divVec(vec2 v, double s) {
-    if (s == 0) divisionByZero();
-    return finite(v / s);
 }
 
 long long floatToInt(double x) {

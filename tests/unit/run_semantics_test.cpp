@@ -408,3 +408,14 @@ TEST_CASE("automatic placement on a slanted match scales uniformly, as the thesi
     CHECK(r.run.graph().pos(2).x == Approx(1.2));
     CHECK(r.run.graph().pos(2).y == Approx(0.8));
 }
+
+TEST_CASE("a negative condition not connected to the match sees changes anywhere", "[run][nac][incremental]") {
+    // `not { b: B; }` holds only while no B exists anywhere: once the first
+    // step makes one, the rule must stop matching, far from what changed.
+    auto r = derive("node A; node B;\n"
+                    "axiom { a: A at (0, 0); c: A at (5, 5); }\n"
+                    "limit 10;\n"
+                    "rule R { match { x: A; not { b: B; } } produce { x; b: B at (1, 1); } }\n");
+    CHECK(r.run.derivation.steps == 1);
+    CHECK(r.run.graph().nodeCount() == 3);
+}

@@ -38,6 +38,7 @@ private:
     std::vector<std::uint32_t> slotBucket_;   // kEmpty when free
     std::size_t mapSize_ = 0;
     std::vector<std::uint32_t> posInBucket_;  // per id
+    std::vector<std::uint32_t> bucketOf_;     // per id
     std::size_t count_ = 0;
     std::size_t emptyBuckets_ = 0;
 };

@@ -8,10 +8,11 @@
 // so they draw random numbers in the same order.
 //
 // The matches of every rule are found once on the axiom and then kept up to
-// date: after a step, the graph reports the nodes that changed; for each rule,
-// every match binding a node within `radius` of a changed node is dropped and
-// the matches binding such a node are found again, anchored there. So a step
-// costs what changed, not the size of the graph.
+// date (incremental_matches.hpp): after a step, the graph reports the nodes
+// that changed; for each rule, every match binding a node within the rule's
+// radius of a changed node is dropped and the matches binding such a node are
+// found again, anchored there. So a step costs what changed, not the size of
+// the graph.
 //
 // Random draws per step, in this order:
 //   1. for each priority visited, a Fisher–Yates shuffle of its rules
@@ -45,7 +46,8 @@ struct RuleInfo {
     std::vector<double> weights;      // one per daughter, all > 0
     // The pattern's shape, for incremental matching: the kinds of its nodes
     // (-1: wildcard), its edge count, and how far (in edges) from a changed
-    // node a match or its negative conditions can reach.
+    // node a match can be affected through its negative conditions (-1:
+    // anywhere, so every change means a full search for this rule).
     std::vector<int> nodeKinds;
     int edgeCount = 0;
     int radius = 0;

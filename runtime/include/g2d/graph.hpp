@@ -147,7 +147,8 @@ private:
         long long age = 0;
         std::int16_t kind = -1;
         bool alive = true;
-        bool styled = false;
+        std::uint8_t styled : 1 = 0;
+        std::uint8_t dirty : 1 = 0;               // in dirty_ (kept here: one cache line per node)
         std::uint32_t slot = kNoId;
         std::uint32_t slotInKind = 0, slotInAll = 0;
         EdgeId firstOut = kNoId, firstIn = kNoId;
@@ -183,7 +184,6 @@ private:
     std::unordered_map<EdgeId, std::vector<StyleOverride>> edgeStyles_;
     std::size_t liveNodes_ = 0, liveEdges_ = 0;
     std::vector<NodeId> dirty_;
-    std::vector<bool> isDirty_;
 };
 
 }  // namespace g2d::rt

@@ -2,7 +2,10 @@
 // Every rule's matches, found once on the axiom and then repaired after each
 // step around what the step changed: for each rule, every match binding a
 // node within `radius` edges of a changed node is dropped, and the matches
-// binding such a node are found again by anchored searches. A match found
+// binding such a node are found again by anchored searches. A match reads
+// only its own elements (a changed edge or attribute marks its nodes), so
+// the radius is 0 unless negative conditions look further; a rule whose
+// negative condition is not connected to its match is searched in full. A match found
 // from several anchors is kept only from its first pattern node bound inside
 // the repaired area, so no lookup is needed to avoid duplicates. A step thus
 // costs what changed, not the size of the graph.

@@ -3,6 +3,7 @@
 // division by zero, non-finite results and bad conversions throw OpError.
 // The constant folder, the interpreter and generated code all call these, so
 // they agree to the bit and fail with the same words.
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -15,18 +16,52 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-long long addInt(long long a, long long b);
-long long subInt(long long a, long long b);
-long long mulInt(long long a, long long b);
-long long modInt(long long a, long long b);     // floored; the sign follows b
-long long negInt(long long a);
-long long absInt(long long a);
+// The failures, out of line so that the checks below inline to a compare
+// and a rarely taken branch (they run for every arithmetic operation).
+[[noreturn]] void throwOverflow();
+[[noreturn]] void throwDivisionByZero();
+[[noreturn]] void throwNonFinite(double x);
+[[noreturn]] void throwNonFiniteVec();
 
-double finite(double x);                        // throws on NaN or infinity
-vec2 finite(vec2 v);
-double divFloat(double a, double b);
+inline long long addInt(long long a, long long b) {
+    long long r;
+    if (__builtin_add_overflow(a, b, &r)) throwOverflow();
+    return r;
+}
+inline long long subInt(long long a, long long b) {
+    long long r;
+    if (__builtin_sub_overflow(a, b, &r)) throwOverflow();
+    return r;
+}
+inline long long mulInt(long long a, long long b) {
+    long long r;
+    if (__builtin_mul_overflow(a, b, &r)) throwOverflow();
+    return r;
+}
+long long modInt(long long a, long long b);     // floored; the sign follows b
+inline long long negInt(long long a) {
+    if (a == (-9223372036854775807LL - 1)) throwOverflow();
+    return -a;
+}
+inline long long absInt(long long a) { return a < 0 ? negInt(a) : a; }
+
+inline double finite(double x) {                // throws on NaN or infinity
+    if (!std::isfinite(x)) throwNonFinite(x);
+    return x;
+}
+inline vec2 finite(vec2 v) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y)) throwNonFiniteVec();
+    return v;
+}
+inline double divFloat(double a, double b) {
+    if (b == 0) throwDivisionByZero();
+    return finite(a / b);
+}
 double modFloat(double a, double b);            // floored
-vec2 divVec(vec2 v, double s);
+inline vec2 divVec(vec2 v, double s) {
+    if (s == 0) throwDivisionByZero();
+    return finite(v / s);
+}
 
 long long floatToInt(double x);                 // truncation; throws when out of range
 long long floorToInt(double x);
