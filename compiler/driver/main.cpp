@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     g2d::RunOptions runOptions;
     std::string svgOut, jsonOut;
     long long steps = -1;
+    long long maxElements = -1;
     run->add_option("FILE", runOptions.file, ".g2d grammar")->required();
     run->add_option("-o,--output", svgOut, "SVG output (default: the grammar's name with .svg)");
     run->add_option("--json", jsonOut, "Graph output in NetworkX node-link JSON");
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     run->add_option("-D,--define", runOptions.defines, "Set a parameter: -D NAME=VALUE")->allow_extra_args(false);
     run->add_option("--steps", steps, "Global step limit (overrides the grammar's)");
     run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");
+    run->add_option("--max-elements", maxElements, "Stop with an error when the graph grows past N nodes + edges (default 10000000)");
 
     auto* emitCpp = app.add_subcommand("emit-cpp", "Write the grammar as one C++ translation unit");
     g2d::BuildOptions emitOptions;
@@ -84,6 +86,7 @@ int main(int argc, char** argv) {
         if (!svgOut.empty()) runOptions.svgOut = svgOut;
         if (!jsonOut.empty()) runOptions.jsonOut = jsonOut;
         if (run->count("--steps")) runOptions.steps = steps;
+        if (run->count("--max-elements")) runOptions.maxElements = maxElements;
         return g2d::runRun(runOptions);
     }
     return 2;

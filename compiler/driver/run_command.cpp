@@ -27,6 +27,7 @@ int runRun(const RunOptions& options) {
     request.defines = options.defines;
     request.steps = options.steps;
     request.stats = options.stats;
+    request.maxElements = options.maxElements;
     interp::InterpretedRun grammar(*compiled.program, &compiled.sources);
     return rt::runGrammar(request, grammar);
 }

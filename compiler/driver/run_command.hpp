@@ -16,6 +16,7 @@ struct RunOptions {
     std::optional<long long> steps;        // overrides the grammar's global limit
     bool stats = false;
     bool noSvg = false;
+    std::optional<long long> maxElements;  // the runaway guard (default: rt::kDefaultMaxElements)
 };
 
 // Returns the exit code: 0 done, 1 errors in the grammar, the run or the

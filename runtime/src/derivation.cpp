@@ -162,7 +162,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
         result.steps = step;
         if (g.nodeCount() + g.edgeCount() > limits.maxElements)
             throw RunawayError("the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
-                               std::to_string(step) + " (a runaway derivation? set a `limit`)");
+                               std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
         if (observer) observer(step, g);
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

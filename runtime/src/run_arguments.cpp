@@ -11,14 +11,15 @@ namespace {
 void usage(FILE* to, const char* program) {
     std::fprintf(to,
                  "usage: %s [-o OUT.svg] [--json OUT.json] [--no-svg] [--seed N] [-D NAME=VALUE]... [--steps N] "
-                 "[--stats]\n"
+                 "[--stats] [--max-elements N]\n"
                  "  -o, --output FILE   SVG output (default: the grammar's name with .svg)\n"
                  "  --json FILE         the graph in NetworkX node-link JSON\n"
                  "  --no-svg            write no SVG\n"
                  "  --seed N            seed of the random generator (default 1)\n"
                  "  -D NAME=VALUE       set a parameter\n"
                  "  --steps N           global step limit (overrides the grammar's)\n"
-                 "  --stats             print one JSON line of statistics on stdout\n",
+                 "  --stats             print one JSON line of statistics on stdout\n"
+                 "  --max-elements N    stop with an error past N nodes + edges (default 10000000)\n",
                  program);
 }
 
@@ -69,6 +70,11 @@ std::optional<int> parseRunArguments(int argc, char** argv, const std::string& g
             long long n = 0;
             if (!v || !parseNumber(v, n)) return fail("--steps needs an integer");
             out.steps = n;
+        } else if (a == "--max-elements") {
+            const char* v = value("N");
+            long long n = 0;
+            if (!v || !parseNumber(v, n)) return fail("--max-elements needs an integer");
+            out.maxElements = n;
         } else if (a == "-D" || a == "--define") {
             const char* v = value("NAME=VALUE");
             if (!v) return fail("-D needs NAME=VALUE");

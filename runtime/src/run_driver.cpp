@@ -97,13 +97,15 @@ std::string renderLocatedError(const SourceLocation& at, const std::string& mess
 }
 
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         std::optional<long long> steps, const StepObserver& observer, long long* lastStep) {
+                         std::optional<long long> steps, const StepObserver& observer, long long* lastStep,
+                         std::size_t maxElements) {
     Rng rng(seed);
     grammar.start(params, rng);
     DerivationLimits limits;
     const std::optional<long long> grammarLimit = grammar.stepLimit();
     limits.steps = steps ? steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
     limits.perPriority = grammar.priorityLimits();
+    limits.maxElements = maxElements;
     DerivedRun out;
     out.result = derive(grammar.graph(), grammar.rules(), rng, limits, [&](long long s, const Graph& g) {
         if (lastStep) *lastStep = s;
@@ -118,6 +120,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
         return usageError(err);
     if (request.steps && *request.steps < 0) return usageError("--steps must not be negative");
+    if (request.maxElements && *request.maxElements <= 0) return usageError("--max-elements must be positive");
 
     // Outputs are opened first, so an unwritable path fails before the work.
     std::unique_ptr<AtomicFile> svgFile, jsonFile;
@@ -135,7 +138,9 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     try {
         Progress progress;
         const DerivedRun derived = deriveGrammar(grammar, params, request.seed, request.steps,
-                                                 [&](long long s, const Graph& g) { progress.update(s, g); }, &step);
+                                                 [&](long long s, const Graph& g) { progress.update(s, g); }, &step,
+                                                 request.maxElements ? static_cast<std::size_t>(*request.maxElements)
+                                                                     : kDefaultMaxElements);
         const DerivationResult& result = derived.result;
         if (derived.hitDefaultLimit)
             std::fprintf(stderr,

@@ -85,6 +85,13 @@ grep -q '"steps": 7,.*"stopped": "step_limit"' out.txt || fail "--steps: $(cat o
 expect_code 0 "$g2d" run spin.g2d --no-svg
 grep -q 'warning: stopped at the default limit of 10000 steps' err.txt || fail "default limit warning: $(cat err.txt)"
 
+# --max-elements: the runaway guard, with the step it tripped at; 0 is a usage error
+expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 1000 -o guard.svg
+grep -q 'the graph grew past 1000 elements at step .*--max-elements' err.txt || fail "--max-elements: $(cat err.txt)"
+[ -e guard.svg ] && fail "--max-elements left an output"
+expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" --max-elements 0
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 30000 --no-svg
+
 # An interrupted run leaves no temporary files and no output
 "$g2d" run spin.g2d --steps 100000000 -o interrupted.svg >/dev/null 2>&1 &
 pid=$!

@@ -83,12 +83,16 @@ public:
     virtual void commit(Graph& g, long long step) = 0;
 };
 
+// A runaway guard: a derivation stops with an error past this many nodes +
+// edges unless told otherwise (about 1 GB compiled).
+inline constexpr std::size_t kDefaultMaxElements = 10'000'000;
+
 enum class StopReason { Terminal, StepLimit };
 
 struct DerivationLimits {
     std::optional<long long> steps;               // global limit (none: unlimited)
     std::map<long long, long long> perPriority;   // priority -> limit
-    std::size_t maxElements = 10'000'000;         // a runaway guard (about 2 GB)
+    std::size_t maxElements = kDefaultMaxElements;
 };
 
 struct DerivationResult {

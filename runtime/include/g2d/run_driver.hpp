@@ -22,6 +22,7 @@ struct RunRequest {
     std::vector<std::string> defines;     // NAME=VALUE
     std::optional<long long> steps;       // overrides the grammar's global limit
     bool stats = false;
+    std::optional<long long> maxElements; // the runaway guard (default kDefaultMaxElements)
 };
 
 struct DerivedRun {
@@ -33,7 +34,7 @@ struct DerivedRun {
 // `seed`. `lastStep` follows the step being done (for error messages).
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
                          std::optional<long long> steps, const StepObserver& observer = {},
-                         long long* lastStep = nullptr);
+                         long long* lastStep = nullptr, std::size_t maxElements = kDefaultMaxElements);
 
 // Runs and writes the outputs. Returns the exit code: 0 done, 1 a run-time
 // error or an unwritable output, 2 bad arguments. Messages go to stderr,
