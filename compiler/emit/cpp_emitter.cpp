@@ -247,6 +247,9 @@ private:
             out += in + "    info.pick = " + (r.pick == ir::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
             out += in + "    info.parallel = " + (parallel ? "true" : "false") + ";\n";
             out += in + "    info.radius = " + str(r.repairRadius) + ";\n";
+            out += in + "    info.readsIncidence = {";
+            for (std::size_t i = 0; i < r.readsIncidence.size(); ++i) out += (i ? ", " : "") + std::string(r.readsIncidence[i] ? "true" : "false");
+            out += "};\n";
             out += in + "    info.edgeCount = " + str(static_cast<long long>(r.edges.size())) + ";\n";
             out += in + "    info.nodeKinds = {";
             for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);

@@ -34,6 +34,7 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
             info.weights.push_back(w);
         }
         info.radius = r.repairRadius;
+        info.readsIncidence = r.readsIncidence;
         for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
         info.edgeCount = static_cast<int>(r.edges.size());
         infos_.push_back(std::move(info));

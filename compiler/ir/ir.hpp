@@ -299,6 +299,11 @@ struct Rule {
     // -1 when a negative condition has a part not connected to the match
     // (then any change anywhere may matter).
     int repairRadius = 0;
+    // Per match node: whether a change among the host node's edges alone (an
+    // edge added, removed or changed) can make or break a match binding it
+    // there. Every edge between two match nodes is read from one end only,
+    // so a hub's edge changes need not revisit every match binding the hub.
+    std::vector<bool> readsIncidence;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

@@ -437,6 +437,7 @@ private:
             n.plan = buildSearchPlan(n.nodes, n.edges, n.conditions, n.outerNodes, n.outerEdges,
                                      static_cast<int>(rule_.nodes.size()));
         rule_.repairRadius = repairRadius(rule_);
+        rule_.readsIncidence = incidenceReaders(rule_);
     }
 
     bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {

@@ -117,30 +117,104 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
     return plan;
 }
 
+namespace {
+
+// The elements a negative condition's conditions read (node and edge indices).
+void collectReads(const ir::Expr& e, std::vector<int>& nodes, std::vector<int>& edges) {
+    if (e.op == ir::ExprOp::Attr || e.op == ir::ExprOp::Fact)
+        (e.elem.cls == ir::ElemClass::Edge ? edges : nodes).push_back(e.elem.index);
+    for (const auto& a : e.args) collectReads(a, nodes, edges);
+}
+
+}  // namespace
+
 int repairRadius(const ir::Rule& rule) {
-    // Breadth-first over each negative condition's edges, from the match's
-    // nodes (all at depth 0).
+    // A change reaches a match through a negative condition's own nodes only
+    // when a condition reads such a node (or an edge between two of them),
+    // or an edge between two of them changes; changes on an edge from a match
+    // node are seen at that node (incidenceReaders). The radius is the depth
+    // (in edges from the match) of the shallowest end of what is read.
     int radius = 0;
     const int outer = static_cast<int>(rule.nodes.size());
     for (const auto& nac : rule.nacs) {
         const int total = outer + static_cast<int>(nac.nodes.size());
+        auto valid = [&](const ir::PatternEdge& e) { return e.src >= 0 && e.dst >= 0 && e.src < total && e.dst < total; };
         std::vector<int> depth(static_cast<std::size_t>(total), -1);
         for (int i = 0; i < outer; ++i) depth[static_cast<std::size_t>(i)] = 0;
         for (bool grew = true; grew;) {
             grew = false;
             for (const auto& e : nac.edges) {
+                if (!valid(e)) continue;  // after an error
                 auto& a = depth[static_cast<std::size_t>(e.src)];
                 auto& b = depth[static_cast<std::size_t>(e.dst)];
                 if (a >= 0 && (b < 0 || b > a + 1)) { b = a + 1; grew = true; }
                 if (b >= 0 && (a < 0 || a > b + 1)) { a = b + 1; grew = true; }
             }
         }
-        for (int d : depth) {
-            if (d < 0) return -1;
-            radius = std::max(radius, d);
+        for (int d : depth)
+            if (d < 0) return -1;   // a part not connected to the match
+        auto at = [&](int node) { return depth[static_cast<std::size_t>(node)]; };
+        std::vector<int> readNodes, readEdges;
+        for (const auto& c : nac.conditions) collectReads(c.expr, readNodes, readEdges);
+        for (int n : readNodes)
+            if (n >= outer && n < total) radius = std::max(radius, at(n));
+        for (int i : readEdges) {
+            const int k = i - nac.outerEdges;
+            if (k >= 0 && k < static_cast<int>(nac.edges.size()) && valid(nac.edges[static_cast<std::size_t>(k)]))
+                radius = std::max(radius, std::min(at(nac.edges[static_cast<std::size_t>(k)].src), at(nac.edges[static_cast<std::size_t>(k)].dst)));
         }
+        for (const auto& e : nac.edges)
+            if (valid(e) && e.src >= outer && e.dst >= outer) radius = std::max(radius, std::min(at(e.src), at(e.dst)));
     }
     return radius;
+}
+
+namespace {
+
+void markDegreeReads(const ir::Expr& e, int matchNodes, std::vector<bool>& reads) {
+    if (e.op == ir::ExprOp::Fact && e.elem.cls == ir::ElemClass::Node && e.elem.index < matchNodes &&
+        (e.fact == ir::ElemFact::Degree || e.fact == ir::ElemFact::InDegree || e.fact == ir::ElemFact::OutDegree))
+        reads[static_cast<std::size_t>(e.elem.index)] = true;
+    for (const auto& a : e.args) markDegreeReads(a, matchNodes, reads);
+}
+
+}  // namespace
+
+std::vector<bool> incidenceReaders(const ir::Rule& rule) {
+    const int outer = static_cast<int>(rule.nodes.size());
+    std::vector<bool> reads(rule.nodes.size(), false);
+    // Forced: degrees read in conditions, and edges to a negative condition's
+    // own nodes (only this end sees them change).
+    for (const auto& c : rule.conditions) markDegreeReads(c.expr, outer, reads);
+    std::vector<std::pair<int, int>> between;   // edges between two match nodes
+    const auto valid = [&](int i, int limit) { return i >= 0 && i < limit; };  // not after an error
+    for (const auto& e : rule.edges)
+        if (valid(e.src, outer) && valid(e.dst, outer)) between.emplace_back(e.src, e.dst);
+    for (const auto& nac : rule.nacs) {
+        for (const auto& c : nac.conditions) markDegreeReads(c.expr, outer, reads);
+        const int total = outer + static_cast<int>(nac.nodes.size());
+        for (const auto& e : nac.edges) {
+            if (!valid(e.src, total) || !valid(e.dst, total)) continue;
+            const bool srcOuter = e.src < outer, dstOuter = e.dst < outer;
+            if (srcOuter && dstOuter) between.emplace_back(e.src, e.dst);
+            else if (srcOuter) reads[static_cast<std::size_t>(e.src)] = true;
+            else if (dstOuter) reads[static_cast<std::size_t>(e.dst)] = true;
+        }
+    }
+    // An edge between two match nodes changes both ends' incidences: one
+    // reading end suffices. Cover them greedily, preferring ends already
+    // reading, then the end with more such edges, then the lower index.
+    std::vector<int> count(rule.nodes.size(), 0);
+    for (auto [a, b] : between) {
+        ++count[static_cast<std::size_t>(a)];
+        if (b != a) ++count[static_cast<std::size_t>(b)];
+    }
+    for (auto [a, b] : between) {
+        if (reads[static_cast<std::size_t>(a)] || reads[static_cast<std::size_t>(b)]) continue;
+        const int pick = count[static_cast<std::size_t>(b)] > count[static_cast<std::size_t>(a)] ? b : a;
+        reads[static_cast<std::size_t>(pick)] = true;
+    }
+    return reads;
 }
 
 }  // namespace g2d::sema

@@ -41,7 +41,8 @@ struct Group {
 // step. Marks are step-stamped arrays, so a step costs O(matches).
 class ParallelStep {
 public:
-    void run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step) {
+    // Returns how many matches were rewritten.
+    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step) {
         const RuleInfo& info = rules.info(rule);
         const int nn = set.nodes(), ne = set.edges();
         const std::size_t width = static_cast<std::size_t>(nn + ne);
@@ -66,6 +67,7 @@ public:
         grow(writtenNodes_, g.nodeCapacity());
         grow(readEdges_, g.edgeCapacity());
         grow(writtenEdges_, g.edgeCapacity());
+        std::size_t applied = 0;
         for (std::uint32_t i : order_) {
             const Match m{&batch_[i * width], &batch_[i * width] + nn};
             bool clash = false;
@@ -83,8 +85,10 @@ public:
             for (NodeId n : writes_.nodes) writtenNodes_[n] = stamp_;
             for (EdgeId e : writes_.edges) writtenEdges_[e] = stamp_;
             rules.prepare(rule, daughter, m, g, rng, step);
+            ++applied;
         }
         rules.commit(g, step);
+        return applied;
     }
 
 private:
@@ -118,10 +122,10 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
 
     DerivationResult result;
     std::vector<std::size_t> order;
-    std::vector<NodeId> changed;
+    std::vector<NodeId> changed, edgesChanged;
     ParallelStep parallel;
     IncrementalMatches sets(rules, g);
-    g.takeDirty(changed);
+    g.takeDirty(changed, edgesChanged);
     static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
@@ -139,15 +143,16 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
                 if (info.parallel) {
-                    parallel.run(r, set, rules, g, rng, step);
+                    result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step));
                 } else {
                     const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                     const std::size_t d = pickDaughter(info.weights, rng);
                     rules.prepare(r, d, m, g, rng, step);
                     rules.commit(g, step);
+                    ++result.applications;
                 }
-                g.takeDirty(changed);
-                sets.update(g, changed);
+                g.takeDirty(changed, edgesChanged);
+                sets.update(g, changed, edgesChanged);
                 if (verify) sets.verify(g, step);
                 applied = true;
                 ++grp.applied;

@@ -98,8 +98,7 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
     edges_.push_back(rec);
     link(id);
     ++liveEdges_;
-    touchNode(src);
-    touchNode(dst);
+    touchEdge(id);
     return id;
 }
 
@@ -112,32 +111,28 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age, std::vect
 
 void Graph::link(EdgeId e) {
     auto& rec = edges_[e];
+    rec.prevOut = kNoId;
     rec.nextOut = nodes_[rec.src].firstOut;
+    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = e;
     nodes_[rec.src].firstOut = e;
+    rec.prevIn = kNoId;
     rec.nextIn = nodes_[rec.dst].firstIn;
+    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = e;
     nodes_[rec.dst].firstIn = e;
 }
 
 void Graph::unlink(EdgeId e) {
-    // O(degree): the lists are singly linked to keep edge records small.
     const auto& rec = edges_[e];
-    for (EdgeId* p = &nodes_[rec.src].firstOut; *p != kNoId; p = &edges_[*p].nextOut)
-        if (*p == e) {
-            *p = rec.nextOut;
-            break;
-        }
-    for (EdgeId* p = &nodes_[rec.dst].firstIn; *p != kNoId; p = &edges_[*p].nextIn)
-        if (*p == e) {
-            *p = rec.nextIn;
-            break;
-        }
+    (rec.prevOut != kNoId ? edges_[rec.prevOut].nextOut : nodes_[rec.src].firstOut) = rec.nextOut;
+    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = rec.prevOut;
+    (rec.prevIn != kNoId ? edges_[rec.prevIn].nextIn : nodes_[rec.dst].firstIn) = rec.nextIn;
+    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = rec.prevIn;
 }
 
 void Graph::removeEdge(EdgeId e) {
     auto& rec = edges_[e];
     if (!rec.alive) return;
-    touchNode(rec.src);
-    touchNode(rec.dst);
+    touchEdge(e);
     unlink(e);
     rec.alive = false;
     clearAttrBlock(rec.kind, rec.slot);
@@ -173,14 +168,12 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
     auto& rec = edges_[e];
     if (!rec.alive || !nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("reconnecting a dead edge or to a dead node");
     if (rec.src == src && rec.dst == dst) return;
-    touchNode(rec.src);
-    touchNode(rec.dst);
-    touchNode(src);
-    touchNode(dst);
+    touchEdge(e);
     unlink(e);
     rec.src = src;
     rec.dst = dst;
     link(e);
+    touchEdge(e);
 }
 
 void Graph::setNodeAttr(NodeId n, int i, Value v) {
@@ -211,16 +204,14 @@ void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v) {
     setStyle(edgeStyles_[e], prop, std::move(v));
 }
 
-void Graph::touchNode(NodeId n) {
-    if (nodes_[n].dirty) return;
-    nodes_[n].dirty = 1;
-    dirty_.push_back(n);
-}
-
-void Graph::takeDirty(std::vector<NodeId>& out) {
-    out.clear();
-    out.swap(dirty_);
-    for (NodeId n : out) nodes_[n].dirty = 0;
+void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly) {
+    itself.clear();
+    edgesOnly.clear();
+    for (NodeId n : dirty_) {
+        (nodes_[n].dirty & kChangedItself ? itself : edgesOnly).push_back(n);
+        nodes_[n].dirty = 0;
+    }
+    dirty_.clear();
 }
 
 int Graph::degree(NodeId n) const {

@@ -10,52 +10,52 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
-        sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest);
+        sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence);
         found_.reset(nn, info.edgeCount);
         rules.findMatches(r, g, found_);
         for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
     }
 }
 
-void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& changed, int radius) {
+void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itself,
+                                const std::vector<NodeId>& edgesOnly, int radius) {
     if (seen_.size() < g.nodeCapacity()) seen_.resize(g.nodeCapacity() + g.nodeCapacity() / 2, 0);
-    if (++mark_ == 0) {  // wrapped: forget every old mark
+    if (++mark_ >= 0x7fffffffu) {  // about to wrap: forget every old mark
         std::fill(seen_.begin(), seen_.end(), 0);
         mark_ = 1;
     }
+    const std::uint32_t full = mark_ * 2 + 1, partial = mark_ * 2;
     area_.clear();
-    for (NodeId n : changed)
-        if (seen_[n] != mark_) {
-            seen_[n] = mark_;
-            area_.push_back(n);
-        }
+    for (NodeId n : itself) {
+        seen_[n] = full;
+        area_.push_back(n);
+    }
+    for (NodeId n : edgesOnly) {
+        seen_[n] = partial;
+        area_.push_back(n);
+    }
+    // Nodes reached within the radius are revisited fully (a negative
+    // condition's nodes may be there).
+    auto reach = [&](NodeId o) {
+        if (!inArea(o)) area_.push_back(o);
+        seen_[o] = full;
+    };
     std::size_t begin = 0;
     for (int d = 0; d < radius; ++d) {
         const std::size_t end = area_.size();
         for (std::size_t i = begin; i < end; ++i) {
             const NodeId n = area_[i];
             if (!g.nodeAlive(n)) continue;
-            for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) {
-                const NodeId o = g.target(e);
-                if (seen_[o] != mark_) {
-                    seen_[o] = mark_;
-                    area_.push_back(o);
-                }
-            }
-            for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) {
-                const NodeId o = g.source(e);
-                if (seen_[o] != mark_) {
-                    seen_[o] = mark_;
-                    area_.push_back(o);
-                }
-            }
+            for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) reach(g.target(e));
+            for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) reach(g.source(e));
         }
         begin = end;
     }
 }
 
-void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& changed) {
-    if (changed.empty()) return;
+void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
+                                const std::vector<NodeId>& edgesOnly) {
+    if (itself.empty() && edgesOnly.empty()) return;
     for (std::size_t r = 0; r < sets_.size(); ++r) {
         const RuleInfo& info = rules_.info(r);
         MatchSet& set = sets_[r];
@@ -67,21 +67,24 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& chang
             for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
             continue;
         }
-        region(g, changed, info.radius);
-        for (NodeId n : area_) set.removeTouching(n);
+        region(g, itself, edgesOnly, info.radius);
+        for (NodeId n : area_) set.removeTouching(n, !fully(n));
         const int nn = set.nodes();
+        // Whether the anchored search for pattern node q at host h runs.
+        auto searched = [&](int q, NodeId h) { return inArea(h) && (fully(h) || set.readsIncidence(q)); };
         for (NodeId h : area_) {
             if (!g.nodeAlive(h)) continue;
             for (int p = 0; p < nn; ++p) {
+                if (!searched(p, h)) continue;
                 const int kind = info.nodeKinds[static_cast<std::size_t>(p)];
                 if (kind >= 0 && kind != g.nodeKind(h)) continue;
                 found_.reset(nn, set.edges());
                 rules_.findAnchored(r, g, p, h, found_);
                 for (std::size_t i = 0; i < found_.size(); ++i) {
                     const std::uint32_t* ids = found_.ids(i);
-                    // Keep it only from its first node inside the area.
+                    // Keep it only from the first of its anchors that is searched.
                     bool first = true;
-                    for (int q = 0; q < p && first; ++q) first = seen_[ids[q]] != mark_;
+                    for (int q = 0; q < p && first; ++q) first = !searched(q, ids[q]);
                     if (first) set.add(ids, g);
                 }
             }

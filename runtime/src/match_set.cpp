@@ -5,9 +5,10 @@
 
 namespace g2d::rt {
 
-MatchSet::MatchSet(int nodes, int edges, bool byAge)
-    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)), byAge_(byAge) {
+MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsIncidence)
+    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)), byAge_(byAge), reads_(std::move(readsIncidence)) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
+    if (reads_.size() != static_cast<std::size_t>(nodes)) reads_.assign(static_cast<std::size_t>(nodes), true);
 }
 
 void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
@@ -29,12 +30,13 @@ void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
     live_.push_back(id);
     for (int i = 0; i < nn_; ++i) {
         const NodeId n = p[i];
-        if (n >= head_.size()) head_.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1) + head_.size() / 2, kNoId);
+        auto& heads = headFor(i);
+        if (n >= heads.size()) heads.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1) + heads.size() / 2, kNoId);
         const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
-        next_[link] = head_[n];
+        next_[link] = heads[n];
         prev_[link] = kNoId;
-        if (head_[n] != kNoId) prev_[head_[n]] = link;
-        head_[n] = link;
+        if (heads[n] != kNoId) prev_[heads[n]] = link;
+        heads[n] = link;
     }
     if (byAge_) {
         long long sum = 0;
@@ -52,7 +54,7 @@ void MatchSet::remove(Id id) {
         if (prev_[link] != kNoId)
             next_[prev_[link]] = next_[link];
         else
-            head_[p[i]] = next_[link];
+            headFor(i)[p[i]] = next_[link];
         if (next_[link] != kNoId) prev_[next_[link]] = prev_[link];
     }
     // Out of the live order: swap with the last.
@@ -66,9 +68,14 @@ void MatchSet::remove(Id id) {
     free_.push_back(id);
 }
 
-void MatchSet::removeTouching(NodeId n) {
-    if (n >= head_.size()) return;
-    while (head_[n] != kNoId) remove(head_[n] / static_cast<std::uint32_t>(nn_));
+void MatchSet::unlinkAll(NodeId n, std::vector<std::uint32_t>& heads) {
+    if (n >= heads.size()) return;
+    while (heads[n] != kNoId) remove(heads[n] / static_cast<std::uint32_t>(nn_));
+}
+
+void MatchSet::removeTouching(NodeId n, bool incidenceOnly) {
+    unlinkAll(n, head_);
+    if (!incidenceOnly) unlinkAll(n, headOther_);
 }
 
 void MatchSet::clear() {
@@ -77,6 +84,7 @@ void MatchSet::clear() {
     live_.clear();
     free_.clear();
     head_.clear();
+    headOther_.clear();
     next_.clear();
     prev_.clear();
     ageSum_.clear();
@@ -95,7 +103,7 @@ Match MatchSet::pickOldest(Rng& rng) {
 }
 
 std::size_t MatchSet::memoryBytes() const {
-    return (data_.capacity() + livePos_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() +
+    return (data_.capacity() + livePos_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() + headOther_.capacity() +
             next_.capacity() + prev_.capacity()) * 4 + ageSum_.capacity() * 8 + ageBuckets_.memoryBytes();
 }
 

@@ -161,9 +161,9 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         }
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
-                        "\"stopped\": \"%s\"}\n",
+                        "\"stopped\": \"%s\", \"applications\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
-                        static_cast<unsigned long long>(request.seed), stopName(result.stopped));
+                        static_cast<unsigned long long>(request.seed), stopName(result.stopped), result.applications);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "g2d run: error: %s\n", e.what());
         return 1;

@@ -91,3 +91,19 @@ TEST_CASE("circular pattern: n leaves take 1+3n steps; the thesis's 28 steps / 2
     }
     CHECK(thesisOutcome);
 }
+
+TEST_CASE("mutex STS benchmark: 5n - 1 steps, the token once around the ring", "[bench][mutex]") {
+    const auto p = load("../bench/grammars/mutex_sts.g2d");
+    for (long long n : {3LL, 10LL, 57LL}) {
+        auto params = interp::defaultParams(p);
+        params[0] = rt::Value{n};
+        for (std::uint64_t seed : {1, 2}) {
+            auto r = interp::runProgram(p, params, seed, {});
+            CHECK(r.derivation.stopped == rt::StopReason::Terminal);
+            CHECK(r.derivation.steps == 5 * n - 1);
+            // n processes and the resource; n ring edges and the token at the process after the first holder.
+            CHECK(r.graph().nodeCount() == static_cast<std::size_t>(n + 1));
+            CHECK(r.graph().edgeCount() == static_cast<std::size_t>(n + 1));
+        }
+    }
+}

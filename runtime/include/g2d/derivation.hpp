@@ -51,6 +51,9 @@ struct RuleInfo {
     std::vector<int> nodeKinds;
     int edgeCount = 0;
     int radius = 0;
+    // Per pattern node: whether edge changes alone at its host matter (see
+    // IncrementalMatches); empty means all do.
+    std::vector<bool> readsIncidence;
 };
 
 // Elements a chosen daughter deletes or changes (for parallel steps).
@@ -97,6 +100,7 @@ struct DerivationLimits {
 
 struct DerivationResult {
     long long steps = 0;
+    long long applications = 0;   // rewrites applied (a parallel step applies many)
     StopReason stopped = StopReason::Terminal;
     double seconds = 0;
 };

@@ -3,9 +3,10 @@
 // positions, attributes, per-element style overrides and ages.
 //
 // Laid out for millions of elements: a node record is 48 bytes and an edge
-// record 32. Each node heads two intrusive lists (its outgoing and its
-// incoming edges) threaded through the edge records, so adding an edge is
-// O(1), deleting one is O(degree) and nothing is allocated per element.
+// record 40. Each node heads two intrusive doubly linked lists (its outgoing
+// and its incoming edges) threaded through the edge records, so adding or
+// deleting an edge is O(1), even at a hub, and nothing is allocated per
+// element.
 // Per-kind node indexes make a search's first step O(1) per candidate.
 // Attributes live in per-kind pools (an element's `slot` indexes its kind's
 // pool); a compiled grammar keeps them in its own typed arrays instead and
@@ -131,12 +132,13 @@ public:
 
     const std::vector<KindInfo>& kinds() const { return kinds_; }
 
-    // Change tracking for incremental matching: every node that was created,
-    // deleted or changed, or whose incident edges were, since takeDirty().
-    void touchNode(NodeId n);
-    void touchEdge(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
-    // Moves the changed nodes into `out` (cleared first).
-    void takeDirty(std::vector<NodeId>& out);
+    // Change tracking for incremental matching, since the last takeDirty():
+    // nodes created, deleted or changed themselves (position, attributes),
+    // and nodes only whose incident edges were added, removed or changed.
+    void touchNode(NodeId n) { touch(n, kChangedItself); }
+    void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedEdges); touch(edges_[e].dst, kChangedEdges); }
+    // Moves the changed nodes into `itself` and `edgesOnly` (cleared first).
+    void takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly);
 
     // Bytes held by the graph's own arrays (for the benchmarks).
     std::size_t memoryBytes() const;
@@ -148,12 +150,12 @@ private:
         std::int16_t kind = -1;
         bool alive = true;
         std::uint8_t styled : 1 = 0;
-        std::uint8_t dirty : 1 = 0;               // in dirty_ (kept here: one cache line per node)
+        std::uint8_t dirty : 2 = 0;               // kChanged* bits (kept here: one cache line per node)
         std::uint32_t slot = kNoId;
         std::uint32_t slotInKind = 0, slotInAll = 0;
         EdgeId firstOut = kNoId, firstIn = kNoId;
     };
-    struct EdgeRec {                         // 32 bytes
+    struct EdgeRec {                         // 40 bytes
         long long age = 0;
         std::int16_t kind = -1;
         bool alive = true;
@@ -161,9 +163,15 @@ private:
         std::uint32_t slot = kNoId;
         NodeId src = kNoId, dst = kNoId;
         EdgeId nextOut = kNoId, nextIn = kNoId;
+        EdgeId prevOut = kNoId, prevIn = kNoId;
     };
-    static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 32);
+    static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 40);
 
+    static constexpr std::uint8_t kChangedItself = 1, kChangedEdges = 2;
+    void touch(NodeId n, std::uint8_t what) {
+        if (!nodes_[n].dirty) dirty_.push_back(n);
+        nodes_[n].dirty |= what;
+    }
     std::size_t attrIndex(int kind, std::uint32_t slot, int i) const {
         return static_cast<std::size_t>(slot) * defaults_[kind].size() + static_cast<std::size_t>(i);
     }

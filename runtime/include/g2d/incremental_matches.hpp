@@ -5,7 +5,10 @@
 // binding such a node are found again by anchored searches. A match reads
 // only its own elements (a changed edge or attribute marks its nodes), so
 // the radius is 0 unless negative conditions look further; a rule whose
-// negative condition is not connected to its match is searched in full. A match found
+// negative condition is not connected to its match is searched in full.
+// A node whose edges alone changed is revisited only at the pattern nodes
+// that read incidences (RuleInfo::readsIncidence): a resource whose token
+// moves does not re-find every request pairing it with each process. A match found
 // from several anchors is kept only from its first pattern node bound inside
 // the repaired area, so no lookup is needed to avoid duplicates. A step thus
 // costs what changed, not the size of the graph.
@@ -21,16 +24,21 @@ public:
     IncrementalMatches(RuleSet& rules, const Graph& g);
 
     MatchSet& of(std::size_t rule) { return sets_[rule]; }
-    // Repairs every rule's set after the nodes in `changed` changed.
-    void update(const Graph& g, const std::vector<NodeId>& changed);
+    // Repairs every rule's set after the nodes in `itself` changed, and those
+    // in `edgesOnly` saw only edges change (Graph::takeDirty).
+    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly);
     // Throws std::logic_error unless every rule's set holds exactly the
     // matches a full search finds (the tests check this after every step).
     void verify(const Graph& g, long long step);
     std::size_t memoryBytes() const;
 
 private:
-    // The nodes within `radius` edges of `changed` (changed ones first), marked in seen_.
-    void region(const Graph& g, const std::vector<NodeId>& changed, int radius);
+    // The changed nodes and those within `radius` edges of them, in area_,
+    // marked in seen_ as mark_ * 2 + 1 (to revisit at every pattern node) or
+    // mark_ * 2 (only edges changed: pattern nodes reading incidences).
+    void region(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, int radius);
+    bool inArea(NodeId n) const { return (seen_[n] >> 1) == mark_; }
+    bool fully(NodeId n) const { return (seen_[n] & 1) != 0; }
 
     RuleSet& rules_;
     std::vector<MatchSet> sets_;

@@ -55,12 +55,16 @@ private:
 
 class MatchSet {
 public:
-    MatchSet(int nodes, int edges, bool byAge);
+    // `readsIncidence[i]`: pattern node i is indexed apart, so that matches
+    // binding a node there can be dropped alone (empty: every node).
+    MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsIncidence = {});
 
     // Adds a match (nodes, then edges); the caller guarantees it is not there yet.
     void add(const std::uint32_t* ids, const Graph& g);
-    // Removes every match that binds node `n`.
-    void removeTouching(NodeId n);
+    // Removes every match that binds node `n`, or (incidenceOnly) every match
+    // binding it at a pattern node that reads incidences.
+    void removeTouching(NodeId n, bool incidenceOnly = false);
+    bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)]; }
     void clear();
 
     std::size_t size() const { return live_.size(); }
@@ -87,9 +91,14 @@ private:
     std::vector<std::uint32_t> livePos_;     // per id: position in live_, or kNoId
     std::vector<Id> live_;
     std::vector<Id> free_;
-    // Per node, the matches binding it: a doubly linked list through the
-    // (match, position) pairs, numbered id * nn_ + position.
-    std::vector<std::uint32_t> head_;        // per node
+    // Per node, the matches binding it: doubly linked lists through the
+    // (match, position) pairs, numbered id * nn_ + position; one list for
+    // positions that read incidences, one for the others.
+    std::vector<bool> reads_;
+    std::vector<std::uint32_t> head_;        // per node: positions reading incidences
+    std::vector<std::uint32_t> headOther_;   // per node: the other positions
+    std::vector<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] ? head_ : headOther_; }
+    void unlinkAll(NodeId n, std::vector<std::uint32_t>& heads);
     std::vector<std::uint32_t> next_, prev_; // per (match, position)
     std::vector<long long> ageSum_;          // per id (oldest only)
     AgeBuckets ageBuckets_;

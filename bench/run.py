@@ -1,0 +1,198 @@
+#!/usr/bin/env python3
+"""The g2d benchmark suite: one command, one table.
+
+For every benchmark and size it runs the compiled program (`g2d build`) and,
+where it finishes in reasonable time, the interpreter (`g2d run`), each
+`--repeat` times, alternating, and keeps the fastest derivation time
+(`--stats` "seconds": the derivation alone, as the original tool's figures).
+Peak memory is the child's maximum resident set (wait4), divided by the
+graph's elements at the end.
+
+Benchmarks:
+  koch-oldest / koch-random / koch-parallel  examples/koch_snowflake.g2d, levels 5..10
+  sierpinski   the AGTIVE 2007 case (examples/sierpinski.g2d), generations up to 14
+  mutex-sts    Varró's mutual exclusion benchmark, STS (bench/grammars/mutex_sts.g2d), n up to 10^6
+  thesis       the thesis's examples at the original tool's step counts, with
+               the speed-up over its measured seconds (../shared/reference/README.md)
+
+usage: bench/run.py [--g2d build/release/bin/g2d] [--quick] [--repeat N] [--only NAME...]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# The original Python tool's derivation times (../shared/reference/README.md).
+ORIGINAL = {
+    "koch_snowflake": (192, 2.76),
+    "tree": (200, 1.52),
+    "facade_varied": (116, 2.26),
+    "pattern_square": (70, 1.16),
+    "pattern_circle": (46, 0.03),
+}
+
+
+def run_once(cmd):
+    """Runs cmd once; returns its --stats."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    out, err = proc.communicate()
+    if proc.returncode != 0:
+        raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}): {err.strip()}")
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def measure(cmd, repeat):
+    """Runs cmd `repeat` times; returns (the fastest run's stats, the largest peak RSS in bytes)."""
+    best, rss = None, 0
+    for _ in range(repeat):
+        # fork + exec + wait4: the child's own peak resident set.
+        r, w = os.pipe()
+        pid = os.fork()
+        if pid == 0:
+            os.close(r)
+            os.dup2(w, 1)
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, 2)
+            try:
+                os.execv(cmd[0], cmd)
+            finally:
+                os._exit(127)
+        os.close(w)
+        with os.fdopen(r) as f:
+            out = f.read()
+        _, status, usage = os.wait4(pid, 0)
+        if os.waitstatus_to_exitcode(status) != 0:
+            raise RuntimeError(f"{' '.join(cmd)} failed with status {status}")
+        stats = json.loads(out.strip().splitlines()[-1])
+        rss = max(rss, usage.ru_maxrss * 1024)
+        if best is None or stats["seconds"] < best["seconds"]:
+            best = stats
+    return best, rss
+
+
+class Suite:
+    def __init__(self, args):
+        self.args = args
+        self.work = tempfile.mkdtemp(prefix="g2d-bench-")
+        self.rows = []
+
+    def build(self, name, source_text):
+        path = os.path.join(self.work, name + ".g2d")
+        with open(path, "w") as f:
+            f.write(source_text)
+        exe = path[:-4]
+        subprocess.run([self.args.g2d, "build", path, "-o", exe], check=True)
+        return path, exe
+
+    def case(self, bench, size, grammar, exe, extra, interpret=True, original=None):
+        flags = ["--no-svg", "--stats"] + extra
+        compiled, rss = measure([exe] + flags, self.args.repeat)
+        interp = None
+        if interpret:
+            interp, _ = measure([self.args.g2d, "run", grammar] + flags, self.args.repeat)
+        elements = compiled["nodes"] + compiled["edges"]
+        row = {
+            "benchmark": bench, "size": size, "steps": compiled["steps"], "elements": elements,
+            "seconds": compiled["seconds"],
+            # Rewrites per second: a parallel step applies a whole generation.
+            "steps_per_s": compiled["applications"] / compiled["seconds"] if compiled["seconds"] > 0 else float("inf"),
+            "bytes_per_element": rss / max(elements, 1),
+            "interp_seconds": interp["seconds"] if interp else None,
+            "original": original,
+        }
+        if interp and interp["steps"] != compiled["steps"]:
+            raise RuntimeError(f"{bench} {size}: interpreted {interp['steps']} steps, compiled {compiled['steps']}")
+        self.rows.append(row)
+        self.print_row(row)
+
+    def header(self):
+        print("| benchmark | size | steps | elements | seconds | rewrites/s | bytes/element | interpreted s | compiled × faster | vs original |")
+        print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|", flush=True)
+
+    @staticmethod
+    def print_row(r):
+        ratio = f"{r['interp_seconds'] / r['seconds']:.1f}" if r["interp_seconds"] and r["seconds"] > 0 else "–"
+        interp = f"{r['interp_seconds']:.4g}" if r["interp_seconds"] else "–"
+        orig = "–"
+        if r["original"]:
+            orig = f"{r['original'] / r['seconds']:,.0f}×"
+        print(f"| {r['benchmark']} | {r['size']} | {r['steps']} | {r['elements']} | {r['seconds']:.4g} | "
+              f"{r['steps_per_s']:,.0f} | {r['bytes_per_element']:.0f} | {interp} | {ratio} | {orig} |", flush=True)
+
+
+def koch(s, quick):
+    source = open(os.path.join(ROOT, "examples/koch_snowflake.g2d")).read()
+    variants = {
+        "koch-oldest": source,
+        "koch-random": source.replace("rule Split pick oldest", "rule Split"),
+        "koch-parallel": source.replace("rule Split pick oldest", "rule Split parallel"),
+    }
+    levels = [5, 6] if quick else [5, 6, 7, 8, 9, 10]
+    for name, text in variants.items():
+        grammar, exe = s.build(name, text)
+        for level in levels:
+            if name != "koch-oldest" and level not in (levels[0], levels[-1]):
+                continue
+            s.case(name, f"level {level}", grammar, exe, ["-D", f"max_lod={level}"], interpret=level <= 8)
+
+
+def sierpinski(s, quick):
+    grammar, exe = s.build("sierpinski", open(os.path.join(ROOT, "examples/sierpinski.g2d")).read())
+    gens = [6, 8] if quick else [8, 10, 12, 13, 14]
+    for g in gens:
+        s.case("sierpinski", f"gen {g}", grammar, exe, ["-D", f"generations={g}", "--max-elements", "40000000"],
+               interpret=g <= 11)
+
+
+def mutex(s, quick):
+    grammar, exe = s.build("mutex_sts", open(os.path.join(ROOT, "bench/grammars/mutex_sts.g2d")).read())
+    sizes = [100, 1000] if quick else [1000, 10000, 100000, 1000000]
+    for n in sizes:
+        s.case("mutex-sts", f"n={n}", grammar, exe, ["-D", f"n={n}"], interpret=n <= 100000)
+
+
+def thesis(s, quick):
+    for name, (steps, seconds) in ORIGINAL.items():
+        grammar, exe = s.build(name, open(os.path.join(ROOT, "examples", name + ".g2d")).read())
+        # The same number of steps as the original's run: a step limit, or a seed that gives them.
+        extra = None
+        for seed in range(1, 300):
+            stats = run_once([exe, "--no-svg", "--stats", "--seed", str(seed), "--steps", str(steps)])
+            if stats["steps"] == steps:
+                extra = ["--seed", str(seed), "--steps", str(steps)]
+                break
+        if extra is None:
+            print(f"| {name} | – | no seed gives the original's {steps} steps | | | | | | | |")
+            continue
+        s.case("thesis " + name, f"{steps} steps", grammar, exe, extra, original=seconds)
+        if quick:
+            break
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--g2d", default=os.path.join(ROOT, "build/release/bin/g2d"))
+    ap.add_argument("--quick", action="store_true", help="small sizes only (a smoke test of the suite)")
+    ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex"])
+    args = ap.parse_args()
+    if args.quick:
+        args.repeat = 1
+    s = Suite(args)
+    print(f"g2d benchmark suite — {time.strftime('%Y-%m-%d')}, {os.cpu_count()} cores; fastest of {args.repeat}")
+    print()
+    s.header()
+    for name, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex)]:
+        if args.only and name not in args.only:
+            continue
+        fn(s, args.quick)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
