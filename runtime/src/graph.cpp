@@ -68,7 +68,7 @@ NodeId Graph::addNode(int kind, vec2 pos, long long age) {
     rec.kind = static_cast<std::int16_t>(kind);
     rec.pos = pos;
     rec.age = age;
-    rec.slot = newAttrBlock(kind, none);
+    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, none);
     rec.slotInKind = static_cast<std::uint32_t>(kindNodes_[kind].size());
     rec.slotInAll = static_cast<std::uint32_t>(allNodes_.size());
     kindNodes_[kind].push_back(id);
@@ -94,7 +94,7 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
     rec.src = src;
     rec.dst = dst;
     rec.age = age;
-    rec.slot = newAttrBlock(kind, nullptr);
+    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
     edges_.push_back(rec);
     link(id);
     ++liveEdges_;

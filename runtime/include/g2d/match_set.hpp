@@ -37,8 +37,11 @@ public:
         count_ = 0;
     }
     void add(const NodeId* nodes, const EdgeId* edges) {
-        ids_.insert(ids_.end(), nodes, nodes + nn_);
-        ids_.insert(ids_.end(), edges, edges + ne_);
+        const std::size_t at = ids_.size();
+        ids_.resize(at + static_cast<std::size_t>(nn_ + ne_));
+        std::uint32_t* out = ids_.data() + at;
+        for (int i = 0; i < nn_; ++i) *out++ = nodes[i];
+        for (int i = 0; i < ne_; ++i) *out++ = edges[i];
         ++count_;
     }
     std::size_t size() const { return count_; }
