@@ -84,23 +84,19 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
     } else if (buckets_[b].ids.empty()) {
         --emptyBuckets_;
     }
-    if (id >= posInBucket_.size()) {
-        posInBucket_.resize(std::max<std::size_t>(id + 1, posInBucket_.size() * 2));
-        bucketOf_.resize(posInBucket_.size());
-    }
-    posInBucket_[id] = static_cast<std::uint32_t>(buckets_[b].ids.size());
-    bucketOf_[id] = b;
+    if (id >= placeOf_.size()) placeOf_.resize(std::max<std::size_t>(id + 1, placeOf_.size() * 2));
+    placeOf_[id] = Place{b, static_cast<std::uint32_t>(buckets_[b].ids.size())};
     buckets_[b].ids.push_back(id);
     ++count_;
 }
 
 void AgeBuckets::erase(std::uint32_t id, long long key) {
     (void)key;
-    auto& ids = buckets_[bucketOf_[id]].ids;
-    const std::uint32_t pos = posInBucket_[id];
+    auto& ids = buckets_[placeOf_[id].bucket].ids;
+    const std::uint32_t pos = placeOf_[id].pos;
     const std::uint32_t moved = ids.back();
     ids[pos] = moved;
-    posInBucket_[moved] = pos;
+    placeOf_[moved].pos = pos;
     ids.pop_back();
     --count_;
     if (ids.empty() && ++emptyBuckets_ > 1024 && emptyBuckets_ > 2 * (buckets_.size() - freeBuckets_.size() - emptyBuckets_))
@@ -140,7 +136,7 @@ void AgeBuckets::clear() { *this = AgeBuckets(); }
 std::size_t AgeBuckets::memoryBytes() const {
     std::size_t bytes = buckets_.capacity() * sizeof(Bucket) + heap_.capacity() * sizeof(long long) +
                         slotKey_.capacity() * sizeof(long long) + slotBucket_.capacity() * 4 +
-                        posInBucket_.capacity() * 8 + freeBuckets_.capacity() * 4;
+                        placeOf_.capacity() * sizeof(Place) + freeBuckets_.capacity() * 4;
     for (const auto& b : buckets_) bytes += b.ids.capacity() * 4;
     return bytes;
 }

@@ -20,8 +20,7 @@ void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
         id = static_cast<Id>(livePos_.size());
         data_.resize(data_.size() + width_);
         livePos_.push_back(kNoId);
-        next_.resize(next_.size() + static_cast<std::size_t>(nn_));
-        prev_.resize(prev_.size() + static_cast<std::size_t>(nn_));
+        links_.resize(links_.size() + static_cast<std::size_t>(nn_));
         if (byAge_) ageSum_.push_back(0);
     }
     std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width_];
@@ -33,9 +32,9 @@ void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
         auto& heads = headFor(i);
         if (n >= heads.size()) heads.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1) + heads.size() / 2, kNoId);
         const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
-        next_[link] = heads[n];
-        prev_[link] = kNoId;
-        if (heads[n] != kNoId) prev_[heads[n]] = link;
+        links_[link].next = heads[n];
+        links_[link].prev = kNoId;
+        if (heads[n] != kNoId) links_[heads[n]].prev = link;
         heads[n] = link;
     }
     if (byAge_) {
@@ -51,11 +50,11 @@ void MatchSet::remove(Id id) {
     const std::uint32_t* p = data(id);
     for (int i = 0; i < nn_; ++i) {
         const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
-        if (prev_[link] != kNoId)
-            next_[prev_[link]] = next_[link];
+        if (links_[link].prev != kNoId)
+            links_[links_[link].prev].next = links_[link].next;
         else
-            headFor(i)[p[i]] = next_[link];
-        if (next_[link] != kNoId) prev_[next_[link]] = prev_[link];
+            headFor(i)[p[i]] = links_[link].next;
+        if (links_[link].next != kNoId) links_[links_[link].next].prev = links_[link].prev;
     }
     // Out of the live order: swap with the last.
     const std::uint32_t pos = livePos_[id];
@@ -85,8 +84,7 @@ void MatchSet::clear() {
     free_.clear();
     head_.clear();
     headOther_.clear();
-    next_.clear();
-    prev_.clear();
+    links_.clear();
     ageSum_.clear();
     ageBuckets_.clear();
 }
@@ -104,7 +102,7 @@ Match MatchSet::pickOldest(Rng& rng) {
 
 std::size_t MatchSet::memoryBytes() const {
     return (data_.capacity() + livePos_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() + headOther_.capacity() +
-            next_.capacity() + prev_.capacity()) * 4 + ageSum_.capacity() * 8 + ageBuckets_.memoryBytes();
+            links_.capacity() * 2) * 4 + ageSum_.capacity() * 8 + ageBuckets_.memoryBytes();
 }
 
 }  // namespace g2d::rt

@@ -37,8 +37,10 @@ private:
     std::vector<long long> slotKey_;
     std::vector<std::uint32_t> slotBucket_;   // kEmpty when free
     std::size_t mapSize_ = 0;
-    std::vector<std::uint32_t> posInBucket_;  // per id
-    std::vector<std::uint32_t> bucketOf_;     // per id
+    struct Place {
+        std::uint32_t bucket, pos;
+    };
+    std::vector<Place> placeOf_;              // per id: its group and its place there
     std::size_t count_ = 0;
     std::size_t emptyBuckets_ = 0;
 };

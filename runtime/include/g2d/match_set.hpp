@@ -102,7 +102,10 @@ private:
     std::vector<std::uint32_t> headOther_;   // per node: the other positions
     std::vector<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] ? head_ : headOther_; }
     void unlinkAll(NodeId n, std::vector<std::uint32_t>& heads);
-    std::vector<std::uint32_t> next_, prev_; // per (match, position)
+    struct Link {
+        std::uint32_t next, prev;
+    };
+    std::vector<Link> links_;                // per (match, position): one cache line, not two
     std::vector<long long> ageSum_;          // per id (oldest only)
     AgeBuckets ageBuckets_;
 };
