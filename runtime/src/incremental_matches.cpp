@@ -11,6 +11,11 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
         sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence);
+        Shape shape;
+        shape.radius = info.radius;
+        shape.kinds = info.nodeKinds;
+        for (int p = 0; p < nn; ++p) shape.reads.push_back(sets_.back().readsIncidence(p) ? 1 : 0);
+        shapes_.push_back(std::move(shape));
         found_.reset(nn, info.edgeCount);
         rules.findMatches(r, g, found_);
         for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
@@ -57,9 +62,9 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
                                 const std::vector<NodeId>& edgesOnly) {
     if (itself.empty() && edgesOnly.empty()) return;
     for (std::size_t r = 0; r < sets_.size(); ++r) {
-        const RuleInfo& info = rules_.info(r);
+        const Shape& shape = shapes_[r];
         MatchSet& set = sets_[r];
-        if (info.radius < 0) {
+        if (shape.radius < 0) {
             // Not local: find them all again.
             set.clear();
             found_.reset(set.nodes(), set.edges());
@@ -67,16 +72,20 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
             continue;
         }
-        region(g, itself, edgesOnly, info.radius);
+        region(g, itself, edgesOnly, shape.radius);
         for (NodeId n : area_) set.removeTouching(n, !fully(n));
         const int nn = set.nodes();
+        const std::uint8_t* reads = shape.reads.data();
         // Whether the anchored search for pattern node q at host h runs.
-        auto searched = [&](int q, NodeId h) { return inArea(h) && (fully(h) || set.readsIncidence(q)); };
+        auto searched = [&](int q, NodeId h) {
+            const std::uint32_t s = seen_[h];
+            return (s >> 1) == mark_ && ((s & 1) != 0 || reads[q] != 0);
+        };
         for (NodeId h : area_) {
             if (!g.nodeAlive(h)) continue;
             for (int p = 0; p < nn; ++p) {
                 if (!searched(p, h)) continue;
-                const int kind = info.nodeKinds[static_cast<std::size_t>(p)];
+                const int kind = shape.kinds[static_cast<std::size_t>(p)];
                 if (kind >= 0 && kind != g.nodeKind(h)) continue;
                 found_.reset(nn, set.edges());
                 rules_.findAnchored(r, g, p, h, found_);

@@ -6,9 +6,10 @@
 namespace g2d::rt {
 
 MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsIncidence)
-    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)), byAge_(byAge), reads_(std::move(readsIncidence)) {
+    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
-    if (reads_.size() != static_cast<std::size_t>(nodes)) reads_.assign(static_cast<std::size_t>(nodes), true);
+    if (readsIncidence.size() != static_cast<std::size_t>(nodes)) readsIncidence.assign(static_cast<std::size_t>(nodes), true);
+    for (bool r : readsIncidence) reads_.push_back(r ? 1 : 0);
 }
 
 void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
@@ -63,7 +64,7 @@ void MatchSet::remove(Id id) {
     livePos_[last] = pos;
     live_.pop_back();
     livePos_[id] = kNoId;
-    if (byAge_) ageBuckets_.erase(id, ageSum_[id]);
+    if (byAge_) ageBuckets_.erase(id);
     free_.push_back(id);
 }
 

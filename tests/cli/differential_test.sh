@@ -18,11 +18,9 @@ start=$(date +%s%N)
 "$g2d" build "$grammar" -o "$work/program" -O "${G2D_BUILD_OPT:-2}" --keep-cpp "$work/program.cpp" \
   || { echo "FAIL: g2d build"; exit 1; }
 ms=$(( ($(date +%s%N) - start) / 1000000 ))
+# Reported, not asserted: a timed test fails on a loaded machine (CI runs two
+# builds at once); build times belong to benchmarks.
 echo "built in ${ms} ms"
-# The build time is checked where the build is meant to be fast (not under sanitizers).
-if [ -n "${G2D_BUILD_TIME_LIMIT_MS:-}" ]; then
-  [ "$ms" -lt "$G2D_BUILD_TIME_LIMIT_MS" ] || fail "the build took ${ms} ms (over ${G2D_BUILD_TIME_LIMIT_MS} ms)"
-fi
 
 # No warnings in generated code.
 include=$(sed -n 's/^.*-I \([^ ]*\) .*$/\1/p' <("$g2d" build "$grammar" -o "$work/again" -v 2>&1) | head -1)

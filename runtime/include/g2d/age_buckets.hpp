@@ -1,10 +1,18 @@
 #pragma once
-// Ids grouped by an integer key (a match's sum of creation steps), giving the
-// group with the lowest key in O(log k) for k distinct keys, and inserting or
-// erasing an id in O(1) expected plus O(log k) when a key first appears.
-// Nothing is allocated per id once the groups exist: emptied groups are kept
-// for reuse, and the heap of keys forgets them lazily.
+// Ids grouped by a non-negative integer key (a match's sum of creation
+// steps), giving the group with the lowest key. Keys of matches made in
+// nearby steps are close together, so the key space is paged: a page maps
+// 1024 consecutive keys to their groups directly and marks the occupied ones
+// in a bitmap; a small min-heap orders the pages in use. Insert and erase are
+// O(1) (no hashing, no probing); finding the lowest key is O(1) plus
+// O(log pages) when a page empties. Nothing is allocated per id once warm:
+// emptied groups and pages are kept for reuse.
+//
+// The order of the ids inside a group depends only on the sequence of
+// inserts and erases of that key (appended; an erased id's place is taken by
+// the group's last), so draws over a group are reproducible.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace g2d::rt {
@@ -12,37 +20,40 @@ namespace g2d::rt {
 class AgeBuckets {
 public:
     void insert(std::uint32_t id, long long key);
-    void erase(std::uint32_t id, long long key);
+    void erase(std::uint32_t id);
     bool empty() const { return count_ == 0; }
-    // The ids with the lowest key, in a deterministic order; empty() must be false.
+    // The ids with the lowest key; empty() must be false.
     const std::vector<std::uint32_t>& lowest();
     void clear();
     std::size_t memoryBytes() const;
 
 private:
-    struct Bucket {
+    static constexpr int kPageBits = 10;
+    static constexpr std::size_t kPageKeys = std::size_t{1} << kPageBits;
+    static constexpr std::size_t kPageWords = kPageKeys / 64;
+    struct Page {
+        std::uint32_t groupOf[kPageKeys];    // valid where `occupied` is set
+        std::uint64_t occupied[kPageWords];
+        std::uint32_t keys = 0;              // occupied keys
+    };
+    struct Group {
         long long key = 0;
         std::vector<std::uint32_t> ids;
     };
-    // Open addressing from key to bucket index (linear probing, backward-shift deletion).
-    std::uint32_t find(long long key) const;
-    void mapInsert(long long key, std::uint32_t bucket);
-    void mapErase(long long key);
-    void grow();
-    void compact();
-
-    std::vector<Bucket> buckets_;
-    std::vector<std::uint32_t> freeBuckets_;
-    std::vector<long long> heap_;             // min-heap of keys (may hold keys of empty buckets)
-    std::vector<long long> slotKey_;
-    std::vector<std::uint32_t> slotBucket_;   // kEmpty when free
-    std::size_t mapSize_ = 0;
     struct Place {
-        std::uint32_t bucket, pos;
+        std::uint32_t group, pos;
     };
-    std::vector<Place> placeOf_;              // per id: its group and its place there
+    Page& pageFor(std::size_t pageNo);
+    void releaseGroup(std::uint32_t group);
+
+    std::vector<std::unique_ptr<Page>> pages_;   // by key >> kPageBits
+    std::vector<std::unique_ptr<Page>> spare_;
+    std::vector<std::uint64_t> pageHeap_;        // min-heap of page numbers (may hold emptied ones)
+    std::vector<bool> queued_;                   // per page number: in pageHeap_
+    std::vector<Group> groups_;
+    std::vector<std::uint32_t> freeGroups_;
+    std::vector<Place> placeOf_;                 // per id: its group and its place there
     std::size_t count_ = 0;
-    std::size_t emptyBuckets_ = 0;
 };
 
 }  // namespace g2d::rt

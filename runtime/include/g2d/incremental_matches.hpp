@@ -40,8 +40,16 @@ private:
     bool inArea(NodeId n) const { return (seen_[n] >> 1) == mark_; }
     bool fully(NodeId n) const { return (seen_[n] & 1) != 0; }
 
+    // What the repair loop reads of each rule, copied out of RuleInfo.
+    struct Shape {
+        int radius = 0;
+        std::vector<int> kinds;              // per pattern node; -1: any
+        std::vector<std::uint8_t> reads;     // per pattern node: reads incidences
+    };
+
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
+    std::vector<Shape> shapes_;
     std::vector<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;

@@ -67,7 +67,7 @@ public:
     // Removes every match that binds node `n`, or (incidenceOnly) every match
     // binding it at a pattern node that reads incidences.
     void removeTouching(NodeId n, bool incidenceOnly = false);
-    bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)]; }
+    bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
     void clear();
 
     std::size_t size() const { return live_.size(); }
@@ -97,10 +97,10 @@ private:
     // Per node, the matches binding it: doubly linked lists through the
     // (match, position) pairs, numbered id * nn_ + position; one list for
     // positions that read incidences, one for the others.
-    std::vector<bool> reads_;
+    std::vector<std::uint8_t> reads_;        // per pattern node (bytes: read on every add)
     std::vector<std::uint32_t> head_;        // per node: positions reading incidences
     std::vector<std::uint32_t> headOther_;   // per node: the other positions
-    std::vector<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] ? head_ : headOther_; }
+    std::vector<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] != 0 ? head_ : headOther_; }
     void unlinkAll(NodeId n, std::vector<std::uint32_t>& heads);
     struct Link {
         std::uint32_t next, prev;

@@ -1,0 +1,88 @@
+// AgeBuckets against a plain model (a sorted map of key -> ids, with the same
+// append / take-the-last's-place order inside a group): random inserts and
+// erases over clustered and scattered keys, crossing page boundaries, with
+// pages and groups emptied and reused.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include "g2d/age_buckets.hpp"
+#include "g2d/rng.hpp"
+
+namespace {
+
+struct Model {
+    std::map<long long, std::vector<std::uint32_t>> groups;
+    std::map<std::uint32_t, long long> keyOf;
+    void insert(std::uint32_t id, long long key) {
+        groups[key].push_back(id);
+        keyOf[id] = key;
+    }
+    void erase(std::uint32_t id) {
+        auto& ids = groups[keyOf[id]];
+        auto at = std::find(ids.begin(), ids.end(), id);
+        *at = ids.back();
+        ids.pop_back();
+        if (ids.empty()) groups.erase(keyOf[id]);
+        keyOf.erase(id);
+    }
+};
+
+void exercise(std::uint64_t seed, long long keySpread, int operations) {
+    g2d::rt::Rng rng(seed);
+    g2d::rt::AgeBuckets buckets;
+    Model model;
+    std::vector<std::uint32_t> live, freeIds;
+    std::uint32_t nextId = 0;
+    long long base = 0;
+    for (int op = 0; op < operations; ++op) {
+        const bool insert = live.empty() || rng.below(100) < 55;
+        if (insert) {
+            std::uint32_t id;
+            if (!freeIds.empty() && rng.below(2) == 0) {
+                id = freeIds.back();
+                freeIds.pop_back();
+            } else {
+                id = nextId++;
+            }
+            // Mostly near a slowly rising base (as matches of recent steps),
+            // sometimes anywhere below it (a match of old elements).
+            base += static_cast<long long>(rng.below(3));
+            const long long key = rng.below(10) == 0 ? static_cast<long long>(rng.below(static_cast<std::uint64_t>(base + 1)))
+                                                     : base + static_cast<long long>(rng.below(static_cast<std::uint64_t>(keySpread)));
+            buckets.insert(id, key);
+            model.insert(id, key);
+            live.push_back(id);
+        } else {
+            // Often the lowest group's members (as a derivation takes them).
+            std::uint32_t id;
+            if (rng.below(2) == 0) {
+                const auto& low = model.groups.begin()->second;
+                id = low[static_cast<std::size_t>(rng.below(low.size()))];
+            } else {
+                id = live[static_cast<std::size_t>(rng.below(live.size()))];
+            }
+            buckets.erase(id);
+            model.erase(id);
+            live.erase(std::find(live.begin(), live.end(), id));
+            freeIds.push_back(id);
+        }
+        REQUIRE(buckets.empty() == model.groups.empty());
+        if (!model.groups.empty()) REQUIRE(buckets.lowest() == model.groups.begin()->second);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("age buckets give the lowest group, in the model's order", "[age_buckets]") {
+    exercise(1, 8, 20000);         // clustered: many ties
+    exercise(2, 3000, 20000);      // spread over several pages
+    exercise(3, 1, 5000);          // one key at a time
+}
+
+TEST_CASE("age buckets reject a negative key", "[age_buckets]") {
+    g2d::rt::AgeBuckets buckets;
+    CHECK_THROWS_AS(buckets.insert(0, -1), std::logic_error);
+}
