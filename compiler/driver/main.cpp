@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     std::string svgOut, jsonOut;
     long long steps = -1;
     long long maxElements = -1;
+    double timeout = 0;
     run->add_option("FILE", runOptions.file, ".g2d grammar")->required();
     run->add_option("-o,--output", svgOut, "SVG output (default: the grammar's name with .svg)");
     run->add_option("--json", jsonOut, "Graph output in NetworkX node-link JSON");
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
     run->add_option("--steps", steps, "Global step limit (overrides the grammar's)");
     run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");
     run->add_option("--max-elements", maxElements, "Stop with an error when the graph grows past N nodes + edges (default 10000000)");
+    run->add_option("--timeout", timeout, "Stop with an error when the derivation runs longer than SECONDS");
+    run->add_flag("--keep-partial", runOptions.keepPartial,
+                  "After an error or a bound, still write the graph of the last completed step");
 
     auto* emitCpp = app.add_subcommand("emit-cpp", "Write the grammar as one C++ translation unit");
     g2d::BuildOptions emitOptions;
@@ -87,6 +91,7 @@ int main(int argc, char** argv) {
         if (!jsonOut.empty()) runOptions.jsonOut = jsonOut;
         if (run->count("--steps")) runOptions.steps = steps;
         if (run->count("--max-elements")) runOptions.maxElements = maxElements;
+        if (run->count("--timeout")) runOptions.timeoutSeconds = timeout;
         return g2d::runRun(runOptions);
     }
     return 2;

@@ -28,6 +28,8 @@ int runRun(const RunOptions& options) {
     request.steps = options.steps;
     request.stats = options.stats;
     request.maxElements = options.maxElements;
+    request.timeoutSeconds = options.timeoutSeconds;
+    request.keepPartial = options.keepPartial;
     interp::InterpretedRun grammar(*compiled.program, &compiled.sources);
     return rt::runGrammar(request, grammar);
 }

@@ -17,6 +17,8 @@ struct RunOptions {
     bool stats = false;
     bool noSvg = false;
     std::optional<long long> maxElements;  // the runaway guard (default: rt::kDefaultMaxElements)
+    std::optional<double> timeoutSeconds;  // wall time of the derivation
+    bool keepPartial = false;              // write the last completed step after an error or a bound
 };
 
 // Returns the exit code: 0 done, 1 errors in the grammar, the run or the

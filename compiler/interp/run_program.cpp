@@ -12,15 +12,17 @@ RunResult runProgram(const ir::Program& prog, std::vector<rt::Value> params, std
                      std::optional<long long> steps, const rt::StepObserver& observer, RunFailure* failure) {
     RunResult out;
     out.grammar = std::make_unique<InterpretedRun>(prog, nullptr);
-    long long step = 0;
+    rt::RunProgress progress;
     try {
-        rt::DerivedRun derived = rt::deriveGrammar(*out.grammar, params, seed, steps, observer, &step);
+        rt::RunLimits limits;
+        limits.steps = steps;
+        rt::DerivedRun derived = rt::deriveGrammar(*out.grammar, params, seed, limits, observer, &progress);
         out.derivation = derived.result;
         out.hitDefaultLimit = derived.hitDefaultLimit;
     } catch (const EvalError&) {
         if (failure) {
             failure->rule = out.grammar->currentRule();
-            failure->step = step + 1;
+            failure->step = progress.step + 1;
         }
         throw;
     }

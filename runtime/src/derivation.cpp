@@ -3,6 +3,7 @@
 #include "g2d/incremental_matches.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <numeric>
@@ -29,6 +30,12 @@ std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng) {
 }
 
 namespace {
+
+std::string formatSeconds(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g s", s);
+    return buf;
+}
 
 struct Group {
     long long priority;
@@ -133,7 +140,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             break;
         }
         const long long step = result.steps + 1;
-        bool applied = false;
+        bool applied = false, parallelStep = false;
         for (auto& grp : groups) {
             if (grp.limit && grp.applied >= *grp.limit) continue;
             order = grp.rules;
@@ -143,6 +150,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
                 if (info.parallel) {
+                    parallelStep = true;
                     result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step));
                 } else {
                     const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
@@ -165,10 +173,17 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             break;
         }
         result.steps = step;
-        if (g.nodeCount() + g.edgeCount() > limits.maxElements)
-            throw RunawayError("the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
-                               std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
         if (observer) observer(step, g);
+        // The clock is read every 16 steps (and after parallel steps, which can be long).
+        if (limits.timeoutSeconds && ((step & 15) == 0 || parallelStep)) {
+            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (elapsed > *limits.timeoutSeconds)
+                throw RunawayError("time_limit", "the derivation ran past the time limit of " + formatSeconds(*limits.timeoutSeconds) +
+                                   " at step " + std::to_string(step) + " (raise --timeout)");
+        }
+        if (g.nodeCount() + g.edgeCount() > limits.maxElements)
+            throw RunawayError("element_limit", "the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
+                               std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

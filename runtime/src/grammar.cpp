@@ -32,7 +32,9 @@ void Grammar::set(const std::string& name, const std::string& value) {
 
 rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
     try {
-        last_ = rt::deriveGrammar(*run_, params_, seed_, steps).result;
+        rt::RunLimits limits;
+        limits.steps = steps;
+        last_ = rt::deriveGrammar(*run_, params_, seed_, limits).result;
     } catch (const rt::RunawayError&) {
         throw;
     } catch (const std::exception& e) {

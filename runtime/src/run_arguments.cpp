@@ -11,7 +11,7 @@ namespace {
 void usage(FILE* to, const char* program) {
     std::fprintf(to,
                  "usage: %s [-o OUT.svg] [--json OUT.json] [--no-svg] [--seed N] [-D NAME=VALUE]... [--steps N] "
-                 "[--stats] [--max-elements N]\n"
+                 "[--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial]\n"
                  "  -o, --output FILE   SVG output (default: the grammar's name with .svg)\n"
                  "  --json FILE         the graph in NetworkX node-link JSON\n"
                  "  --no-svg            write no SVG\n"
@@ -19,7 +19,9 @@ void usage(FILE* to, const char* program) {
                  "  -D NAME=VALUE       set a parameter\n"
                  "  --steps N           global step limit (overrides the grammar's)\n"
                  "  --stats             print one JSON line of statistics on stdout\n"
-                 "  --max-elements N    stop with an error past N nodes + edges (default 10000000)\n",
+                 "  --max-elements N    stop with an error past N nodes + edges (default 10000000)\n"
+                 "  --timeout SECONDS   stop with an error when the derivation runs longer\n"
+                 "  --keep-partial      after an error or a bound, still write the last completed step\n",
                  program);
 }
 
@@ -75,6 +77,13 @@ std::optional<int> parseRunArguments(int argc, char** argv, const std::string& g
             long long n = 0;
             if (!v || !parseNumber(v, n)) return fail("--max-elements needs an integer");
             out.maxElements = n;
+        } else if (a == "--timeout") {
+            const char* v = value("SECONDS");
+            double t = 0;
+            if (!v || !parseNumber(v, t)) return fail("--timeout needs a number of seconds");
+            out.timeoutSeconds = t;
+        } else if (a == "--keep-partial") {
+            out.keepPartial = true;
         } else if (a == "-D" || a == "--define") {
             const char* v = value("NAME=VALUE");
             if (!v) return fail("-D needs NAME=VALUE");

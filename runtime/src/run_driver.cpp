@@ -97,23 +97,40 @@ std::string renderLocatedError(const SourceLocation& at, const std::string& mess
 }
 
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         std::optional<long long> steps, const StepObserver& observer, long long* lastStep,
-                         std::size_t maxElements) {
+                         const RunLimits& runLimits, const StepObserver& observer, RunProgress* progress) {
     Rng rng(seed);
     grammar.start(params, rng);
+    if (progress) *progress = RunProgress{true, 0};
     DerivationLimits limits;
     const std::optional<long long> grammarLimit = grammar.stepLimit();
-    limits.steps = steps ? steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
+    limits.steps = runLimits.steps ? runLimits.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
     limits.perPriority = grammar.priorityLimits();
-    limits.maxElements = maxElements;
+    limits.maxElements = runLimits.maxElements;
+    limits.timeoutSeconds = runLimits.timeoutSeconds;
     DerivedRun out;
     out.result = derive(grammar.graph(), grammar.rules(), rng, limits, [&](long long s, const Graph& g) {
-        if (lastStep) *lastStep = s;
+        if (progress) progress->step = s;
         if (observer) observer(s, g);
     });
-    out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !steps && !grammarLimit;
+    out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !runLimits.steps && !grammarLimit;
     return out;
 }
+
+namespace {
+
+// A run-time error, with the rule and step it happened in and, when the
+// back end can tell, the source line.
+void reportRunError(const RunRequest& request, GrammarRun& grammar, const std::exception& e, long long step) {
+    const std::string rule = grammar.currentRule();
+    const std::string where =
+        rule.empty() ? " (before the first step)" : " (in rule `" + rule + "`, step " + std::to_string(step + 1) + ")";
+    if (auto at = grammar.locate(e))
+        std::fputs(renderLocatedError(*at, e.what() + where).c_str(), stderr);
+    else
+        std::fprintf(stderr, "%s: error: %s%s\n", request.grammarFile.c_str(), e.what(), where.c_str());
+}
+
+}  // namespace
 
 int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     std::vector<Value> params;
@@ -121,6 +138,8 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         return usageError(err);
     if (request.steps && *request.steps < 0) return usageError("--steps must not be negative");
     if (request.maxElements && *request.maxElements <= 0) return usageError("--max-elements must be positive");
+    if (request.timeoutSeconds && !(*request.timeoutSeconds > 0 && *request.timeoutSeconds < 1e9))
+        return usageError("--timeout must be a positive number of seconds");
 
     // Outputs are opened first, so an unwritable path fails before the work.
     std::unique_ptr<AtomicFile> svgFile, jsonFile;
@@ -134,20 +153,46 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         return 1;
     }
 
-    long long step = 0;
+    RunLimits limits;
+    limits.steps = request.steps;
+    limits.maxElements = request.maxElements ? static_cast<std::size_t>(*request.maxElements) : kDefaultMaxElements;
+    limits.timeoutSeconds = request.timeoutSeconds;
+    RunProgress progress;
+    DerivationResult result;
+    std::string stopped;
+    int status = 0;
     try {
-        Progress progress;
-        const DerivedRun derived = deriveGrammar(grammar, params, request.seed, request.steps,
-                                                 [&](long long s, const Graph& g) { progress.update(s, g); }, &step,
-                                                 request.maxElements ? static_cast<std::size_t>(*request.maxElements)
-                                                                     : kDefaultMaxElements);
-        const DerivationResult& result = derived.result;
-        if (derived.hitDefaultLimit)
+        Progress display;
+        const DerivedRun derived =
+            deriveGrammar(grammar, params, request.seed, limits, [&](long long s, const Graph& g) { display.update(s, g); },
+                          &progress);
+        result = derived.result;
+        stopped = stopName(result.stopped);
+        if (derived.hitDefaultLimit) {
             std::fprintf(stderr,
-                         "%s: warning: stopped at the default limit of %lld steps; the grammar may not terminate "
-                         "(set `limit N;` or pass --steps N)\n",
-                         request.grammarFile.c_str(), kDefaultStepLimit);
+                         "%s: error: stopped at the default limit of %lld steps: the grammar may not terminate "
+                         "(set `limit N;` or pass --steps N%s)\n",
+                         request.grammarFile.c_str(), kDefaultStepLimit,
+                         request.keepPartial ? "" : "; --keep-partial writes the graph so far");
+            stopped = "default_step_limit";
+            status = 1;
+        }
+    } catch (const OutputError& e) {
+        std::fprintf(stderr, "g2d run: error: %s\n", e.what());
+        return 1;
+    } catch (const RunawayError& e) {
+        std::fprintf(stderr, "%s: error: %s\n", request.grammarFile.c_str(), e.what());
+        stopped = e.bound();
+        status = 1;
+    } catch (const std::exception& e) {
+        reportRunError(request, grammar, e, progress.step);
+        stopped = "error";
+        status = 1;
+    }
+    if (status != 0 && !(request.keepPartial && progress.started)) return status;
+    if (status != 0) result.steps = progress.step;
 
+    try {
         const Graph& graph = grammar.graph();
         if (svgFile) svgFile->commit(writeSvg(grammar.drawItems(), grammar.svgDefs()));
         if (jsonFile) {
@@ -155,7 +200,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                 {"grammar", std::filesystem::path(request.grammarFile).filename().string()},
                 {"seed", static_cast<long long>(request.seed)},
                 {"steps", result.steps},
-                {"stopped", std::string(stopName(result.stopped))}};
+                {"stopped", stopped}};
             jsonFile->commit(writeJson(graph, grammar.jsonSchema(), meta,
                                        [&](bool isEdge, std::uint32_t id, int a) { return grammar.attribute(isEdge, id, a); }));
         }
@@ -163,24 +208,18 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
-                        static_cast<unsigned long long>(request.seed), stopName(result.stopped), result.applications);
+                        static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "g2d run: error: %s\n", e.what());
         return 1;
-    } catch (const RunawayError& e) {
-        std::fprintf(stderr, "%s: error: %s\n", request.grammarFile.c_str(), e.what());
-        return 1;
     } catch (const std::exception& e) {
-        const std::string rule = grammar.currentRule();
-        const std::string where = rule.empty() ? " (before the first step)"
-                                               : " (in rule `" + rule + "`, step " + std::to_string(step + 1) + ")";
-        if (auto at = grammar.locate(e))
-            std::fputs(renderLocatedError(*at, e.what() + where).c_str(), stderr);
-        else
-            std::fprintf(stderr, "%s: error: %s%s\n", request.grammarFile.c_str(), e.what(), where.c_str());
+        reportRunError(request, grammar, e, progress.step);
         return 1;
     }
-    return 0;
+    if (status != 0)
+        std::fprintf(stderr, "%s: note: wrote the graph of step %lld, the last completed (--keep-partial)\n",
+                     request.grammarFile.c_str(), result.steps);
+    return status;
 }
 
 }  // namespace g2d::rt

@@ -47,6 +47,14 @@ grep -q '^div.g2d:4:42: error: division by zero (in rule `R`, step 1)$' compiled
 expect_code 0 ./div -D d=2 --steps 3 --stats --no-svg
 grep -q '"steps": 3,' out.txt || fail "compiled --steps/--stats: $(cat out.txt)"
 expect_code 2 ./div -D nosuch=1
+# Bounds and --keep-partial as in g2d run: the same bytes for the last completed step
+expect_code 1 ./div -D d=2 -o ci.svg --json ci.json --keep-partial
+expect_code 1 "$g2d" run div.g2d -D d=2 -o ri.svg --json ri.json --keep-partial
+cmp -s ci.svg ri.svg && cmp -s ci.json ri.json || fail "--keep-partial outputs differ (compiled vs interpreted)"
+grep -q '"stopped": "default_step_limit"' ci.json || fail "compiled default limit: $(head -c 300 ci.json)"
+expect_code 1 ./div -D d=2 --steps 1000000000 --timeout 0.2 --no-svg
+grep -q 'ran past the time limit of 0.2 s at step' err.txt || fail "compiled --timeout: $(cat err.txt)"
+expect_code 2 ./div --timeout -3
 expect_code 2 ./div --frobnicate
 expect_code 0 ./div --help
 

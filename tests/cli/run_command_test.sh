@@ -78,18 +78,57 @@ printf 'node P;\naxiom { a: Q; }\n' > bad.g2d
 expect_code 1 "$g2d" run bad.g2d
 grep -q '^bad.g2d:2:12: error: unknown node kind `Q`' err.txt || fail "grammar error text: $(cat err.txt)"
 
-# --steps overrides the limit; the default limit warns
+# --steps overrides the limit; the default limit (no `limit`, no --steps) is
+# a runaway guard: an error, and no output unless --keep-partial
 printf 'node P;\naxiom { p: P at (0, 0); }\nrule Spin { match { p: P; } produce { p; } }\n' > spin.g2d
 expect_code 0 "$g2d" run spin.g2d --steps 7 --stats --no-svg
 grep -q '"steps": 7,.*"stopped": "step_limit"' out.txt || fail "--steps: $(cat out.txt)"
-expect_code 0 "$g2d" run spin.g2d --no-svg
-grep -q 'warning: stopped at the default limit of 10000 steps' err.txt || fail "default limit warning: $(cat err.txt)"
+expect_code 1 "$g2d" run spin.g2d -o spin.svg
+grep -qx 'spin.g2d: error: stopped at the default limit of 10000 steps: the grammar may not terminate (set `limit N;` or pass --steps N; --keep-partial writes the graph so far)' err.txt \
+  || fail "default limit error: $(cat err.txt)"
+[ -e spin.svg ] && fail "the default limit left an output"
+expect_code 1 "$g2d" run spin.g2d -o spin.svg --json spin.json --keep-partial
+grep -q '"steps": 10000' spin.json && grep -q '"stopped": "default_step_limit"' spin.json || fail "--keep-partial at the default limit: $(head -c 300 spin.json)"
+grep -q 'note: wrote the graph of step 10000, the last completed (--keep-partial)' err.txt || fail "keep-partial note: $(cat err.txt)"
+xmllint --noout spin.svg || fail "partial SVG is not well-formed"
+
+# --timeout: a wall-time bound with the step it tripped at; a usage error unless positive
+expect_code 1 "$g2d" run spin.g2d --steps 1000000000 --timeout 0.2 -o slow.svg
+grep -q '^spin.g2d: error: the derivation ran past the time limit of 0.2 s at step [0-9]* (raise --timeout)$' err.txt \
+  || fail "--timeout: $(cat err.txt)"
+[ -e slow.svg ] && fail "--timeout left an output"
+expect_code 1 "$g2d" run spin.g2d --steps 1000000000 --timeout 0.2 -o slow.svg --json slow.json --keep-partial
+grep -q '"stopped": "time_limit"' slow.json || fail "--timeout --keep-partial: $(head -c 300 slow.json)"
+[ -e slow.svg ] || fail "--timeout --keep-partial wrote no SVG"
+for bad in 0 -1 nan abc; do
+  expect_code 2 "$g2d" run spin.g2d --timeout "$bad" --no-svg
+done
+expect_code 0 "$g2d" run spin.g2d --steps 100 --timeout 60 --no-svg
 
 # --max-elements: the runaway guard, with the step it tripped at; 0 is a usage error
 expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 1000 -o guard.svg
 grep -q 'the graph grew past 1000 elements at step .*--max-elements' err.txt || fail "--max-elements: $(cat err.txt)"
 [ -e guard.svg ] && fail "--max-elements left an output"
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" --max-elements 0
+expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 1000 -o guard.svg --json guard.json --keep-partial
+grep -q '"stopped": "element_limit"' guard.json || fail "--max-elements --keep-partial: $(head -c 300 guard.json)"
+steps=$(sed -n 's/.*"steps": \([0-9]*\).*/\1/p' guard.json | head -1)
+# The partial graph is the one of its step: 3 edges, and 3 more per step.
+[ "$(grep -c '<line ' guard.svg)" = $((3 + 3 * steps)) ] || fail "partial SVG of step $steps: $(grep -c '<line ' guard.svg) lines"
+
+# A numeric fault names the production and the step; --keep-partial writes the step before it
+cat > fault.g2d <<'G2D'
+node P { n: int = 3; }
+axiom { p: P at (0, 0); }
+limit 10;
+rule Count { match { p: P; } produce { p at (10 / p.n, 0) { n = p.n - 1 }; } }
+G2D
+expect_code 1 "$g2d" run fault.g2d -o fault.svg
+grep -q 'division by zero.*(in rule `Count`, step 4)' err.txt || fail "numeric fault: $(cat err.txt)"
+[ -e fault.svg ] && fail "a numeric fault left an output"
+expect_code 1 "$g2d" run fault.g2d -o fault.svg --json fault.json --keep-partial
+grep -q '"steps": 3' fault.json && grep -q '"stopped": "error"' fault.json || fail "fault --keep-partial: $(head -c 400 fault.json)"
+grep -q '"n": 0' fault.json || fail "the partial graph is not step 3's: $(cat fault.json)"
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 30000 --no-svg
 
 # An interrupted run leaves no temporary files and no output

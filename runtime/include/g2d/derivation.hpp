@@ -96,6 +96,7 @@ struct DerivationLimits {
     std::optional<long long> steps;               // global limit (none: unlimited)
     std::map<long long, long long> perPriority;   // priority -> limit
     std::size_t maxElements = kDefaultMaxElements;
+    std::optional<double> timeoutSeconds;         // wall time of the derivation (none: unlimited)
 };
 
 struct DerivationResult {
@@ -108,9 +109,16 @@ struct DerivationResult {
 // Called after every step (for progress displays).
 using StepObserver = std::function<void(long long step, const Graph& g)>;
 
+// A resource bound was hit (elements, wall time, the default step limit):
+// the graph is as the last completed step left it.
 class RunawayError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    // `bound`: "element_limit" or "time_limit" (as the JSON output's "stopped").
+    RunawayError(std::string bound, const std::string& message) : std::runtime_error(message), bound_(std::move(bound)) {}
+    const std::string& bound() const { return bound_; }
+
+private:
+    std::string bound_;
 };
 
 DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,

@@ -1,7 +1,7 @@
 #pragma once
 // The run procedure shared by `g2d run` and compiled grammars:
 // RUN [-o OUT.svg] [--json OUT.json] [--no-svg] [--seed N] [-D NAME=VALUE]…
-//     [--steps N] [--stats]
+//     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial]
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +23,21 @@ struct RunRequest {
     std::optional<long long> steps;       // overrides the grammar's global limit
     bool stats = false;
     std::optional<long long> maxElements; // the runaway guard (default kDefaultMaxElements)
+    std::optional<double> timeoutSeconds; // wall time of the derivation
+    bool keepPartial = false;             // on a bound or a run-time error, still write the graph of the last completed step
+};
+
+// The bounds of one derivation.
+struct RunLimits {
+    std::optional<long long> steps;       // overrides the grammar's global limit
+    std::size_t maxElements = kDefaultMaxElements;
+    std::optional<double> timeoutSeconds;
+};
+
+// How far a derivation got (kept up to date while it runs, for errors).
+struct RunProgress {
+    bool started = false;                 // the axiom was built; the graph is a completed step
+    long long step = 0;                   // the last completed step
 };
 
 struct DerivedRun {
@@ -31,14 +46,16 @@ struct DerivedRun {
 };
 
 // Starts the grammar with `params` and derives it with a generator seeded by
-// `seed`. `lastStep` follows the step being done (for error messages).
+// `seed`. `progress` follows the derivation (for error messages).
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         std::optional<long long> steps, const StepObserver& observer = {},
-                         long long* lastStep = nullptr, std::size_t maxElements = kDefaultMaxElements);
+                         const RunLimits& limits, const StepObserver& observer = {}, RunProgress* progress = nullptr);
 
 // Runs and writes the outputs. Returns the exit code: 0 done, 1 a run-time
-// error or an unwritable output, 2 bad arguments. Messages go to stderr,
-// `--stats` to stdout.
+// error, a resource bound hit (elements, time, the default step limit when
+// the grammar sets none) or an unwritable output, 2 bad arguments. Messages
+// go to stderr, `--stats` to stdout. Outputs are written whole or not at
+// all; after an error only with `keepPartial` (the last completed step, and
+// the JSON's "stopped" says why).
 int runGrammar(const RunRequest& request, GrammarRun& grammar);
 
 // For compiled programs: reads the command line into a request. Returns an
