@@ -12,6 +12,11 @@ packages=(
   python3-networkx
 )
 
+# `install-deps.sh fuzz`: also clang and its libFuzzer runtime (scripts/fuzz.sh).
+if [ "${1:-}" = fuzz ]; then
+  packages+=(clang libclang-rt-dev)
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

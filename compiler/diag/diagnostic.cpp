@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "g2d/source_excerpt.hpp"
+
 namespace g2d {
 
 Diagnostic& Diagnostics::error(Span span, std::string message) {
@@ -42,22 +44,6 @@ const char* severityName(Severity s) {
     return "error";
 }
 
-std::string printable(const std::string& raw) {
-    std::string out;
-    for (std::size_t i = 0; i < raw.size();) {
-        const auto c = static_cast<unsigned char>(raw[i]);
-        if (c == '\t') { out += ' '; ++i; continue; }
-        if (c < 0x20 || c == 0x7f) { out += "\xEF\xBF\xBD"; ++i; continue; }
-        std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-        bool ok = n > 0 && i + n <= raw.size();
-        for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(raw[i + k]) & 0xC0) == 0x80;
-        if (!ok) { out += "\xEF\xBF\xBD"; ++i; continue; }
-        out.append(raw, i, n);
-        i += n;
-    }
-    return out;
-}
-
 void renderOne(std::string& out, Severity sev, const Span& span, const std::string& message,
                const SourceManager& sm, bool color) {
     const char* bold = color ? "\x1b[1m" : "";
@@ -72,19 +58,10 @@ void renderOne(std::string& out, Severity sev, const Span& span, const std::stri
     }
     out += std::string(sevColor) + severityName(sev) + ":" + reset + " " + message + "\n";
     if (!span.valid() || span.file >= sm.size()) return;
-    // Tabs become single spaces so the caret lines up in any terminal; control
-    // bytes and invalid UTF-8 become U+FFFD, one column each, like the caret counts.
-    std::string line = printable(sm.lineText(span.file, span.line));
-    out += "  " + line + "\n";
-    std::size_t pad = 0;
-    for (std::size_t i = 0, c = 1; i < line.size() && c < span.col; ++c) {
-        ++i;
-        while (i < line.size() && (static_cast<unsigned char>(line[i]) & 0xC0) == 0x80) ++i;
-        ++pad;
-    }
-    std::size_t width = 1;
-    if (span.endLine == span.line && span.endCol > span.col) width = span.endCol - span.col;
-    out += "  " + std::string(pad, ' ') + sevColor + "^" + std::string(width - 1, '~') + reset + "\n";
+    const rt::Excerpt ex =
+        rt::excerptLine(sm.lineText(span.file, span.line), span.col, span.endLine == span.line ? span.endCol : 0);
+    out += "  " + ex.line + "\n";
+    out += "  " + std::string(ex.pad, ' ') + sevColor + "^" + std::string(ex.width - 1, '~') + reset + "\n";
 }
 
 }  // namespace

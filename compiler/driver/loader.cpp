@@ -49,6 +49,9 @@ struct Loader {
         };
         std::error_code ec;
         auto status = fs::status(p, ec);
+        // (A symbolic-link loop or a folder we may not enter is not "no such file".)
+        if (ec && ec != std::errc::no_such_file_or_directory)
+            return fail("cannot open `" + display + "`: " + ec.message());
         if (ec || !fs::exists(status)) return fail("cannot open `" + display + "`: no such file");
         if (fs::is_directory(status)) return fail("cannot read `" + display + "`: it is a directory, not a .g2d file");
         if (!fs::is_regular_file(status)) return fail("cannot read `" + display + "`: not a regular file");
@@ -126,7 +129,9 @@ std::optional<std::string> resolveImport(const std::string& name, const std::str
     }
     for (const auto& c : candidates) {
         std::error_code ec;
-        if (fs::exists(c, ec)) return c.string();
+        // A symbolic link counts even when it leads nowhere: reading it then
+        // says why (a loop, a dangling link), not "cannot find".
+        if (fs::exists(fs::symlink_status(c, ec))) return c.string();
     }
     return std::nullopt;
 }

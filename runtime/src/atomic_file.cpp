@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <fcntl.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -47,13 +48,47 @@ void unregisterTemp(int slot) {
     if (slot >= 0) slotUsed[slot].store(false);
 }
 
+// The file a chain of symbolic links names (even one that does not exist
+// yet), so that rename() replaces it and not the link.
+std::string followLinks(std::string path) {
+    for (int hops = 0; hops < 40; ++hops) {
+        struct stat lst {};
+        if (::lstat(path.c_str(), &lst) != 0 || !S_ISLNK(lst.st_mode)) return path;
+        std::vector<char> buf(4096);
+        const ssize_t n = ::readlink(path.c_str(), buf.data(), buf.size() - 1);
+        if (n <= 0) return path;
+        std::string next(buf.data(), static_cast<std::size_t>(n));
+        if (next[0] != '/') {
+            const auto slash = path.rfind('/');
+            if (slash != std::string::npos) next = path.substr(0, slash + 1) + next;
+        }
+        path = next;
+    }
+    return path;  // a loop: creating the temporary file next to it fails with ELOOP or succeeds harmlessly
+}
+
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), target_(path_) {
+    // A full file-size limit must fail a write, not kill the process.
+    static const bool ignored = [] { return std::signal(SIGXFSZ, SIG_IGN) != SIG_ERR; }();
+    (void)ignored;
+    if (path_.empty()) throw OutputError("cannot write an output with an empty file name");
     struct stat st {};
-    if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-        throw OutputError("cannot write `" + path_ + "`: it is a directory");
-    temp_ = path_ + ".tmp-XXXXXX";
+    // /dev/stdout and the like name an open descriptor (maybe a redirected
+    // regular file): written through, never replaced.
+    const bool systemPath = path_.rfind("/dev/", 0) == 0 || path_.rfind("/proc/self/", 0) == 0;
+    if (::stat(path_.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) throw OutputError("cannot write `" + path_ + "`: it is a directory");
+        if (!S_ISREG(st.st_mode) || systemPath) {
+            direct_ = true;
+            fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC);
+            if (fd_ < 0) throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
+            return;
+        }
+    }
+    target_ = followLinks(path_);
+    temp_ = target_ + ".tmp-XXXXXX";
     std::vector<char> buf(temp_.begin(), temp_.end());
     buf.push_back('\0');
     fd_ = ::mkstemp(buf.data());
@@ -64,11 +99,11 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 
 AtomicFile::~AtomicFile() {
     if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(temp_.c_str());
+    if (!committed_ && !direct_) ::unlink(temp_.c_str());
     unregisterTemp(slot_);
 }
 
-void AtomicFile::commit(const std::string& contents) {
+void AtomicFile::writeAll(const std::string& contents) {
     std::size_t done = 0;
     while (done < contents.size()) {
         const ssize_t n = ::write(fd_, contents.data() + done, contents.size() - done);
@@ -77,6 +112,17 @@ void AtomicFile::commit(const std::string& contents) {
             throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
         }
         done += static_cast<std::size_t>(n);
+    }
+}
+
+void AtomicFile::commit(const std::string& contents) {
+    writeAll(contents);
+    if (direct_) {
+        const int fd = fd_;
+        fd_ = -1;
+        committed_ = true;
+        if (::close(fd) != 0) throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
+        return;
     }
     // Files we create are readable like any other output (mkstemp makes them 0600).
     const mode_t mask = ::umask(0);
@@ -87,7 +133,7 @@ void AtomicFile::commit(const std::string& contents) {
         throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
     }
     fd_ = -1;
-    if (::rename(temp_.c_str(), path_.c_str()) != 0)
+    if (::rename(temp_.c_str(), target_.c_str()) != 0)
         throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
     committed_ = true;
     unregisterTemp(slot_);

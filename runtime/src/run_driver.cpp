@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "g2d/atomic_file.hpp"
+#include "g2d/source_excerpt.hpp"
 
 namespace g2d::rt {
 
@@ -81,19 +82,8 @@ const char* stopName(StopReason r) { return r == StopReason::Terminal ? "termina
 std::string renderLocatedError(const SourceLocation& at, const std::string& message) {
     std::string out = at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.col) + ": error: " + message + "\n";
     if (at.line == 0) return out;
-    std::string line = at.lineText;
-    for (auto& c : line)
-        if (c == '\t') c = ' ';
-    out += "  " + line + "\n  ";
-    std::size_t pad = 0;
-    for (std::size_t i = 0, c = 1; i < line.size() && c < at.col; ++c) {
-        ++i;
-        while (i < line.size() && (static_cast<unsigned char>(line[i]) & 0xC0) == 0x80) ++i;
-        ++pad;
-    }
-    out += std::string(pad, ' ') + "^";
-    if (at.endCol > at.col + 1) out += std::string(at.endCol - at.col - 1, '~');
-    return out + "\n";
+    const Excerpt ex = excerptLine(at.lineText, at.col, at.endCol);
+    return out + "  " + ex.line + "\n  " + std::string(ex.pad, ' ') + "^" + std::string(ex.width - 1, '~') + "\n";
 }
 
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,

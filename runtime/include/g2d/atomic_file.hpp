@@ -2,6 +2,11 @@
 // Output files appear whole or not at all: the text goes to a temporary file
 // in the same folder, which is renamed over the target on commit(). Temporary
 // files are removed on failure, and on SIGINT, SIGTERM and SIGHUP too.
+// A symbolic link is followed (the file it names is replaced, not the link).
+// A target that exists and is not a regular file (/dev/stdout, a pipe,
+// /dev/null) is written directly: it cannot be replaced, and must not be.
+// A full disk or a file-size limit (SIGXFSZ is ignored) fails the commit
+// with the system's reason, leaving the target as it was.
 #include <stdexcept>
 #include <string>
 
@@ -24,8 +29,11 @@ public:
     const std::string& path() const { return path_; }
 
 private:
-    std::string path_, temp_;
+    void writeAll(const std::string& contents);
+
+    std::string path_, temp_, target_;   // target_: path_ with symbolic links resolved
     int fd_ = -1;
+    bool direct_ = false;                // writing straight into a non-regular file
     int slot_ = -1;   // in the signal handler's list
     bool committed_ = false;
 };

@@ -1,0 +1,100 @@
+#include "fuzz_checks.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "driver/compile.hpp"
+#include "g2d/json_writer.hpp"
+#include "g2d/run_driver.hpp"
+#include "g2d/svg_writer.hpp"
+#include "interp/interpreted_run.hpp"
+
+namespace g2d::fuzz {
+
+namespace {
+
+[[noreturn]] void violated(const std::string& what) {
+    std::fprintf(stderr, "fuzz check failed: %s\n", what.c_str());
+    std::abort();
+}
+
+// Inputs live nowhere on disk: imports resolve in a folder that does not
+// exist (absolute imports still reach real files, which is fine: the loader
+// refuses anything but regular files of bounded size).
+CompileResult compileBytes(const std::uint8_t* data, std::size_t size) {
+    LoadOptions options;
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    return compileSource("/nonexistent-g2d-fuzz/input.g2d", text, options);
+}
+
+void checkDiagnostics(const CompileResult& r) {
+    bool anyError = false;
+    for (const auto& d : r.diags.sorted()) {
+        anyError = anyError || d.severity == Severity::Error;
+        if (d.message.empty()) violated("a diagnostic without a message");
+        if (d.span.file == kNoFile) violated("a diagnostic without a file: " + d.message);
+        if (d.span.file >= r.sources.size()) violated("a diagnostic in an unknown file: " + d.message);
+        const auto& file = r.sources.file(d.span.file);
+        if (d.span.line > 0) {
+            std::uint32_t lines = 1;
+            for (char c : file.text) lines += c == '\n';
+            if (d.span.line > lines) violated("a diagnostic past the last line: " + d.message);
+        }
+        (void)renderText(d, r.sources, false);
+    }
+    (void)renderJson(r.diags.sorted(), r.sources);
+    if (anyError && r.program) violated("a program despite errors");
+    if (!anyError && !r.program) violated("no program and no error");
+}
+
+}  // namespace
+
+void checkFrontEnd(const std::uint8_t* data, std::size_t size) {
+    try {
+        checkDiagnostics(compileBytes(data, size));
+    } catch (const std::exception& e) {
+        violated(std::string("the front end threw: ") + e.what());
+    }
+}
+
+void checkInterpreter(const std::uint8_t* data, std::size_t size) {
+    CompileResult r;
+    try {
+        r = compileBytes(data, size);
+    } catch (const std::exception& e) {
+        violated(std::string("the front end threw: ") + e.what());
+    }
+    checkDiagnostics(r);
+    if (!r.program) return;
+    interp::InterpretedRun run(*r.program, &r.sources);
+    rt::RunLimits limits;
+    limits.steps = 300;
+    limits.maxElements = 20000;
+    limits.timeoutSeconds = 2.0;
+    try {
+        std::vector<rt::Value> params;
+        for (const auto& p : run.params()) params.push_back(p.defaultValue);
+        rt::deriveGrammar(run, params, 7, limits);
+    } catch (const std::logic_error& e) {
+        violated(std::string("internal error in the derivation: ") + e.what());
+    } catch (const std::exception& e) {
+        // A run-time error or a bound: it must be reportable like g2d run does.
+        if (std::string(e.what()).empty()) violated("a run-time error without a message");
+        (void)run.locate(e);
+        (void)run.currentRule();
+    }
+    // Whatever the derivation reached is a completed step: it must draw and write.
+    try {
+        (void)rt::writeSvg(run.drawItems(), run.svgDefs());
+        (void)rt::writeJson(run.graph(), run.jsonSchema(), {},
+                            [&](bool isEdge, std::uint32_t id, int a) { return run.attribute(isEdge, id, a); });
+    } catch (const std::logic_error& e) {
+        violated(std::string("internal error while drawing: ") + e.what());
+    } catch (const std::exception&) {
+        // A style expression failing at draw time is a run-time error g2d run reports.
+    }
+}
+
+}  // namespace g2d::fuzz

@@ -1,0 +1,23 @@
+#pragma once
+// What the fuzz targets check, shared by the libFuzzer targets (scripts/fuzz.sh)
+// and by the replay test that runs every saved input in the normal suite.
+//
+// Each check returns normally for any input the tool handles as it should
+// (a result, or a clear error) and aborts with a message on anything else:
+// an internal error (std::logic_error), an error without a location, a
+// diagnostic pointing outside the file, a result despite errors. Crashes,
+// hangs and memory errors are found by the sanitizers and libFuzzer itself.
+#include <cstddef>
+#include <cstdint>
+
+namespace g2d::fuzz {
+
+// The front end (load, parse, analyse) on arbitrary bytes.
+void checkFrontEnd(const std::uint8_t* data, std::size_t size);
+
+// The interpreter on inputs that pass the front end: derived under step,
+// element and time budgets with incremental matching verified after every
+// step, then drawn and written as SVG and JSON.
+void checkInterpreter(const std::uint8_t* data, std::size_t size);
+
+}  // namespace g2d::fuzz
