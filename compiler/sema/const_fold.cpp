@@ -131,14 +131,28 @@ std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const V
     return std::nullopt;
 }
 
+// Each function body and constant is looked into once (a chain of functions
+// each calling the previous twice would otherwise cost 2^n).
 template <class Pred>
-bool any(const Expr& e, const ir::Program& prog, Pred pred) {
+bool anyOnce(const Expr& e, const ir::Program& prog, Pred& pred, std::vector<bool>& seenFns, std::vector<bool>& seenConsts) {
     if (pred(e)) return true;
     for (const auto& a : e.args)
-        if (any(a, prog, pred)) return true;
-    if (e.op == ExprOp::CallFn) return any(prog.functions[e.index].body, prog, pred);
-    if (e.op == ExprOp::Const) return any(prog.consts[e.index].value, prog, pred);
+        if (anyOnce(a, prog, pred, seenFns, seenConsts)) return true;
+    auto visit = [&](std::vector<bool>& seen, std::size_t i, const Expr& body) {
+        if (seen.size() <= i) seen.resize(i + 1, false);
+        if (seen[i]) return false;
+        seen[i] = true;
+        return anyOnce(body, prog, pred, seenFns, seenConsts);
+    };
+    if (e.op == ExprOp::CallFn) return visit(seenFns, static_cast<std::size_t>(e.index), prog.functions[e.index].body);
+    if (e.op == ExprOp::Const) return visit(seenConsts, static_cast<std::size_t>(e.index), prog.consts[e.index].value);
     return false;
+}
+
+template <class Pred>
+bool any(const Expr& e, const ir::Program& prog, Pred pred) {
+    std::vector<bool> seenFns, seenConsts;
+    return anyOnce(e, prog, pred, seenFns, seenConsts);
 }
 
 }  // namespace

@@ -12,6 +12,17 @@ using ir::TypeKind;
 
 namespace {
 
+// How deep calls nest below `e` (0: no call), from the depths of the
+// functions declared so far.
+constexpr int kMaxCallDepth = 100;
+int deepestCall(const ir::Expr& e, const std::vector<int>& functionDepth) {
+    int deepest = 0;
+    if (e.op == ir::ExprOp::CallFn && static_cast<std::size_t>(e.index) < functionDepth.size())
+        deepest = functionDepth[static_cast<std::size_t>(e.index)];
+    for (const auto& a : e.args) deepest = std::max(deepest, deepestCall(a, functionDepth));
+    return deepest;
+}
+
 const std::set<std::string> kReservedAttributes = {"pos", "age", "id", "degree", "in_degree", "out_degree",
                                                    "style", "kind"};
 const std::set<std::string> kKnownTags = {"circle", "line", "rect", "path", "image", "text", "polyline", "none"};
@@ -203,11 +214,20 @@ void checkFunction(Globals& g, ExprChecker& ec, const ast::FnDecl& d) {
         env.allowElements = false;
         env.locals = &locals;
         auto body = ec.checkAs(*d.body, *result, env, "the result of function `" + fn.name + "`");
-        if (body) g.prog.functions[index].body = std::move(*body);
+        if (body) {
+            // Calls nest at most kMaxCallDepth deep: evaluation recurses once per level.
+            const int depth = 1 + deepestCall(*body, g.functionDepth);
+            if (depth == kMaxCallDepth + 1)  // (deeper ones call this one: reported once)
+                g.diags.error(d.name.span, "function `" + fn.name + "` nests calls " + std::to_string(depth) +
+                                               " deep (at most " + std::to_string(kMaxCallDepth) + ")");
+            g.prog.functions[index].body = std::move(*body);
+        }
         for (const auto& l : locals)
             if (!l.used && l.span.file == g.mainFile)
                 g.diags.warning(l.span, "parameter `" + l.name + "` of function `" + fn.name + "` is never used");
     }
+    g.functionDepth.resize(static_cast<std::size_t>(index) + 1, 1);
+    g.functionDepth[static_cast<std::size_t>(index)] = 1 + deepestCall(g.prog.functions[index].body, g.functionDepth);
     g.functionsDeclared = index + 1;
 }
 
