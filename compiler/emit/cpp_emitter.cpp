@@ -177,6 +177,7 @@ private:
             for (std::size_t a = 0; a < fn.paramTypes.size(); ++a)
                 out += (a ? ", " : "") + cppType(fn.paramTypes[a]) + " a" + str(static_cast<long long>(a));
             out += ") {  // " + fn.name + "\n";
+            out += "        rt::checkDeadline();\n";
             const std::string v = gen_.gen(fn.body, ctx, out, "        ");
             out += "        return " + v + ";\n    }\n\n";
         }

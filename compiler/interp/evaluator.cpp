@@ -1,5 +1,7 @@
 #include "interp/evaluator.hpp"
 
+#include "g2d/deadline.hpp"
+
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -230,6 +232,7 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     case ExprOp::Cond: return B(evaluate(e.args[0], f)) ? evaluate(e.args[1], f) : evaluate(e.args[2], f);
     case ExprOp::Call: return call(e, f);
     case ExprOp::CallFn: {
+        rt::checkDeadline();   // a chain of calls can take 2^n: --timeout must see it
         std::vector<Value> args;
         args.reserve(e.args.size());
         for (const auto& a : e.args) args.push_back(evaluate(a, f));

@@ -1,5 +1,6 @@
 #include "g2d/derivation.hpp"
 
+#include "g2d/deadline.hpp"
 #include "g2d/incremental_matches.hpp"
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <numeric>
+#include <optional>
 
 namespace g2d::rt {
 
@@ -31,10 +33,11 @@ std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng) {
 
 namespace {
 
-std::string formatSeconds(double s) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g s", s);
-    return buf;
+RunawayError timeLimit(const DerivationLimits& limits, long long step) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g s", limits.timeoutSeconds.value_or(0));
+    return RunawayError("time_limit", std::string("the derivation ran past the time limit of ") + seconds + " at step " +
+                                          std::to_string(step) + " (raise --timeout)");
 }
 
 struct Group {
@@ -131,7 +134,15 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     std::vector<std::size_t> order;
     std::vector<NodeId> changed, edgesChanged;
     ParallelStep parallel;
-    IncrementalMatches sets(rules, g);
+    std::optional<DeadlineWatch> deadline;
+    if (limits.timeoutSeconds) deadline.emplace(*limits.timeoutSeconds);
+    std::optional<IncrementalMatches> found;
+    try {
+        found.emplace(rules, g);
+    } catch (const DeadlinePassed&) {
+        throw timeLimit(limits, 0);
+    }
+    IncrementalMatches& sets = *found;
     g.takeDirty(changed, edgesChanged);
     static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
@@ -140,7 +151,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             break;
         }
         const long long step = result.steps + 1;
-        bool applied = false, parallelStep = false;
+        bool applied = false;
         for (auto& grp : groups) {
             if (grp.limit && grp.applied >= *grp.limit) continue;
             order = grp.rules;
@@ -149,18 +160,29 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 MatchSet& set = sets.of(r);
                 if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
-                if (info.parallel) {
-                    parallelStep = true;
-                    result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step));
-                } else {
-                    const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
-                    const std::size_t d = pickDaughter(info.weights, rng);
-                    rules.prepare(r, d, m, g, rng, step);
-                    rules.commit(g, step);
-                    ++result.applications;
+                try {
+                    if (info.parallel) {
+                        result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step));
+                    } else {
+                        const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
+                        const std::size_t d = pickDaughter(info.weights, rng);
+                        rules.prepare(r, d, m, g, rng, step);
+                        rules.commit(g, step);
+                        ++result.applications;
+                    }
+                } catch (const DeadlinePassed&) {
+                    // Inside the step (a grammar function ran long): the graph is
+                    // still the one of the last completed step.
+                    throw timeLimit(limits, step);
                 }
                 g.takeDirty(changed, edgesChanged);
-                sets.update(g, changed, edgesChanged);
+                try {
+                    sets.update(g, changed, edgesChanged);
+                } catch (const DeadlinePassed&) {
+                    // While finding matches after the step: the step itself is complete.
+                    if (observer) observer(step, g);
+                    throw timeLimit(limits, step);
+                }
                 if (verify) sets.verify(g, step);
                 applied = true;
                 ++grp.applied;
@@ -174,13 +196,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
         }
         result.steps = step;
         if (observer) observer(step, g);
-        // The clock is read every 16 steps (and after parallel steps, which can be long).
-        if (limits.timeoutSeconds && ((step & 15) == 0 || parallelStep)) {
-            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (elapsed > *limits.timeoutSeconds)
-                throw RunawayError("time_limit", "the derivation ran past the time limit of " + formatSeconds(*limits.timeoutSeconds) +
-                                   " at step " + std::to_string(step) + " (raise --timeout)");
-        }
+        if (deadlineHasPassed()) throw timeLimit(limits, step);
         if (g.nodeCount() + g.edgeCount() > limits.maxElements)
             throw RunawayError("element_limit", "the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
                                std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");

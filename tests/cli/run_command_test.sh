@@ -104,6 +104,18 @@ for bad in 0 -1 nan abc; do
   expect_code 2 "$g2d" run spin.g2d --timeout "$bad" --no-svg
 done
 expect_code 0 "$g2d" run spin.g2d --steps 100 --timeout 60 --no-svg
+# ... even inside a step that never finishes (2^59 function calls from step 4 on)
+python3 - <<'PY'
+with open("expo.g2d", "w") as f:
+    f.write("node P { n: int = 0; }\nfn f0(x: int) -> int = x;\n")
+    for i in range(1, 60):
+        f.write(f"fn f{i}(x: int) -> int = f{i-1}(x) + f{i-1}(x) - f{i-1}(x);\n")
+    f.write("axiom { a: P at (0, 0); }\nlimit 20;\n")
+    f.write("rule R { match { p: P; } produce { p at (p.n > 2 ? f59(1) : 0, 0) { n = p.n + 1 }; } }\n")
+PY
+expect_code 1 "$g2d" run expo.g2d --timeout 0.5 -o expo.svg --json expo.json --keep-partial
+grep -q '^expo.g2d: error: the derivation ran past the time limit of 0.5 s at step 4 (raise --timeout)$' err.txt || fail "timeout inside a step: $(cat err.txt)"
+grep -q '"steps": 3, "stopped": "time_limit"' expo.json || fail "timeout inside a step, partial output: $(head -c 300 expo.json)"
 
 # --max-elements: the runaway guard, with the step it tripped at; 0 is a usage error
 expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 1000 -o guard.svg

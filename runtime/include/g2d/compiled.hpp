@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "g2d/deadline.hpp"
 #include "g2d/derivation.hpp"
 #include "g2d/grammar_run.hpp"
 #include "g2d/graph.hpp"
