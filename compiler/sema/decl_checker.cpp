@@ -1,5 +1,7 @@
 #include "sema/decl_checker.hpp"
 
+#include "g2d/graph.hpp"
+
 #include <set>
 
 #include "sema/builtins.hpp"
@@ -112,6 +114,13 @@ void declareEnum(Globals& g, const ast::EnumDecl& d) {
 }
 
 void declareKindName(Globals& g, const ast::KindDecl& d) {
+    if (g.prog.kinds.size() >= rt::kMaxKinds) {
+        if (!g.tooManyKinds)
+            g.diags.error(d.name.span, "too many kinds: a grammar may declare at most " + std::to_string(rt::kMaxKinds) +
+                                           " node and edge kinds");
+        g.tooManyKinds = true;
+        return;
+    }
     if (!declareTopLevel(g, d.name, d.isEdge ? "edge kind" : "node kind")) return;
     ir::Kind k;
     k.name = d.name.name;

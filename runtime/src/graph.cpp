@@ -38,7 +38,7 @@ IncidentRange::iterator& IncidentRange::iterator::operator++() {
 
 Graph::Graph(std::vector<KindInfo> kinds)
     : kinds_(std::move(kinds)), defaults_(kinds_.size()), pool_(kinds_.size()), kindNodes_(kinds_.size()) {
-    if (kinds_.size() > 32767) throw std::length_error("a grammar may declare at most 32767 kinds");
+    if (kinds_.size() > kMaxKinds) throw std::length_error("a grammar may declare at most 32767 kinds");
 }
 
 void Graph::setKindDefaults(int kind, std::vector<Value> defaults) { defaults_[kind] = std::move(defaults); }

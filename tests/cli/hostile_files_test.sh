@@ -75,6 +75,12 @@ expect_code 1 "$g2d" check million_rules.g2d
 grep -q "^million_rules.g2d: error: \`million_rules.g2d\` is too large ([0-9]* bytes; the limit is 8388608)$" err.txt \
   || fail "10^6 rules: $(cat err.txt)"
 
+# More kinds than elements can record (32 767)
+python3 -c "print('\n'.join(f'node K{i};' for i in range(40000)) + '\naxiom { a: K0; }')" > many_kinds.g2d
+expect_code 1 "$g2d" check many_kinds.g2d
+[ "$(grep -c error: err.txt)" = 1 ] && grep -q '^many_kinds.g2d:32768:6: error: too many kinds: a grammar may declare at most 32767 node and edge kinds$' err.txt \
+  || fail "too many kinds: $(head -c 300 err.txt)"
+
 # Imports: a self-import, a cycle, a missing file, a folder, a symbolic-link loop
 printf 'import "self.g2d";\nnode P;\naxiom { a: P; }\n' > self.g2d
 expect_code 1 "$g2d" check self.g2d

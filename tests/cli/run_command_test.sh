@@ -128,6 +128,16 @@ steps=$(sed -n 's/.*"steps": \([0-9]*\).*/\1/p' guard.json | head -1)
 # The partial graph is the one of its step: 3 edges, and 3 more per step.
 [ "$(grep -c '<line ' guard.svg)" = $((3 + 3 * steps)) ] || fail "partial SVG of step $steps: $(grep -c '<line ' guard.svg) lines"
 
+# Integer overflow in attribute arithmetic is an error naming the rule and the step
+cat > overflow.g2d <<'G2D'
+node P { n: int = 1; }
+axiom { p: P at (0, 0); }
+limit 100;
+rule Double { match { p: P; } produce { p { n = p.n * 2 }; } }
+G2D
+expect_code 1 "$g2d" run overflow.g2d --no-svg
+grep -q '^overflow.g2d:4:49: error: integer overflow (in rule `Double`, step 63)$' err.txt || fail "integer overflow: $(cat err.txt)"
+
 # A numeric fault names the production and the step; --keep-partial writes the step before it
 cat > fault.g2d <<'G2D'
 node P { n: int = 3; }

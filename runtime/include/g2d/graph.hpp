@@ -27,6 +27,8 @@ namespace g2d::rt {
 using NodeId = std::uint32_t;
 using EdgeId = std::uint32_t;
 inline constexpr std::uint32_t kNoId = 0xffffffffu;
+// Kinds are stored in 16 bits per element.
+inline constexpr std::size_t kMaxKinds = 32767;
 
 struct KindInfo {
     bool isEdge = false;
