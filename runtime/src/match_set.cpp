@@ -19,9 +19,9 @@ void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
         free_.pop_back();
     } else {
         id = static_cast<Id>(livePos_.size());
-        data_.resize(data_.size() + width_);
+        data_.insert(data_.end(), ids, ids + width_);
         livePos_.push_back(kNoId);
-        links_.resize(links_.size() + static_cast<std::size_t>(nn_));
+        for (int i = 0; i < nn_; ++i) links_.push_back(Link{kNoId, kNoId});
         if (byAge_) ageSum_.push_back(0);
     }
     std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width_];

@@ -10,6 +10,7 @@
 //   - oldest: a match uniformly among those with the lowest sum of their
 //     elements' creation steps, one below(k) draw only when k > 1 tie,
 //     O(log distinct sums).
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -33,15 +34,17 @@ public:
     void reset(int nodes, int edges) {
         nn_ = nodes;
         ne_ = edges;
-        ids_.clear();
+        used_ = 0;
         count_ = 0;
     }
     void add(const NodeId* nodes, const EdgeId* edges) {
-        const std::size_t at = ids_.size();
-        ids_.resize(at + static_cast<std::size_t>(nn_ + ne_));
-        std::uint32_t* out = ids_.data() + at;
+        // The buffer only grows (no value-initialising resize per match).
+        const std::size_t width = static_cast<std::size_t>(nn_ + ne_);
+        if (used_ + width > ids_.size()) ids_.resize(std::max<std::size_t>(64, 2 * (used_ + width)));
+        std::uint32_t* out = ids_.data() + used_;
         for (int i = 0; i < nn_; ++i) *out++ = nodes[i];
         for (int i = 0; i < ne_; ++i) *out++ = edges[i];
+        used_ += width;
         ++count_;
     }
     std::size_t size() const { return count_; }
@@ -52,7 +55,8 @@ public:
 
 private:
     int nn_ = 0, ne_ = 0;
-    std::vector<std::uint32_t> ids_;
+    std::vector<std::uint32_t> ids_;   // the first used_ entries are matches
+    std::size_t used_ = 0;
     std::size_t count_ = 0;
 };
 
