@@ -3,10 +3,13 @@
 #include <cstdio>
 
 #include "driver/check_command.hpp"
+#include "driver/big_stack.hpp"
 #include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int runCommandLine(int argc, char** argv) {
     CLI::App app{"g2d: a compiled language for graph grammars that generate 2D shapes"};
     app.set_version_flag("--version", "g2d 0.1.0");
     app.require_subcommand(1);
@@ -95,4 +98,10 @@ int main(int argc, char** argv) {
         return g2d::runRun(runOptions);
     }
     return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return g2d::runWithBigStack([&] { return runCommandLine(argc, argv); });
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "driver/big_stack.hpp"
 #include "driver/compile.hpp"
 #include "g2d/json_writer.hpp"
 #include "g2d/run_driver.hpp"
@@ -52,6 +53,14 @@ void checkDiagnostics(const CompileResult& r) {
 }  // namespace
 
 void checkFrontEnd(const std::uint8_t* data, std::size_t size) {
+    runWithBigStack([&] { checkFrontEndHere(data, size); return 0; });
+}
+
+void checkInterpreter(const std::uint8_t* data, std::size_t size) {
+    runWithBigStack([&] { checkInterpreterHere(data, size); return 0; });
+}
+
+void checkFrontEndHere(const std::uint8_t* data, std::size_t size) {
     try {
         checkDiagnostics(compileBytes(data, size));
     } catch (const std::exception& e) {
@@ -59,7 +68,7 @@ void checkFrontEnd(const std::uint8_t* data, std::size_t size) {
     }
 }
 
-void checkInterpreter(const std::uint8_t* data, std::size_t size) {
+void checkInterpreterHere(const std::uint8_t* data, std::size_t size) {
     CompileResult r;
     try {
         r = compileBytes(data, size);

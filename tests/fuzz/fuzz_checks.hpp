@@ -20,4 +20,9 @@ void checkFrontEnd(const std::uint8_t* data, std::size_t size);
 // step, then drawn and written as SVG and JSON.
 void checkInterpreter(const std::uint8_t* data, std::size_t size);
 
+// The same, on the calling thread (the two above run them on a thread with
+// the stack g2d itself runs on: driver/big_stack.hpp).
+void checkFrontEndHere(const std::uint8_t* data, std::size_t size);
+void checkInterpreterHere(const std::uint8_t* data, std::size_t size);
+
 }  // namespace g2d::fuzz
