@@ -25,6 +25,7 @@ CompileResult compileFile(const std::string& path, const LoadOptions& options) {
     CompileResult r;
     std::vector<ast::Program> programs;
     if (loadGrammar(path, options, r.sources, r.diags, programs)) r.program = analyzeAll(programs, nullptr, r.diags);
+    r.syntax = std::move(programs);
     return r;
 }
 
@@ -48,6 +49,8 @@ CompileResult compileSource(const std::string& path, const std::string& text, co
         ok = loadGrammar(*resolved, options, r.sources, r.diags, imported) && ok;
     }
     if (ok) r.program = analyzeAll(imported, &*main, r.diags);
+    r.syntax = std::move(imported);
+    r.syntax.push_back(std::move(*main));
     return r;
 }
 

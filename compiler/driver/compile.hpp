@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "ast/ast.hpp"
 #include "diag/diagnostic.hpp"
 #include "driver/loader.hpp"
 #include "ir/ir.hpp"
@@ -13,6 +14,7 @@ struct CompileResult {
     SourceManager sources;
     Diagnostics diags;
     std::optional<ir::Program> program;   // present when there are no errors
+    std::vector<ast::Program> syntax;     // every file that parsed, the main file last (for editors)
 };
 
 CompileResult compileFile(const std::string& path, const LoadOptions& options);

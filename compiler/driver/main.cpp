@@ -6,6 +6,9 @@
 #include "driver/big_stack.hpp"
 #include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
+#include "lsp/server.hpp"
+
+#include <iostream>
 
 namespace {
 
@@ -42,6 +45,10 @@ int runCommandLine(int argc, char** argv) {
     run->add_option("--timeout", timeout, "Stop with an error when the derivation runs longer than SECONDS");
     run->add_flag("--keep-partial", runOptions.keepPartial,
                   "After an error or a bound, still write the graph of the last completed step");
+
+    auto* lsp = app.add_subcommand("lsp", "Serve the Language Server Protocol on stdin/stdout (for editors)");
+    bool stdio = true;
+    lsp->add_flag("--stdio", stdio, "Talk over stdin/stdout (the default and only transport)");
 
     auto* emitCpp = app.add_subcommand("emit-cpp", "Write the grammar as one C++ translation unit");
     g2d::BuildOptions emitOptions;
@@ -88,6 +95,10 @@ int runCommandLine(int argc, char** argv) {
         if (!keepCpp.empty()) buildOptions.keepCpp = keepCpp;
         if (!cxx.empty()) buildOptions.cxx = cxx;
         return g2d::runBuild(buildOptions);
+    }
+    if (lsp->parsed()) {
+        std::ios::sync_with_stdio(false);
+        return g2d::lsp::runLanguageServer(std::cin, std::cout);
     }
     if (run->parsed()) {
         if (!svgOut.empty()) runOptions.svgOut = svgOut;

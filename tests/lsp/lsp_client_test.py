@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Drives `g2d lsp` over stdio as an editor would (Python standard library only):
+initialize -> didOpen with an error -> diagnostics (the same text as `g2d check`)
+-> didChange that fixes it -> no diagnostics -> hover -> definition ->
+documentSymbol -> completion -> shutdown -> exit (status 0).
+
+usage: lsp_client_test.py G2D SOURCE_DIR
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+g2d, src = sys.argv[1], sys.argv[2]
+failures = 0
+
+
+def check(cond, what):
+    global failures
+    if not cond:
+        failures += 1
+        print("FAIL:", what)
+
+
+class Client:
+    def __init__(self):
+        self.proc = subprocess.Popen([g2d, "lsp"], stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+        self.next_id = 0
+        self.notifications = []
+
+    def send(self, message):
+        body = json.dumps(message).encode()
+        self.proc.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        self.proc.stdin.flush()
+
+    def read(self):
+        length = None
+        while True:
+            line = self.proc.stdout.readline()
+            if not line:
+                raise EOFError("the server closed its output")
+            line = line.strip()
+            if not line:
+                break
+            if line.lower().startswith(b"content-length:"):
+                length = int(line.split(b":")[1])
+        return json.loads(self.proc.stdout.read(length))
+
+    def request(self, method, params):
+        self.next_id += 1
+        self.send({"jsonrpc": "2.0", "id": self.next_id, "method": method, "params": params})
+        while True:
+            m = self.read()
+            if m.get("id") == self.next_id:
+                return m
+            self.notifications.append(m)
+
+    def notify(self, method, params):
+        self.send({"jsonrpc": "2.0", "method": method, "params": params})
+
+    def diagnostics(self):
+        while True:
+            for i, m in enumerate(self.notifications):
+                if m.get("method") == "textDocument/publishDiagnostics":
+                    return self.notifications.pop(i)["params"]
+            self.notifications.append(self.read())
+
+
+work = tempfile.mkdtemp()
+path = os.path.join(work, "grammar.g2d")
+uri = "file://" + path
+broken = """node Point { size: float = 1; }
+edge Seg directed { lod: int = 0; }
+param levels: int = 3;
+axiom { a: Point at (0, 0); b: Point at (1, 0); a -[Seg]-> b; }
+rule Split {
+    match { s: Point; e: Point; old: s -[Seg]-> e where old.lod < levles; }
+    let v = e.pos - s.pos;
+    produce { s; e; m: Point at s.pos + v / 2; s -[Seg { lod = old.lod + 1 }]-> m; m -[Seg]-> e; }
+}
+"""
+fixed = broken.replace("levles", "levels")
+with open(path, "w") as f:
+    f.write(broken)
+expected = subprocess.run([g2d, "check", path], capture_output=True, text=True).stderr.splitlines()[0]
+
+c = Client()
+init = c.request("initialize", {"processId": None, "rootUri": "file://" + work, "capabilities": {}})
+caps = init["result"]["capabilities"]
+check(caps.get("hoverProvider") and caps.get("definitionProvider") and caps.get("documentSymbolProvider")
+      and "completionProvider" in caps, "capabilities: %s" % caps)
+c.notify("initialized", {})
+
+c.notify("textDocument/didOpen", {"textDocument": {"uri": uri, "languageId": "g2d", "version": 1, "text": broken}})
+d = c.diagnostics()
+check(d["uri"] == uri, "diagnostics for the wrong document: %s" % d["uri"])
+check(len(d["diagnostics"]) == 1, "one diagnostic expected: %s" % d["diagnostics"])
+if d["diagnostics"]:
+    diag = d["diagnostics"][0]
+    # `g2d check` says FILE:LINE:COL: error: MESSAGE; LSP counts from 0.
+    check(expected.endswith(": error: " + diag["message"]), "message %r vs g2d check %r" % (diag["message"], expected))
+    col = broken.splitlines()[5].index("levles")
+    check(diag["range"] == {"start": {"line": 5, "character": col}, "end": {"line": 5, "character": col + 6}}
+          and diag["severity"] == 1, "range: %s" % diag)
+    check(expected.startswith("%s:6:%d: error: " % (path, col + 1)), "g2d check's location: %s" % expected)
+
+c.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": 2},
+                                    "contentChanges": [{"text": fixed}]})
+d = c.diagnostics()
+check(d["diagnostics"] == [], "no diagnostics expected after the fix: %s" % d["diagnostics"])
+
+lines = fixed.splitlines()
+def pos(line, text, nth=0):
+    col = -1
+    for _ in range(nth + 1):
+        col = lines[line].index(text, col + 1)
+    return {"line": line, "character": col}
+
+doc = {"uri": uri}
+h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(5, "lod")})["result"]
+check(h and "attribute" in h["contents"]["value"] and "lod: int = 0" in h["contents"]["value"], "hover on old.lod: %s" % h)
+h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(5, "old")})["result"]
+check(h and "matched edge" in h["contents"]["value"] and "`Seg`" in h["contents"]["value"], "hover on old: %s" % h)
+h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(5, "levels")})["result"]
+check(h and "parameter" in h["contents"]["value"] and "param levels: int = 3;" in h["contents"]["value"], "hover on levels: %s" % h)
+
+defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "Point")})["result"]
+check(defn and defn["uri"] == uri and defn["range"]["start"] == {"line": 0, "character": 5}, "definition of Point: %s" % defn)
+defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "v /")})["result"]
+check(defn and defn["range"]["start"] == {"line": 6, "character": 8}, "definition of let v: %s" % defn)
+defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "old")})["result"]
+check(defn and defn["range"]["start"] == {"line": 5, "character": 32}, "definition of old: %s" % defn)
+
+syms = c.request("textDocument/documentSymbol", {"textDocument": doc})["result"]
+names = [s["name"] for s in syms]
+check(names == ["Point", "Seg", "levels", "Split"], "document symbols: %s" % names)
+split = [s for s in syms if s["name"] == "Split"]
+check(split and {ch["name"] for ch in split[0]["children"]} >= {"s", "e", "old", "v", "m"}, "children of Split: %s" % split)
+
+items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(5, "lod")})["result"]
+labels = {i["label"] for i in items}
+check(labels == {"lod", "pos"}, "completion after old.: %s" % labels)
+items = c.request("textDocument/completion", {"textDocument": doc, "position": {"line": 7, "character": 14}})["result"]
+labels = {i["label"] for i in items}
+check({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} <= labels,
+      "completion in a daughter: missing %s" % ({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} - labels))
+
+unknown = c.request("textDocument/formatting", {"textDocument": doc, "options": {}})
+check(unknown.get("error", {}).get("code") == -32601, "unknown request: %s" % unknown)
+
+check(c.request("shutdown", None).get("result", "missing") is None, "shutdown")
+c.notify("exit", None)
+check(c.proc.wait(timeout=10) == 0, "exit status after shutdown")
+
+print("%d failed" % failures)
+sys.exit(1 if failures else 0)
