@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs g2d's build dependencies from Debian's packages. Idempotent: does
-# nothing (and needs no network) when every package is already present.
+# Installs g2d's build dependencies from Debian's packages, and the npm packages
+# of the VS Code extension (editors/vscode, pinned by its lock file). Idempotent: does
+# nothing (and needs no network) when everything is already present.
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,11 @@ packages=(
   libxml2-utils
   python3-networkx
 )
+
+# The editor tests and the VS Code package use Node.js packages from npm.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
 
 # `install-deps.sh fuzz`: also clang and its libFuzzer runtime (scripts/fuzz.sh).
 if [ "${1:-}" = fuzz ]; then
@@ -24,13 +30,20 @@ for p in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}" >&2
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# npm packages of the VS Code extension (vscode-languageclient; vscode-textmate
+# and vscode-oniguruma for the grammar tests; @vscode/vsce to package), as
+# pinned by its package-lock.json. Install scripts are not needed.
+vscode="$(cd "$(dirname "$0")/.." && pwd)/editors/vscode"
+if [ ! -f "$vscode/node_modules/.package-lock.json" ] || [ "$vscode/package-lock.json" -nt "$vscode/node_modules/.package-lock.json" ]; then
+  echo "install-deps: npm ci in editors/vscode" >&2
+  (cd "$vscode" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error)
+fi
