@@ -227,7 +227,8 @@ private:
         std::string markdown;
         if (const Symbol* s = p.doc->index->resolve(p.word, kMainFile, p.line, p.col, p.receiver)) {
             markdown = "**" + std::string(SymbolIndex::describe(s->kind)) + "** `" + s->name + "`";
-            if (!s->typeName.empty()) markdown += ": `" + s->typeName + "`";
+            const std::string type = s->typeName.empty() ? inferredType(*p.doc, *s) : s->typeName;
+            if (!type.empty()) markdown += ": `" + type + "`";
             if (!s->container.empty()) markdown += " (in `" + s->container + "`)";
             markdown += "\n\n```g2d\n" + s->declaration + "\n```";
         } else if (const auto* b = sema::findBuiltin(p.word)) {
@@ -238,6 +239,26 @@ private:
         }
         Span at{kMainFile, p.line, p.wordStart, p.line, p.wordStart + static_cast<std::uint32_t>(p.word.size())};
         return json{{"contents", {{"kind", "markdown"}, {"value", markdown}}}, {"range", range(*p.doc, at)}};
+    }
+
+    // The type the checker gave a constant or a `let` written without one
+    // (known when the grammar has no errors).
+    static std::string inferredType(const Document& d, const Symbol& s) {
+        const auto& prog = d.compiled->program;
+        if (!prog) return "";
+        if (s.kind == SymbolKind::Const)
+            for (const auto& c : prog->consts)
+                if (c.name == s.name) return ir::typeName(c.type, *prog);
+        if (s.kind == SymbolKind::Let)
+            for (const auto& r : prog->rules) {
+                if (r.name != s.container) continue;
+                for (const auto& l : r.lets)
+                    if (l.name == s.name) return ir::typeName(l.value.type, *prog);
+                for (const auto& daughter : r.daughters)
+                    for (const auto& l : daughter.lets)
+                        if (l.name == s.name) return ir::typeName(l.value.type, *prog);
+            }
+        return "";
     }
 
     json definition(const json& params) const {

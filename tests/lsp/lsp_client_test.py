@@ -77,7 +77,7 @@ axiom { a: Point at (0, 0); b: Point at (1, 0); a -[Seg]-> b; }
 rule Split {
     match { s: Point; e: Point; old: s -[Seg]-> e where old.lod < levles; }
     let v = e.pos - s.pos;
-    produce { s; e; m: Point at s.pos + v / 2; s -[Seg { lod = old.lod + 1 }]-> m; m -[Seg]-> e; }
+    produce { s; e; m: Point at s.pos + rotate(v, 0) / 2; s -[Seg { lod = old.lod + 1 }]-> m; m -[Seg]-> e; }
 }
 """
 fixed = broken.replace("levles", "levels")
@@ -125,9 +125,15 @@ check(h and "matched edge" in h["contents"]["value"] and "`Seg`" in h["contents"
 h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(5, "levels")})["result"]
 check(h and "parameter" in h["contents"]["value"] and "param levels: int = 3;" in h["contents"]["value"], "hover on levels: %s" % h)
 
+h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(7, "v,")})["result"]
+check(h and "let binding" in h["contents"]["value"] and "`v`: `vec2`" in h["contents"]["value"], "hover on let v (type inferred): %s" % h)
+h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(7, "rotate")})["result"]
+check(h and "built-in function" in h["contents"]["value"] and "rotate(v: vec2, angle: float" in h["contents"]["value"], "hover on rotate: %s" % h)
+h = c.request("textDocument/hover", {"textDocument": doc, "position": {"line": 7, "character": 0}})["result"]
+check(h is None, "hover on white space: %s" % h)
 defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "Point")})["result"]
 check(defn and defn["uri"] == uri and defn["range"]["start"] == {"line": 0, "character": 5}, "definition of Point: %s" % defn)
-defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "v /")})["result"]
+defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "v,")})["result"]
 check(defn and defn["range"]["start"] == {"line": 6, "character": 8}, "definition of let v: %s" % defn)
 defn = c.request("textDocument/definition", {"textDocument": doc, "position": pos(7, "old")})["result"]
 check(defn and defn["range"]["start"] == {"line": 5, "character": 32}, "definition of old: %s" % defn)
