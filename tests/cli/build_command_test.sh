@@ -4,15 +4,7 @@
 # Usage: build_command_test.sh G2D SOURCE_DIR
 set -u
 g2d="$1"; src="$2"
-work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-expect_code() {
-  local want=$1; shift
-  "$@" >out.txt 2>err.txt; local got=$?
-  [ "$got" = "$want" ] || fail "exit $got (wanted $want): $* -- $(head -3 err.txt)"
-}
+source "$(dirname "$0")/test_lib.sh"
 koch="$src/examples/koch_snowflake.g2d"
 
 expect_code 1 "$g2d" build "$koch" -o k --cxx no-such-compiler
@@ -58,5 +50,4 @@ expect_code 2 ./div --timeout -3
 expect_code 2 ./div --frobnicate
 expect_code 0 ./div --help
 
-echo "$failures failed"
-[ "$failures" = 0 ]
+finish

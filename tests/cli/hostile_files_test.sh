@@ -5,16 +5,7 @@
 # Usage: hostile_files_test.sh G2D SOURCE_DIR
 set -u
 g2d="$1"; src="$2"
-work=$(mktemp -d); trap 'chmod -R u+rwx "$work"; rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-# Runs a command; the exit code must be `want` and not a signal (>= 128).
-expect_code() {
-  local want=$1; shift
-  "$@" >out.txt 2>err.txt; local got=$?
-  [ "$got" = "$want" ] || fail "exit $got (wanted $want): $* -- $(head -c 600 err.txt)"
-}
+source "$(dirname "$0")/test_lib.sh"
 koch="$src/examples/koch_snowflake.g2d"
 
 # CRLF line ends and a UTF-8 byte-order mark are valid, and change nothing.
@@ -147,5 +138,4 @@ mkdir real; ln -s real/target.svg link.svg
 expect_code 0 "$g2d" run "$koch" -D max_lod=1 -o link.svg
 [ -L link.svg ] && [ -s real/target.svg ] || fail "a symbolic link was replaced instead of followed"
 
-echo "$failures failed"
-[ "$failures" = 0 ]
+finish

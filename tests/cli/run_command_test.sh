@@ -3,15 +3,7 @@
 # Usage: run_command_test.sh G2D SOURCE_DIR
 set -u
 g2d="$1"; src="$2"
-work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-expect_code() {  # expected, then the command
-  local want=$1; shift
-  "$@" >out.txt 2>err.txt; local got=$?
-  [ "$got" = "$want" ] || fail "exit $got (wanted $want): $* -- $(cat err.txt)"
-}
+source "$(dirname "$0")/test_lib.sh"
 
 # Outputs and stats
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=2 -o k.svg --json k.json --stats --seed 9
@@ -160,5 +152,4 @@ sleep 0.5
 kill -INT "$pid"; wait "$pid" 2>/dev/null
 ls | grep -q 'interrupted.svg' && fail "an interrupted run left $(ls | grep interrupted)"
 
-echo "$failures failed"
-[ "$failures" = 0 ]
+finish

@@ -5,7 +5,6 @@
 #include <cstdlib>
 
 #include "fuzz_checks.hpp"
-#include "token_mutator.hpp"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     setenv("G2D_VERIFY_MATCHES", "1", 1);
@@ -17,13 +16,4 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
 }
 
-extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t maxSize,
-                                               unsigned int seed) {
-    return g2d::fuzz::mutateTokens(data, size, maxSize, seed);
-}
-
-extern "C" std::size_t LLVMFuzzerCustomCrossOver(const std::uint8_t* a, std::size_t sizeA, const std::uint8_t* b,
-                                                 std::size_t sizeB, std::uint8_t* out, std::size_t maxOut,
-                                                 unsigned int seed) {
-    return g2d::fuzz::crossOverLines(a, sizeA, b, sizeB, out, maxOut, seed);
-}
+// The token-level mutation hooks: token_mutator_hooks.cpp.
