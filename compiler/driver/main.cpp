@@ -43,6 +43,9 @@ int runCommandLine(int argc, char** argv) {
     run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");
     run->add_option("--max-elements", maxElements, "Stop with an error when the graph grows past N nodes + edges (default 10000000)");
     run->add_option("--timeout", timeout, "Stop with an error when the derivation runs longer than SECONDS");
+    std::string traceHtml, traceJson;
+    run->add_option("--trace", traceHtml, "Write the derivation step by step as a self-contained HTML page");
+    run->add_option("--trace-json", traceJson, "Write the derivation step by step as JSON");
     run->add_flag("--keep-partial", runOptions.keepPartial,
                   "After an error or a bound, still write the graph of the last completed step");
 
@@ -106,6 +109,8 @@ int runCommandLine(int argc, char** argv) {
         if (run->count("--steps")) runOptions.steps = steps;
         if (run->count("--max-elements")) runOptions.maxElements = maxElements;
         if (run->count("--timeout")) runOptions.timeoutSeconds = timeout;
+        if (!traceHtml.empty()) runOptions.traceHtml = traceHtml;
+        if (!traceJson.empty()) runOptions.traceJson = traceJson;
         return g2d::runRun(runOptions);
     }
     return 2;

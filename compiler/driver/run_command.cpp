@@ -30,6 +30,8 @@ int runRun(const RunOptions& options) {
     request.maxElements = options.maxElements;
     request.timeoutSeconds = options.timeoutSeconds;
     request.keepPartial = options.keepPartial;
+    request.traceHtml = options.traceHtml;
+    request.traceJson = options.traceJson;
     interp::InterpretedRun grammar(*compiled.program, &compiled.sources);
     return rt::runGrammar(request, grammar);
 }

@@ -19,6 +19,7 @@ struct RunOptions {
     std::optional<long long> maxElements;  // the runaway guard (default: rt::kDefaultMaxElements)
     std::optional<double> timeoutSeconds;  // wall time of the derivation
     bool keepPartial = false;              // write the last completed step after an error or a bound
+    std::optional<std::string> traceHtml, traceJson;   // the derivation step by step
 };
 
 // Returns the exit code: 0 done, 1 errors in the grammar, the run or the

@@ -52,7 +52,8 @@ struct Group {
 class ParallelStep {
 public:
     // Returns how many matches were rewritten.
-    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step) {
+    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step,
+                    StepTracer* tracer) {
         const RuleInfo& info = rules.info(rule);
         const int nn = set.nodes(), ne = set.edges();
         const std::size_t width = static_cast<std::size_t>(nn + ne);
@@ -94,6 +95,7 @@ public:
             for (int k = 0; k < ne; ++k) readEdges_[m.edges[k]] = stamp_;
             for (NodeId n : writes_.nodes) writtenNodes_[n] = stamp_;
             for (EdgeId e : writes_.edges) writtenEdges_[e] = stamp_;
+            if (tracer) tracer->applying(rule, daughter, m, g);
             rules.prepare(rule, daughter, m, g, rng, step);
             ++applied;
         }
@@ -115,7 +117,7 @@ private:
 }  // namespace
 
 DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
-                        const StepObserver& observer) {
+                        const StepObserver& observer, StepTracer* tracer) {
     const auto start = std::chrono::steady_clock::now();
     std::map<long long, Group> byPriority;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
@@ -162,10 +164,11 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 const RuleInfo& info = rules.info(r);
                 try {
                     if (info.parallel) {
-                        result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step));
+                        result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
                     } else {
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                         const std::size_t d = pickDaughter(info.weights, rng);
+                        if (tracer) tracer->applying(r, d, m, g);
                         rules.prepare(r, d, m, g, rng, step);
                         rules.commit(g, step);
                         ++result.applications;
@@ -180,6 +183,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                     sets.update(g, changed, edgesChanged);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
+                    if (tracer) tracer->stepDone(step, g);
                     if (observer) observer(step, g);
                     throw timeLimit(limits, step);
                 }
@@ -195,6 +199,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             break;
         }
         result.steps = step;
+        if (tracer) tracer->stepDone(step, g);
         if (observer) observer(step, g);
         if (deadlineHasPassed()) throw timeLimit(limits, step);
         if (g.nodeCount() + g.edgeCount() > limits.maxElements)

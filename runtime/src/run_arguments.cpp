@@ -11,7 +11,7 @@ namespace {
 void usage(FILE* to, const char* program) {
     std::fprintf(to,
                  "usage: %s [-o OUT.svg] [--json OUT.json] [--no-svg] [--seed N] [-D NAME=VALUE]... [--steps N] "
-                 "[--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial]\n"
+                 "[--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial] [--trace OUT.html] [--trace-json OUT.json]\n"
                  "  -o, --output FILE   SVG output (default: the grammar's name with .svg)\n"
                  "  --json FILE         the graph in NetworkX node-link JSON\n"
                  "  --no-svg            write no SVG\n"
@@ -21,7 +21,9 @@ void usage(FILE* to, const char* program) {
                  "  --stats             print one JSON line of statistics on stdout\n"
                  "  --max-elements N    stop with an error past N nodes + edges (default 10000000)\n"
                  "  --timeout SECONDS   stop with an error when the derivation runs longer\n"
-                 "  --keep-partial      after an error or a bound, still write the last completed step\n",
+                 "  --keep-partial      after an error or a bound, still write the last completed step\n"
+                 "  --trace FILE        the derivation step by step, as a self-contained HTML page\n"
+                 "  --trace-json FILE   the same trace, as JSON\n",
                  program);
 }
 
@@ -82,6 +84,10 @@ std::optional<int> parseRunArguments(int argc, char** argv, const std::string& g
             double t = 0;
             if (!v || !parseNumber(v, t)) return fail("--timeout needs a number of seconds");
             out.timeoutSeconds = t;
+        } else if (a == "--trace" || a == "--trace-json") {
+            const char* v = value("FILE");
+            if (!v) return fail(a + " needs a file");
+            (a == "--trace" ? out.traceHtml : out.traceJson) = v;
         } else if (a == "--keep-partial") {
             out.keepPartial = true;
         } else if (a == "-D" || a == "--define") {

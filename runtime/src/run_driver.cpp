@@ -87,9 +87,11 @@ std::string renderLocatedError(const SourceLocation& at, const std::string& mess
 }
 
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         const RunLimits& runLimits, const StepObserver& observer, RunProgress* progress) {
+                         const RunLimits& runLimits, const StepObserver& observer, RunProgress* progress,
+                         TraceRecorder* trace) {
     Rng rng(seed);
     grammar.start(params, rng);
+    if (trace) trace->started();
     if (progress) *progress = RunProgress{true, 0};
     DerivationLimits limits;
     const std::optional<long long> grammarLimit = grammar.stepLimit();
@@ -98,10 +100,13 @@ DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, 
     limits.maxElements = runLimits.maxElements;
     limits.timeoutSeconds = runLimits.timeoutSeconds;
     DerivedRun out;
-    out.result = derive(grammar.graph(), grammar.rules(), rng, limits, [&](long long s, const Graph& g) {
-        if (progress) progress->step = s;
-        if (observer) observer(s, g);
-    });
+    out.result = derive(
+        grammar.graph(), grammar.rules(), rng, limits,
+        [&](long long s, const Graph& g) {
+            if (progress) progress->step = s;
+            if (observer) observer(s, g);
+        },
+        trace);
     out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !runLimits.steps && !grammarLimit;
     return out;
 }
@@ -132,12 +137,14 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         return usageError("--timeout must be a positive number of seconds");
 
     // Outputs are opened first, so an unwritable path fails before the work.
-    std::unique_ptr<AtomicFile> svgFile, jsonFile;
+    std::unique_ptr<AtomicFile> svgFile, jsonFile, traceHtmlFile, traceJsonFile;
     try {
         if (!request.noSvg)
             svgFile = std::make_unique<AtomicFile>(
                 request.svgOut.value_or(std::filesystem::path(request.grammarFile).stem().string() + ".svg"));
         if (request.jsonOut) jsonFile = std::make_unique<AtomicFile>(*request.jsonOut);
+        if (request.traceHtml) traceHtmlFile = std::make_unique<AtomicFile>(*request.traceHtml);
+        if (request.traceJson) traceJsonFile = std::make_unique<AtomicFile>(*request.traceJson);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "g2d run: error: %s\n", e.what());
         return 1;
@@ -148,6 +155,8 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     limits.maxElements = request.maxElements ? static_cast<std::size_t>(*request.maxElements) : kDefaultMaxElements;
     limits.timeoutSeconds = request.timeoutSeconds;
     RunProgress progress;
+    std::unique_ptr<TraceRecorder> trace;
+    if (traceHtmlFile || traceJsonFile) trace = std::make_unique<TraceRecorder>(grammar);
     DerivationResult result;
     std::string stopped;
     int status = 0;
@@ -155,7 +164,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         Progress display;
         const DerivedRun derived =
             deriveGrammar(grammar, params, request.seed, limits, [&](long long s, const Graph& g) { display.update(s, g); },
-                          &progress);
+                          &progress, trace.get());
         result = derived.result;
         stopped = stopName(result.stopped);
         if (derived.hitDefaultLimit) {
@@ -184,7 +193,14 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
 
     try {
         const Graph& graph = grammar.graph();
-        if (svgFile) svgFile->commit(writeSvg(grammar.drawItems(), grammar.svgDefs()));
+        const std::string svg = svgFile || traceHtmlFile ? writeSvg(grammar.drawItems(), grammar.svgDefs()) : "";
+        if (svgFile) svgFile->commit(svg);
+        if (trace) {
+            const std::string name = std::filesystem::path(request.grammarFile).filename().string();
+            const std::string data = trace->json(name, request.seed, stopped);
+            if (traceJsonFile) traceJsonFile->commit(data);
+            if (traceHtmlFile) traceHtmlFile->commit(writeTracePage(data, svg, name));
+        }
         if (jsonFile) {
             const std::vector<std::pair<std::string, Value>> meta = {
                 {"grammar", std::filesystem::path(request.grammarFile).filename().string()},

@@ -109,6 +109,15 @@ struct DerivationResult {
 // Called after every step (for progress displays).
 using StepObserver = std::function<void(long long step, const Graph& g)>;
 
+// Follows a derivation rewrite by rewrite (for --trace): told each match
+// before it is rewritten, and when the step is complete.
+class StepTracer {
+public:
+    virtual ~StepTracer() = default;
+    virtual void applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) = 0;
+    virtual void stepDone(long long step, const Graph& g) = 0;
+};
+
 // A resource bound was hit (elements, wall time, the default step limit):
 // the graph is as the last completed step left it.
 class RunawayError : public std::runtime_error {
@@ -122,7 +131,7 @@ private:
 };
 
 DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
-                        const StepObserver& observer = {});
+                        const StepObserver& observer = {}, StepTracer* tracer = nullptr);
 
 // Helpers shared with tests: the selection rules, as specified above.
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "g2d/grammar_run.hpp"
+#include "g2d/trace.hpp"
 
 namespace g2d::rt {
 
@@ -25,6 +26,8 @@ struct RunRequest {
     std::optional<long long> maxElements; // the runaway guard (default kDefaultMaxElements)
     std::optional<double> timeoutSeconds; // wall time of the derivation
     bool keepPartial = false;             // on a bound or a run-time error, still write the graph of the last completed step
+    std::optional<std::string> traceHtml; // the derivation step by step, as a self-contained page
+    std::optional<std::string> traceJson; // the same, as data
 };
 
 // The bounds of one derivation.
@@ -47,8 +50,10 @@ struct DerivedRun {
 
 // Starts the grammar with `params` and derives it with a generator seeded by
 // `seed`. `progress` follows the derivation (for error messages).
+// With `trace`, every step is recorded.
 DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         const RunLimits& limits, const StepObserver& observer = {}, RunProgress* progress = nullptr);
+                         const RunLimits& limits, const StepObserver& observer = {}, RunProgress* progress = nullptr,
+                         TraceRecorder* trace = nullptr);
 
 // Runs and writes the outputs. Returns the exit code: 0 done, 1 a run-time
 // error, a resource bound hit (elements, time, the default step limit when

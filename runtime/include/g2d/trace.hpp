@@ -1,0 +1,70 @@
+#pragma once
+// A derivation as data, step by step (g2d run --trace / --trace-json): the
+// axiom, then per step the production and daughter, the matched elements,
+// and what the step deleted, added, moved and rewired. Deltas only, so a
+// million-step run stays a few bytes per step; the page thins its timeline
+// instead (see trace_page.cpp).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "g2d/derivation.hpp"
+#include "g2d/grammar_run.hpp"
+
+namespace g2d::rt {
+
+struct TraceNode {
+    std::uint32_t id;
+    int kind;
+    vec2 pos;
+};
+struct TraceEdge {
+    std::uint32_t id;
+    int kind;
+    std::uint32_t src, dst;
+};
+
+struct TraceStep {
+    long long step = 0;
+    std::string rule;
+    std::vector<std::uint32_t> daughters;           // one per rewrite (several in a parallel step)
+    std::vector<std::uint32_t> matchedNodes, matchedEdges;
+    std::vector<std::uint32_t> deletedNodes, deletedEdges;
+    std::vector<TraceNode> addedNodes, moved;       // moved: kept nodes at their new place
+    std::vector<TraceEdge> addedEdges, rewired;     // rewired: kept edges with new ends
+};
+
+class TraceRecorder : public StepTracer {
+public:
+    explicit TraceRecorder(GrammarRun& grammar) : grammar_(grammar) {}
+
+    // The axiom (call after GrammarRun::start).
+    void started();
+    void applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) override;
+    void stepDone(long long step, const Graph& g) override;
+
+    // The trace as JSON: kinds (with how each is drawn), the axiom, the steps
+    // (format in docs/trace.md). `stopped` says why the derivation ended.
+    std::string json(const std::string& grammarName, std::uint64_t seed, const std::string& stopped);
+
+private:
+    struct Pending {
+        std::uint32_t daughter;
+        std::vector<std::uint32_t> nodes, edges;
+    };
+    GrammarRun& grammar_;
+    std::vector<TraceNode> axiomNodes_;
+    std::vector<TraceEdge> axiomEdges_;
+    std::vector<DrawItem> axiomDrawing_;
+    std::vector<TraceStep> steps_;
+    std::vector<Pending> pending_;
+    // Before the step: the matched nodes' places and the edges at them (any may go).
+    std::vector<std::pair<std::uint32_t, vec2>> placesBefore_;
+    std::vector<TraceEdge> edgesBefore_;
+    std::size_t nodeCapacity_ = 0, edgeCapacity_ = 0;
+};
+
+// The self-contained page: the trace, the final SVG, and a player.
+std::string writeTracePage(const std::string& traceJson, const std::string& finalSvg, const std::string& title);
+
+}  // namespace g2d::rt

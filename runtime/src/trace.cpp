@@ -1,0 +1,169 @@
+#include "g2d/trace.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "g2d/json_writer.hpp"
+#include "g2d/value.hpp"
+
+namespace g2d::rt {
+
+namespace {
+
+std::string num(double x) { return formatNumber(x); }
+
+template <class T, class F>
+std::string array(const std::vector<T>& items, F&& each) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "," : "") + each(items[i]);
+    return out + "]";
+}
+
+std::string ids(const std::vector<std::uint32_t>& v) {
+    return array(v, [](std::uint32_t x) { return std::to_string(x); });
+}
+std::string nodes(const std::vector<TraceNode>& v) {
+    return array(v, [](const TraceNode& n) {
+        return "[" + std::to_string(n.id) + "," + std::to_string(n.kind) + "," + num(n.pos.x) + "," + num(n.pos.y) + "]";
+    });
+}
+std::string edges(const std::vector<TraceEdge>& v) {
+    return array(v, [](const TraceEdge& e) {
+        return "[" + std::to_string(e.id) + "," + std::to_string(e.kind) + "," + std::to_string(e.src) + "," +
+               std::to_string(e.dst) + "]";
+    });
+}
+
+// How a kind is drawn in the player: the resolved style of one of its
+// elements (tag, stroke, stroke width, fill, radius).
+std::string kindStyle(const DrawItem& it) {
+    auto prop = [&](const char* name) -> const Value* {
+        for (const auto& p : it.props)
+            if (p.prop == name) return &p.value;
+        return nullptr;
+    };
+    auto text = [&](const char* name, const char* fallback) {
+        const Value* v = prop(name);
+        return jsonString(v ? toString(*v) : std::string(fallback));
+    };
+    auto number = [&](const char* name, double fallback) {
+        const Value* v = prop(name);
+        if (v)
+            if (auto* d = std::get_if<double>(v)) return num(*d);
+        if (v)
+            if (auto* i = std::get_if<long long>(v)) return num(static_cast<double>(*i));
+        return num(fallback);
+    };
+    return std::string("{\"tag\":") + text("tag", it.isEdge ? "line" : "circle") + ",\"stroke\":" + text("stroke", "black") +
+           ",\"stroke_width\":" + number("stroke_width", it.isEdge ? 0.05 : 0.02) + ",\"fill\":" + text("fill", "none") +
+           ",\"r\":" + number("r", 0.1) + "}";
+}
+
+}  // namespace
+
+void TraceRecorder::started() {
+    const Graph& g = grammar_.graph();
+    for (NodeId n = 0; n < g.nodeCapacity(); ++n)
+        if (g.nodeAlive(n)) axiomNodes_.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
+    for (EdgeId e = 0; e < g.edgeCapacity(); ++e)
+        if (g.edgeAlive(e)) axiomEdges_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
+    axiomDrawing_ = grammar_.drawItems();
+    nodeCapacity_ = g.nodeCapacity();
+    edgeCapacity_ = g.edgeCapacity();
+}
+
+void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) {
+    const RuleInfo& info = grammar_.rules().info(rule);
+    Pending p;
+    p.daughter = static_cast<std::uint32_t>(daughter);
+    p.nodes.assign(m.nodes, m.nodes + info.nodeKinds.size());
+    p.edges.assign(m.edges, m.edges + info.edgeCount);
+    // What the rewrite may delete, move or rewire, as it is now.
+    for (NodeId n : p.nodes) {
+        placesBefore_.emplace_back(n, g.pos(n));
+        for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
+        for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
+    }
+    pending_.push_back(std::move(p));
+}
+
+void TraceRecorder::stepDone(long long step, const Graph& g) {
+    TraceStep s;
+    s.step = step;
+    s.rule = grammar_.currentRule();
+    for (const auto& p : pending_) {
+        s.daughters.push_back(p.daughter);
+        s.matchedNodes.insert(s.matchedNodes.end(), p.nodes.begin(), p.nodes.end());
+        s.matchedEdges.insert(s.matchedEdges.end(), p.edges.begin(), p.edges.end());
+    }
+    auto unique = [](std::vector<std::uint32_t>& v) {
+        std::sort(v.begin(), v.end());
+        v.erase(std::unique(v.begin(), v.end()), v.end());
+    };
+    unique(s.matchedNodes);
+    unique(s.matchedEdges);
+    // Ids are never reused: what is new lies past the old capacities.
+    for (NodeId n = static_cast<NodeId>(nodeCapacity_); n < g.nodeCapacity(); ++n)
+        if (g.nodeAlive(n)) s.addedNodes.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
+    for (EdgeId e = static_cast<EdgeId>(edgeCapacity_); e < g.edgeCapacity(); ++e)
+        if (g.edgeAlive(e)) s.addedEdges.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
+    std::sort(placesBefore_.begin(), placesBefore_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < placesBefore_.size(); ++i) {
+        const auto& [n, before] = placesBefore_[i];
+        if (i > 0 && placesBefore_[i - 1].first == n) continue;
+        if (!g.nodeAlive(n)) s.deletedNodes.push_back(n);
+        else if (g.pos(n) != before) s.moved.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
+    }
+    std::sort(edgesBefore_.begin(), edgesBefore_.end(), [](const TraceEdge& a, const TraceEdge& b) { return a.id < b.id; });
+    for (std::size_t i = 0; i < edgesBefore_.size(); ++i) {
+        const TraceEdge& e = edgesBefore_[i];
+        if (i > 0 && edgesBefore_[i - 1].id == e.id) continue;
+        if (!g.edgeAlive(e.id)) s.deletedEdges.push_back(e.id);
+        else if (g.source(e.id) != e.src || g.target(e.id) != e.dst)
+            s.rewired.push_back(TraceEdge{e.id, e.kind, g.source(e.id), g.target(e.id)});
+    }
+    steps_.push_back(std::move(s));
+    pending_.clear();
+    placesBefore_.clear();
+    edgesBefore_.clear();
+    nodeCapacity_ = g.nodeCapacity();
+    edgeCapacity_ = g.edgeCapacity();
+}
+
+std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t seed, const std::string& stopped) {
+    const JsonSchema& schema = grammar_.jsonSchema();
+    const std::vector<KindInfo>& kinds = grammar_.graph().kinds();
+    // Each kind's look: from the final drawing, else the axiom's, else the defaults.
+    std::map<int, std::string> styles;
+    const Graph& g = grammar_.graph();
+    auto note = [&](const std::vector<DrawItem>& items) {
+        for (const auto& it : items) {
+            const int kind = it.isEdge ? g.edgeKind(it.id) : g.nodeKind(it.id);
+            styles.emplace(kind, kindStyle(it));
+        }
+    };
+    note(grammar_.drawItems());
+    note(axiomDrawing_);
+    std::string out = "{\"format\":\"g2d-trace-1\",\"grammar\":" + jsonString(grammarName) + ",\"seed\":" + std::to_string(seed) +
+                      ",\"stopped\":" + jsonString(stopped) + ",\"kinds\":[";
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+        DrawItem fallback;
+        fallback.isEdge = kinds[k].isEdge;
+        const auto it = styles.find(static_cast<int>(k));
+        out += std::string(k ? "," : "") + "{\"name\":" + jsonString(k < schema.kindNames.size() ? schema.kindNames[k] : "") +
+               ",\"edge\":" + (kinds[k].isEdge ? "true" : "false") + ",\"directed\":" + (kinds[k].directed ? "true" : "false") +
+               ",\"style\":" + (it != styles.end() ? it->second : kindStyle(fallback)) + "}";
+    }
+    out += "],\"axiom\":{\"nodes\":" + nodes(axiomNodes_) + ",\"edges\":" + edges(axiomEdges_) + "},\"steps\":[";
+    for (std::size_t i = 0; i < steps_.size(); ++i) {
+        const TraceStep& s = steps_[i];
+        out += std::string(i ? ",\n" : "\n") + "{\"step\":" + std::to_string(s.step) + ",\"rule\":" + jsonString(s.rule) +
+               ",\"daughters\":" + ids(s.daughters) + ",\"matched\":{\"nodes\":" + ids(s.matchedNodes) + ",\"edges\":" +
+               ids(s.matchedEdges) + "},\"deleted\":{\"nodes\":" + ids(s.deletedNodes) + ",\"edges\":" + ids(s.deletedEdges) +
+               "},\"added\":{\"nodes\":" + nodes(s.addedNodes) + ",\"edges\":" + edges(s.addedEdges) + "},\"moved\":" +
+               nodes(s.moved) + ",\"rewired\":" + edges(s.rewired) + "}";
+    }
+    return out + "\n]}\n";
+}
+
+}  // namespace g2d::rt
