@@ -11,6 +11,7 @@ packages=(
   nlohmann-json3-dev
   libxml2-utils
   python3-networkx
+  chromium
 )
 
 # The editor tests and the VS Code package use Node.js packages from npm.

@@ -88,6 +88,7 @@ function marks(frame) {
     st.added.edges.forEach(([id]) => m.added.add("e" + id));
     st.moved.forEach(([id]) => m.moved.add("n" + id));
   }
+  for (const key of m.deleted) m.matched.delete(key);   // "matched" means matched and kept
   return m;
 }
 
@@ -147,7 +148,7 @@ function draw(frame) {
     info.textContent = (first === last ? `Step ${st.step}: production ${st.rule}, daughter ${daughters}` +
                                          (st.daughters.length > 1 ? ` (${st.daughters.length} rewrites at once)` : "")
                                        : `Steps ${steps[first].step}–${st.step}: ${[...rules].join(", ")}`) +
-      `. ${m.matched.size} matched, ${m.deleted.size} deleted, ${m.added.size} added, ${m.moved.size} moved. ` +
+      `. ${m.matched.size} matched and kept, ${m.deleted.size} deleted, ${m.added.size} added, ${m.moved.size} moved. ` +
       `Graph: ${state.nodes.size} nodes, ${state.edges.size} edges.`;
   }
   document.getElementById("slider").value = frame;
