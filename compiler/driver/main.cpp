@@ -6,6 +6,7 @@
 #include "driver/big_stack.hpp"
 #include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
+#include "driver/show_command.hpp"
 #include "lsp/server.hpp"
 
 #include <iostream>
@@ -48,6 +49,11 @@ int runCommandLine(int argc, char** argv) {
     run->add_option("--trace-json", traceJson, "Write the derivation step by step as JSON");
     run->add_flag("--keep-partial", runOptions.keepPartial,
                   "After an error or a bound, still write the graph of the last completed step");
+
+    auto* show = app.add_subcommand("show", "Draw every production (mother beside daughters) and the axiom");
+    g2d::ShowOptions showOptions;
+    show->add_option("FILE", showOptions.file, ".g2d grammar")->required();
+    show->add_option("-o,--output", showOptions.output, "OUT.html (a page) or OUT.svg")->required();
 
     auto* lsp = app.add_subcommand("lsp", "Serve the Language Server Protocol on stdin/stdout (for editors)");
     bool stdio = true;
@@ -99,6 +105,7 @@ int runCommandLine(int argc, char** argv) {
         if (!cxx.empty()) buildOptions.cxx = cxx;
         return g2d::runBuild(buildOptions);
     }
+    if (show->parsed()) return g2d::runShow(showOptions);
     if (lsp->parsed()) {
         std::ios::sync_with_stdio(false);
         return g2d::lsp::runLanguageServer(std::cin, std::cout);

@@ -1,0 +1,34 @@
+#include "driver/show_command.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
+
+#include "driver/compile.hpp"
+#include "g2d/atomic_file.hpp"
+#include "show/production_diagram.hpp"
+
+namespace g2d {
+
+int runShow(const ShowOptions& options) {
+    LoadOptions load;
+    load.importDirs = defaultImportDirs();
+    CompileResult compiled = compileFile(options.file, load);
+    const bool color = isatty(STDERR_FILENO) && !std::getenv("NO_COLOR");
+    for (const auto& d : compiled.diags.sorted()) std::fputs(renderText(d, compiled.sources, color).c_str(), stderr);
+    if (!compiled.program) return 1;
+    const std::string title = std::filesystem::path(options.file).filename().string();
+    const bool svg = std::filesystem::path(options.output).extension() == ".svg";
+    try {
+        rt::AtomicFile out(options.output);
+        out.commit(svg ? show::productionsSvg(*compiled.program, compiled.sources, title)
+                       : show::productionsPage(*compiled.program, compiled.sources, title));
+    } catch (const rt::OutputError& e) {
+        std::fprintf(stderr, "g2d show: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace g2d
