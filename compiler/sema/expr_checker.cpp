@@ -334,6 +334,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         if (env.deps) env.deps->insert(b.ref);
         return r;
     }
+    if (b.kind < 0 && !isNode) return std::nullopt;   // an edge whose kind was unknown (reported already)
     if (b.kind < 0) {
         g_.diags.error(member.span, "wildcard node `" + b.name + "` matches any kind, so it has no attribute `" +
                                         member.name + "`; only pos, age, id, degree, in_degree, out_degree can be read");

@@ -259,3 +259,10 @@ TEST_CASE("fixes from the language reference review", "[sema][review]") {
     auto cascade2 = compile(prelude() + "rule R { match { x: Q; } produce { x; } }");
     CHECK(g2d::test::diagnosticLines(cascade2) == std::vector<std::string>{"5:21: error: unknown node kind `Q`"});
 }
+
+TEST_CASE("an unknown edge kind is reported once, not again at each use", "[sema][names]") {
+    auto r = compile(prelude() + "rule R { match { a: P; b: P; old: a -[Q]-> b where old.n > 0; } produce { a; b; c: P at a.pos; a -[E { n = old.n }]-> c; } }");
+    const auto lines = g2d::test::diagnosticLines(r);
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0] == "5:39: error: unknown edge kind `Q`");
+}
