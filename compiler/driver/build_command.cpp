@@ -16,14 +16,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool colorStderr() { return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"); }
-
 std::optional<std::string> emitFor(const std::string& file, bool withMain = true,
                                    const std::string& factory = "g2d_make_grammar") {
-    LoadOptions load;
-    load.importDirs = defaultImportDirs();
-    CompileResult compiled = compileFile(file, load);
-    for (const auto& d : compiled.diags.sorted()) std::fputs(renderText(d, compiled.sources, colorStderr()).c_str(), stderr);
+    CompileResult compiled = compileAndReport(file);
     if (!compiled.program) return std::nullopt;
     emit::EmitOptions options;
     options.grammarFile = file;

@@ -1,6 +1,9 @@
 #include "driver/compile.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <unistd.h>
 
 #include "parse/parser.hpp"
 #include "sema/sema.hpp"
@@ -52,6 +55,15 @@ CompileResult compileSource(const std::string& path, const std::string& text, co
     r.syntax = std::move(imported);
     r.syntax.push_back(std::move(*main));
     return r;
+}
+
+CompileResult compileAndReport(const std::string& path) {
+    LoadOptions load;
+    load.importDirs = defaultImportDirs();
+    CompileResult compiled = compileFile(path, load);
+    const bool color = isatty(STDERR_FILENO) && !std::getenv("NO_COLOR");
+    for (const auto& d : compiled.diags.sorted()) std::fputs(renderText(d, compiled.sources, color).c_str(), stderr);
+    return compiled;
 }
 
 }  // namespace g2d

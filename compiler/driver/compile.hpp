@@ -22,4 +22,9 @@ CompileResult compileFile(const std::string& path, const LoadOptions& options);
 // relative to `path`'s folder).
 CompileResult compileSource(const std::string& path, const std::string& text, const LoadOptions& options);
 
+// For the commands that compile one grammar (run, build, emit-cpp, show):
+// compiles `path` with the default import folders and prints its
+// diagnostics to stderr (in colour on a terminal, unless NO_COLOR is set).
+CompileResult compileAndReport(const std::string& path);
+
 }  // namespace g2d

@@ -11,11 +11,7 @@
 namespace g2d {
 
 int runRun(const RunOptions& options) {
-    LoadOptions load;
-    load.importDirs = defaultImportDirs();
-    CompileResult compiled = compileFile(options.file, load);
-    const bool color = isatty(STDERR_FILENO) && !std::getenv("NO_COLOR");
-    for (const auto& d : compiled.diags.sorted()) std::fputs(renderText(d, compiled.sources, color).c_str(), stderr);
+    CompileResult compiled = compileAndReport(options.file);
     if (!compiled.program) return 1;
 
     rt::RunRequest request;

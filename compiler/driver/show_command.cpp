@@ -12,11 +12,7 @@
 namespace g2d {
 
 int runShow(const ShowOptions& options) {
-    LoadOptions load;
-    load.importDirs = defaultImportDirs();
-    CompileResult compiled = compileFile(options.file, load);
-    const bool color = isatty(STDERR_FILENO) && !std::getenv("NO_COLOR");
-    for (const auto& d : compiled.diags.sorted()) std::fputs(renderText(d, compiled.sources, color).c_str(), stderr);
+    CompileResult compiled = compileAndReport(options.file);
     if (!compiled.program) return 1;
     const std::string title = std::filesystem::path(options.file).filename().string();
     const bool svg = std::filesystem::path(options.output).extension() == ".svg";
