@@ -14,7 +14,8 @@ MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsInci
 
 void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
     Id id;
-    if (!free_.empty()) {
+    const bool reused = !free_.empty();
+    if (reused) {
         id = free_.back();
         free_.pop_back();
     } else {
@@ -25,7 +26,7 @@ void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
         if (byAge_) ageSum_.push_back(0);
     }
     std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width_];
-    std::copy(ids, ids + width_, p);
+    if (reused) std::copy(ids, ids + width_, p);   // a new id's ids were appended above
     livePos_[id] = static_cast<std::uint32_t>(live_.size());
     live_.push_back(id);
     for (int i = 0; i < nn_; ++i) {

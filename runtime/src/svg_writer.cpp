@@ -22,33 +22,33 @@ std::string xmlEscape(const std::string& s) {
     return out;
 }
 
-namespace {
-
-const Value* find(const DrawItem& it, const char* prop) {
+const Value* styleValue(const DrawItem& it, const char* prop) {
     for (const auto& p : it.props)
         if (p.prop == prop) return &p.value;
     return nullptr;
 }
 
-double number(const DrawItem& it, const char* prop, double fallback) {
-    const Value* v = find(it, prop);
+double styleNumber(const DrawItem& it, const char* prop, double fallback) {
+    const Value* v = styleValue(it, prop);
     if (!v) return fallback;
     if (auto* d = std::get_if<double>(v)) return *d;
     if (auto* i = std::get_if<long long>(v)) return static_cast<double>(*i);
     return fallback;
 }
 
-std::string text(const DrawItem& it, const char* prop, const std::string& fallback) {
-    const Value* v = find(it, prop);
+std::string styleText(const DrawItem& it, const char* prop, const std::string& fallback) {
+    const Value* v = styleValue(it, prop);
     return v ? toString(*v) : fallback;
 }
 
+namespace {
+
 bool truthy(const DrawItem& it, const char* prop) {
-    const Value* v = find(it, prop);
+    const Value* v = styleValue(it, prop);
     if (!v) return false;
     if (auto* b = std::get_if<bool>(v)) return *b;
     if (auto* s = std::get_if<std::string>(v)) return *s == "true";
-    return number(it, prop, 0) != 0;
+    return styleNumber(it, prop, 0) != 0;
 }
 
 bool isSpecial(const std::string& p) {
@@ -99,7 +99,7 @@ struct Box {
 
 std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>& defs) {
     std::stable_sort(items.begin(), items.end(), [](const DrawItem& a, const DrawItem& b) {
-        const double za = number(a, "z", 0), zb = number(b, "z", 0);
+        const double za = styleNumber(a, "z", 0), zb = styleNumber(b, "z", 0);
         if (za != zb) return za < zb;
         if (a.isEdge != b.isEdge) return a.isEdge;
         return a.id < b.id;
@@ -109,12 +109,12 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     bool arrows = false;
     std::string body;
     for (const auto& it : items) {
-        const std::string tag = text(it, "tag", it.isEdge ? "line" : "circle");
+        const std::string tag = styleText(it, "tag", it.isEdge ? "line" : "circle");
         if (tag == "none") continue;
-        const double stroke = number(it, "stroke_width", it.isEdge ? 0.05 : 0.02);
+        const double stroke = styleNumber(it, "stroke_width", it.isEdge ? 0.05 : 0.02);
         maxStroke = std::max(maxStroke, stroke);
         const vec2 c = it.isEdge ? (it.a + it.b) * 0.5 : it.a;
-        const double rotate = number(it, "rotate", 0);
+        const double rotate = styleNumber(it, "rotate", 0);
         std::string rotation = rotate != 0 ? " transform=\"rotate(" + num(rotate) + " " + num(c.x) + " " + num(c.y) + ")\"" : "";
         if (tag == "line" && it.isEdge) {
             box.add(it.a, 0);
@@ -125,30 +125,30 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
                     num(it.b.y) + "\"" + passThrough(it, {{"stroke", "black"}, {"stroke-width", "0.05"}}) + marker +
                     "/>\n";
         } else if (tag == "circle" || (tag == "line" && !it.isEdge)) {
-            const double r = number(it, "r", 0.1);
+            const double r = styleNumber(it, "r", 0.1);
             box.add(c, r);
             body += "<circle cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\" r=\"" + num(r) + "\"" +
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.02"}}) + "/>\n";
         } else if (tag == "rect") {
-            const double w = number(it, "width", 0.1), h = number(it, "height", 0.1);
+            const double w = styleNumber(it, "width", 0.1), h = styleNumber(it, "height", 0.1);
             box.add(c, std::hypot(w, h) / 2);
             body += "<rect x=\"" + num(c.x - w / 2) + "\" y=\"" + num(c.y - h / 2) + "\" width=\"" + num(w) +
                     "\" height=\"" + num(h) + "\"" + rotation + passThrough(it, {}) + "/>\n";
         } else if (tag == "path") {
             box.add(it.a, 0);
             if (it.isEdge) box.add(it.b, 0);
-            body += "<path d=\"" + xmlEscape(text(it, "d", "")) + "\"" +
+            body += "<path d=\"" + xmlEscape(styleText(it, "d", "")) + "\"" +
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.05"}}) + "/>\n";
         } else if (tag == "polyline") {
             box.add(it.a, 0);
             if (it.isEdge) box.add(it.b, 0);
-            body += "<polyline points=\"" + xmlEscape(text(it, "points", "")) + "\"" +
+            body += "<polyline points=\"" + xmlEscape(styleText(it, "points", "")) + "\"" +
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.05"}}) + "/>\n";
         } else if (tag == "image") {
-            const double w = number(it, "width", 1), h = number(it, "height", 1);
+            const double w = styleNumber(it, "width", 1), h = styleNumber(it, "height", 1);
             box.add(c, std::hypot(w, h) / 2);
             // Images and text are flipped back upright inside the y-up group.
-            body += "<image href=\"" + xmlEscape(text(it, "href", "")) + "\" x=\"" + num(-w / 2) + "\" y=\"" +
+            body += "<image href=\"" + xmlEscape(styleText(it, "href", "")) + "\" x=\"" + num(-w / 2) + "\" y=\"" +
                     num(-h / 2) + "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" transform=\"translate(" +
                     num(c.x) + " " + num(c.y) + ") rotate(" + num(rotate) + ") scale(1 -1)\"" + passThrough(it, {}) +
                     "/>\n";
@@ -156,7 +156,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
             box.add(c, 0);
             body += "<text transform=\"translate(" + num(c.x) + " " + num(c.y) + ") rotate(" + num(rotate) +
                     ") scale(1 -1)\"" + passThrough(it, {{"font-size", "0.5"}, {"text-anchor", "middle"}}) + ">" +
-                    xmlEscape(text(it, "text", "")) + "</text>\n";
+                    xmlEscape(styleText(it, "text", "")) + "</text>\n";
         }
     }
     double x0 = 0, y0 = 0, w = 1, h = 1;

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "g2d/json_writer.hpp"
+#include "g2d/svg_writer.hpp"
 #include "g2d/value.hpp"
 
 namespace g2d::rt {
@@ -37,26 +38,10 @@ std::string edges(const std::vector<TraceEdge>& v) {
 // How a kind is drawn in the player: the resolved style of one of its
 // elements (tag, stroke, stroke width, fill, radius).
 std::string kindStyle(const DrawItem& it) {
-    auto prop = [&](const char* name) -> const Value* {
-        for (const auto& p : it.props)
-            if (p.prop == name) return &p.value;
-        return nullptr;
-    };
-    auto text = [&](const char* name, const char* fallback) {
-        const Value* v = prop(name);
-        return jsonString(v ? toString(*v) : std::string(fallback));
-    };
-    auto number = [&](const char* name, double fallback) {
-        const Value* v = prop(name);
-        if (v)
-            if (auto* d = std::get_if<double>(v)) return num(*d);
-        if (v)
-            if (auto* i = std::get_if<long long>(v)) return num(static_cast<double>(*i));
-        return num(fallback);
-    };
-    return std::string("{\"tag\":") + text("tag", it.isEdge ? "line" : "circle") + ",\"stroke\":" + text("stroke", "black") +
-           ",\"stroke_width\":" + number("stroke_width", it.isEdge ? 0.05 : 0.02) + ",\"fill\":" + text("fill", "none") +
-           ",\"r\":" + number("r", 0.1) + "}";
+    return "{\"tag\":" + jsonString(styleText(it, "tag", it.isEdge ? "line" : "circle")) +
+           ",\"stroke\":" + jsonString(styleText(it, "stroke", "black")) +
+           ",\"stroke_width\":" + num(styleNumber(it, "stroke_width", it.isEdge ? 0.05 : 0.02)) +
+           ",\"fill\":" + jsonString(styleText(it, "fill", "none")) + ",\"r\":" + num(styleNumber(it, "r", 0.1)) + "}";
 }
 
 }  // namespace

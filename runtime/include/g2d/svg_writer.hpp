@@ -31,6 +31,12 @@ struct DrawItem {
 
 std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>& defs);
 
+// A resolved style property of an item (nullptr / the fallback when absent;
+// numbers accept int or float values). The trace player reads kinds' looks too.
+const Value* styleValue(const DrawItem& it, const char* prop);
+double styleNumber(const DrawItem& it, const char* prop, double fallback);
+std::string styleText(const DrawItem& it, const char* prop, const std::string& fallback);
+
 // XML-escapes text for attribute values and element content.
 std::string xmlEscape(const std::string& s);
 
