@@ -130,6 +130,19 @@ G2D
 expect_code 1 "$g2d" run overflow.g2d --no-svg
 grep -q '^overflow.g2d:4:49: error: integer overflow (in rule `Double`, step 63)$' err.txt || fail "integer overflow: $(cat err.txt)"
 
+# NaN and infinite positions are errors naming the rule and the step, interpreted and compiled alike
+printf 'node P;\naxiom { p: P at (0, 0); }\nlimit 3;\nrule N { match { p: P; } produce { p at (sqrt(-1), 0); } }\n' > nan.g2d
+printf 'node P;\naxiom { p: P at (0, 0); }\nlimit 3;\nrule I { match { p: P; } produce { p at (pow(10, 400), 0); } }\n' > inf.g2d
+expect_code 1 "$g2d" run nan.g2d -o nan.svg
+grep -qx 'nan.g2d:4:42: error: the result is not a number (NaN) (in rule `N`, step 1)' err.txt || fail "NaN position: $(cat err.txt)"
+[ -e nan.svg ] && fail "a NaN position left an output"
+expect_code 1 "$g2d" run inf.g2d -o inf.svg
+grep -qx 'inf.g2d:4:42: error: the result is infinite (in rule `I`, step 1)' err.txt || fail "infinite position: $(cat err.txt)"
+cp err.txt inf.interpreted.txt
+expect_code 0 "$g2d" build inf.g2d -o inf_program
+expect_code 1 ./inf_program -o inf.svg
+cmp -s err.txt inf.interpreted.txt || fail "compiled infinite-position error differs: $(cat err.txt)"
+
 # A numeric fault names the production and the step; --keep-partial writes the step before it
 cat > fault.g2d <<'G2D'
 node P { n: int = 3; }
