@@ -56,21 +56,41 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
         ++page.keys;
     }
     if (id >= placeOf_.size()) placeOf_.resize(std::max<std::size_t>(id + 1, placeOf_.size() * 2));
-    auto& ids = groups_[g].ids;
-    placeOf_[id] = Place{g, static_cast<std::uint32_t>(ids.size())};
-    ids.push_back(id);
+    Group& group = groups_[g];
+    placeOf_[id] = Place{g, group.size};
+    if (group.spill != kNone) {
+        spills_[group.spill].push_back(id);
+    } else if (group.size < 2) {
+        group.inl[group.size] = id;
+    } else {  // a third id: move to a spill list
+        if (freeSpills_.empty()) {
+            freeSpills_.push_back(static_cast<std::uint32_t>(spills_.size()));
+            spills_.emplace_back();
+        }
+        group.spill = freeSpills_.back();
+        freeSpills_.pop_back();
+        auto& list = spills_[group.spill];
+        list.assign(group.inl, group.inl + 2);
+        list.push_back(id);
+    }
+    ++group.size;
     ++count_;
 }
 
 void AgeBuckets::erase(std::uint32_t id) {
     const Place place = placeOf_[id];
-    auto& ids = groups_[place.group].ids;
-    const std::uint32_t moved = ids.back();
+    Group& group = groups_[place.group];
+    std::uint32_t* ids = idsOf(group);
+    const std::uint32_t moved = ids[group.size - 1];
     ids[place.pos] = moved;
     placeOf_[moved].pos = place.pos;
-    ids.pop_back();
+    if (group.spill != kNone) spills_[group.spill].pop_back();
+    if (--group.size == 0) {
+        if (group.spill != kNone) freeSpills_.push_back(group.spill);
+        group.spill = kNone;
+        releaseGroup(place.group);
+    }
     --count_;
-    if (ids.empty()) releaseGroup(place.group);
 }
 
 void AgeBuckets::releaseGroup(std::uint32_t group) {
@@ -83,7 +103,7 @@ void AgeBuckets::releaseGroup(std::uint32_t group) {
     if (--page.keys == 0) spare_.push_back(std::move(pages_[pageNo]));  // its heap entry goes lazily
 }
 
-const std::vector<std::uint32_t>& AgeBuckets::lowest() {
+std::span<const std::uint32_t> AgeBuckets::lowest() {
     while (!pages_[pageHeap_.front()]) {
         queued_[pageHeap_.front()] = false;
         std::pop_heap(pageHeap_.begin(), pageHeap_.end(), std::greater<>());
@@ -93,7 +113,8 @@ const std::vector<std::uint32_t>& AgeBuckets::lowest() {
     std::size_t w = 0;
     while (page.occupied[w] == 0) ++w;
     const std::size_t slot = w * 64 + static_cast<std::size_t>(std::countr_zero(page.occupied[w]));
-    return groups_[page.groupOf[slot]].ids;
+    Group& group = groups_[page.groupOf[slot]];
+    return {idsOf(group), group.size};
 }
 
 void AgeBuckets::clear() { *this = AgeBuckets(); }
@@ -105,7 +126,8 @@ std::size_t AgeBuckets::memoryBytes() const {
     for (const auto& p : pages_)
         if (p) bytes += sizeof(Page);
     bytes += spare_.size() * sizeof(Page);
-    for (const auto& g : groups_) bytes += g.ids.capacity() * 4;
+    bytes += spills_.capacity() * sizeof(spills_[0]) + freeSpills_.capacity() * 4;
+    for (const auto& list : spills_) bytes += list.capacity() * 4;
     return bytes;
 }
 

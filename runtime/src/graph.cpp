@@ -61,44 +61,10 @@ void Graph::clearAttrBlock(int kind, std::uint32_t slot) {
     for (std::size_t i = 0; i < defaults_[kind].size(); ++i) pool_[kind][attrIndex(kind, slot, static_cast<int>(i))] = Value{};
 }
 
-NodeId Graph::addNode(int kind, vec2 pos, long long age) {
-    std::vector<Value>* none = nullptr;
-    const auto id = static_cast<NodeId>(nodes_.size());
-    NodeRec rec;
-    rec.kind = static_cast<std::int16_t>(kind);
-    rec.pos = pos;
-    rec.age = age;
-    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, none);
-    rec.slotInKind = static_cast<std::uint32_t>(kindNodes_[kind].size());
-    rec.slotInAll = static_cast<std::uint32_t>(allNodes_.size());
-    kindNodes_[kind].push_back(id);
-    allNodes_.push_back(id);
-    nodes_.push_back(rec);
-    ++liveNodes_;
-    touchNode(id);
-    return id;
-}
-
 NodeId Graph::addNode(int kind, vec2 pos, long long age, std::vector<Value> attrs) {
     const NodeId id = addNode(kind, pos, age);
     for (std::size_t i = 0; i < attrs.size() && i < defaults_[kind].size(); ++i)
         pool_[kind][attrIndex(kind, nodes_[id].slot, static_cast<int>(i))] = std::move(attrs[i]);
-    return id;
-}
-
-EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
-    if (!nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("edge endpoint is not a live node");
-    const auto id = static_cast<EdgeId>(edges_.size());
-    EdgeRec rec;
-    rec.kind = static_cast<std::int16_t>(kind);
-    rec.src = src;
-    rec.dst = dst;
-    rec.age = age;
-    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
-    edges_.push_back(rec);
-    link(id);
-    ++liveEdges_;
-    touchEdge(id);
     return id;
 }
 
@@ -109,36 +75,12 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age, std::vect
     return id;
 }
 
-void Graph::link(EdgeId e) {
-    auto& rec = edges_[e];
-    rec.prevOut = kNoId;
-    rec.nextOut = nodes_[rec.src].firstOut;
-    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = e;
-    nodes_[rec.src].firstOut = e;
-    rec.prevIn = kNoId;
-    rec.nextIn = nodes_[rec.dst].firstIn;
-    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = e;
-    nodes_[rec.dst].firstIn = e;
-}
+void Graph::deadEndpoint() { throw std::logic_error("edge endpoint is not a live node"); }
 
-void Graph::unlink(EdgeId e) {
-    const auto& rec = edges_[e];
-    (rec.prevOut != kNoId ? edges_[rec.prevOut].nextOut : nodes_[rec.src].firstOut) = rec.nextOut;
-    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = rec.prevOut;
-    (rec.prevIn != kNoId ? edges_[rec.prevIn].nextIn : nodes_[rec.dst].firstIn) = rec.nextIn;
-    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = rec.prevIn;
-}
-
-void Graph::removeEdge(EdgeId e) {
-    auto& rec = edges_[e];
-    if (!rec.alive) return;
-    touchEdge(e);
-    unlink(e);
-    rec.alive = false;
+void Graph::dropEdgeExtras(EdgeRec& rec, EdgeId e) {
     clearAttrBlock(rec.kind, rec.slot);
     if (rec.styled) edgeStyles_.erase(e);
     rec.styled = false;
-    --liveEdges_;
 }
 
 void Graph::removeNode(NodeId n) {

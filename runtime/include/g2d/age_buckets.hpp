@@ -6,13 +6,14 @@
 // in a bitmap; a small min-heap orders the pages in use. Insert and erase are
 // O(1) (no hashing, no probing); finding the lowest key is O(1) plus
 // O(log pages) when a page empties. Nothing is allocated per id once warm:
-// emptied groups and pages are kept for reuse.
+// emptied groups, their spilled id lists and pages are kept for reuse.
 //
 // The order of the ids inside a group depends only on the sequence of
 // inserts and erases of that key (appended; an erased id's place is taken by
 // the group's last), so draws over a group are reproducible.
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace g2d::rt {
@@ -23,7 +24,7 @@ public:
     void erase(std::uint32_t id);
     bool empty() const { return count_ == 0; }
     // The ids with the lowest key; empty() must be false.
-    const std::vector<std::uint32_t>& lowest();
+    std::span<const std::uint32_t> lowest();
     void clear();
     std::size_t memoryBytes() const;
 
@@ -36,10 +37,16 @@ private:
         std::uint64_t occupied[kPageWords];
         std::uint32_t keys = 0;              // occupied keys
     };
+    // Up to two ids inline (most matches have a sum of their own, or share it
+    // with one other); more spill into a pooled vector, kept for reuse.
     struct Group {
         long long key = 0;
-        std::vector<std::uint32_t> ids;
+        std::uint32_t size = 0;
+        std::uint32_t spill = kNone;         // index into spills_, or kNone
+        std::uint32_t inl[2] = {0, 0};
     };
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+    std::uint32_t* idsOf(Group& g) { return g.spill == kNone ? g.inl : spills_[g.spill].data(); }
     struct Place {
         std::uint32_t group, pos;
     };
@@ -52,6 +59,8 @@ private:
     std::vector<bool> queued_;                   // per page number: in pageHeap_
     std::vector<Group> groups_;
     std::vector<std::uint32_t> freeGroups_;
+    std::vector<std::vector<std::uint32_t>> spills_;
+    std::vector<std::uint32_t> freeSpills_;
     std::vector<Place> placeOf_;                 // per id: its group and its place there
     std::size_t count_ = 0;
 };

@@ -78,11 +78,12 @@ public:
     // (the interpreter's defaults; compiled grammars keep none here).
     void setKindDefaults(int kind, std::vector<Value> defaults);
 
-    NodeId addNode(int kind, vec2 pos, long long age);
+    // The hot ones are defined inline below (they run several times a step).
+    inline NodeId addNode(int kind, vec2 pos, long long age);
     NodeId addNode(int kind, vec2 pos, long long age, std::vector<Value> attrs);
-    EdgeId addEdge(int kind, NodeId src, NodeId dst, long long age);
+    inline EdgeId addEdge(int kind, NodeId src, NodeId dst, long long age);
     EdgeId addEdge(int kind, NodeId src, NodeId dst, long long age, std::vector<Value> attrs);
-    void removeEdge(EdgeId e);
+    inline void removeEdge(EdgeId e);
     void removeNode(NodeId n);                  // with its incident (dangling) edges
     void reconnectEdge(EdgeId e, NodeId src, NodeId dst);
 
@@ -179,8 +180,10 @@ private:
     }
     std::uint32_t newAttrBlock(int kind, std::vector<Value>* attrs);
     void clearAttrBlock(int kind, std::uint32_t slot);
-    void link(EdgeId e);
-    void unlink(EdgeId e);
+    inline void link(EdgeId e);
+    inline void unlink(EdgeId e);
+    void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
+    [[noreturn]] static void deadEndpoint();
     static void setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v);
 
     std::vector<KindInfo> kinds_;
@@ -195,5 +198,70 @@ private:
     std::size_t liveNodes_ = 0, liveEdges_ = 0;
     std::vector<NodeId> dirty_;
 };
+
+NodeId Graph::addNode(int kind, vec2 pos, long long age) {
+    const auto id = static_cast<NodeId>(nodes_.size());
+    NodeRec rec;
+    rec.kind = static_cast<std::int16_t>(kind);
+    rec.pos = pos;
+    rec.age = age;
+    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
+    auto& ofKind = kindNodes_[kind];
+    rec.slotInKind = static_cast<std::uint32_t>(ofKind.size());
+    rec.slotInAll = static_cast<std::uint32_t>(allNodes_.size());
+    rec.dirty = kChangedItself;
+    ofKind.push_back(id);
+    allNodes_.push_back(id);
+    nodes_.push_back(rec);
+    dirty_.push_back(id);
+    ++liveNodes_;
+    return id;
+}
+
+EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
+    if (!nodeAlive(src) || !nodeAlive(dst)) deadEndpoint();
+    const auto id = static_cast<EdgeId>(edges_.size());
+    EdgeRec rec;
+    rec.kind = static_cast<std::int16_t>(kind);
+    rec.src = src;
+    rec.dst = dst;
+    rec.age = age;
+    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
+    edges_.push_back(rec);
+    link(id);
+    ++liveEdges_;
+    touchEdge(id);
+    return id;
+}
+
+void Graph::link(EdgeId e) {
+    auto& rec = edges_[e];
+    rec.prevOut = kNoId;
+    rec.nextOut = nodes_[rec.src].firstOut;
+    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = e;
+    nodes_[rec.src].firstOut = e;
+    rec.prevIn = kNoId;
+    rec.nextIn = nodes_[rec.dst].firstIn;
+    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = e;
+    nodes_[rec.dst].firstIn = e;
+}
+
+void Graph::unlink(EdgeId e) {
+    const auto& rec = edges_[e];
+    (rec.prevOut != kNoId ? edges_[rec.prevOut].nextOut : nodes_[rec.src].firstOut) = rec.nextOut;
+    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = rec.prevOut;
+    (rec.prevIn != kNoId ? edges_[rec.prevIn].nextIn : nodes_[rec.dst].firstIn) = rec.nextIn;
+    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = rec.prevIn;
+}
+
+void Graph::removeEdge(EdgeId e) {
+    auto& rec = edges_[e];
+    if (!rec.alive) return;
+    touchEdge(e);
+    unlink(e);
+    rec.alive = false;
+    if (rec.styled || rec.slot != kNoId) dropEdgeExtras(rec, e);
+    --liveEdges_;
+}
 
 }  // namespace g2d::rt
