@@ -13,14 +13,8 @@ import sys
 import tempfile
 
 g2d, src = sys.argv[1], sys.argv[2]
-failures = 0
-
-
-def check(cond, what):
-    global failures
-    if not cond:
-        failures += 1
-        print("FAIL:", what)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+from checks import check, finish  # noqa: E402
 
 
 class Client:
@@ -159,5 +153,4 @@ check(c.request("shutdown", None).get("result", "missing") is None, "shutdown")
 c.notify("exit", None)
 check(c.proc.wait(timeout=10) == 0, "exit status after shutdown")
 
-print("%d failed" % failures)
-sys.exit(1 if failures else 0)
+finish()

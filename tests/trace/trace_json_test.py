@@ -15,14 +15,8 @@ import tempfile
 
 g2d, src = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 work = tempfile.mkdtemp()
-failures = 0
-
-
-def check(cond, what):
-    global failures
-    if not cond:
-        failures += 1
-        print("FAIL:", what)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+from checks import check, finish  # noqa: E402
 
 
 def run(args, cwd=work):
@@ -123,5 +117,4 @@ page = open(os.path.join(work, "koch.html")).read()
 check(page.startswith("<!DOCTYPE html>") and '<script id="trace" type="application/json">{"format":"g2d-trace-1"' in page
       and "<svg" in page and "http" not in page.replace("http://www.w3.org/", ""), "the page is self-contained and holds the trace")
 
-print("%d failed" % failures)
-sys.exit(1 if failures else 0)
+finish()
