@@ -20,7 +20,7 @@ void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
         free_.pop_back();
     } else {
         id = static_cast<Id>(livePos_.size());
-        data_.insert(data_.end(), ids, ids + width_);
+        data_.append(ids, ids + width_);
         livePos_.push_back(kNoId);
         for (int i = 0; i < nn_; ++i) links_.push_back(Link{kNoId, kNoId});
         if (byAge_) ageSum_.push_back(0);
@@ -69,7 +69,7 @@ void MatchSet::remove(Id id) {
     free_.push_back(id);
 }
 
-void MatchSet::unlinkAll(NodeId n, std::vector<std::uint32_t>& heads) {
+void MatchSet::unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads) {
     if (n >= heads.size()) return;
     while (heads[n] != kNoId) remove(heads[n] / static_cast<std::uint32_t>(nn_));
 }

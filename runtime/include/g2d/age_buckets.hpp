@@ -16,6 +16,8 @@
 #include <span>
 #include <vector>
 
+#include "g2d/grow_array.hpp"
+
 namespace g2d::rt {
 
 class AgeBuckets {
@@ -57,11 +59,11 @@ private:
     std::vector<std::unique_ptr<Page>> spare_;
     std::vector<std::uint64_t> pageHeap_;        // min-heap of page numbers (may hold emptied ones)
     std::vector<bool> queued_;                   // per page number: in pageHeap_
-    std::vector<Group> groups_;
+    GrowArray<Group> groups_;
     std::vector<std::uint32_t> freeGroups_;
     std::vector<std::vector<std::uint32_t>> spills_;
     std::vector<std::uint32_t> freeSpills_;
-    std::vector<Place> placeOf_;                 // per id: its group and its place there
+    GrowArray<Place> placeOf_;                   // per id: its group and its place there
     std::size_t count_ = 0;
 };
 

@@ -9,12 +9,14 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "g2d/deadline.hpp"
 #include "g2d/derivation.hpp"
 #include "g2d/grammar_run.hpp"
 #include "g2d/graph.hpp"
+#include "g2d/grow_array.hpp"
 #include "g2d/json_writer.hpp"
 #include "g2d/ops.hpp"
 #include "g2d/placement.hpp"
@@ -61,7 +63,8 @@ inline long long toInt(double v) { return floatToInt(v); }
 inline long long toInt(bool v) { return v ? 1 : 0; }
 inline long long toInt(const std::string& v) { return parseInt(v); }
 
-// Typed attribute arrays: an element's slot indexes its kind's array.
+// Typed attribute arrays: an element's slot indexes its kind's array (one
+// that grows without copying when the attributes are plain numbers).
 template <class T>
 class Store {
 public:
@@ -74,7 +77,7 @@ public:
     void clear() { items_.clear(); }
 
 private:
-    std::vector<T> items_;
+    std::conditional_t<std::is_trivially_copyable_v<T>, GrowArray<T>, std::vector<T>> items_;
 };
 
 }  // namespace g2d::rt::compiled

@@ -15,10 +15,12 @@
 // Element classes are explicit (nodes, edges) so that faces can be added as
 // a third class with their own index and incidences.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "g2d/grow_array.hpp"
 #include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"
 
@@ -119,8 +121,8 @@ public:
     void setEdgeStyle(EdgeId e, const std::string& prop, Value v);
 
     // Live nodes of one kind, or of every kind; order is deterministic.
-    const std::vector<NodeId>& nodesOfKind(int kind) const { return kindNodes_[kind]; }
-    const std::vector<NodeId>& allNodes() const { return allNodes_; }
+    std::span<const NodeId> nodesOfKind(int kind) const { return {kindNodes_[kind].data(), kindNodes_[kind].size()}; }
+    std::span<const NodeId> allNodes() const { return {allNodes_.data(), allNodes_.size()}; }
 
     // Incidence, as intrusive lists (newest first):
     //   for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) ...
@@ -189,10 +191,11 @@ private:
     std::vector<KindInfo> kinds_;
     std::vector<std::vector<Value>> defaults_;   // per kind
     std::vector<std::vector<Value>> pool_;       // per kind: blocks of defaults_[kind].size()
-    std::vector<NodeRec> nodes_;
-    std::vector<EdgeRec> edges_;
-    std::vector<std::vector<NodeId>> kindNodes_;
-    std::vector<NodeId> allNodes_;
+    // The columns that grow with the graph never copy themselves (grow_array.hpp).
+    GrowArray<NodeRec> nodes_;
+    GrowArray<EdgeRec> edges_;
+    std::vector<GrowArray<NodeId>> kindNodes_;
+    GrowArray<NodeId> allNodes_;
     std::unordered_map<NodeId, std::vector<StyleOverride>> nodeStyles_;
     std::unordered_map<EdgeId, std::vector<StyleOverride>> edgeStyles_;
     std::size_t liveNodes_ = 0, liveEdges_ = 0;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "g2d/derivation.hpp"
+#include "g2d/grow_array.hpp"
 
 namespace g2d::rt {
 
@@ -50,7 +51,7 @@ private:
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
     std::vector<Shape> shapes_;
-    std::vector<std::uint32_t> seen_;
+    GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;
     MatchBuffer found_;

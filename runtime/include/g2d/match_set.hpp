@@ -16,6 +16,7 @@
 
 #include "g2d/age_buckets.hpp"
 #include "g2d/graph.hpp"
+#include "g2d/grow_array.hpp"
 #include "g2d/rng.hpp"
 
 namespace g2d::rt {
@@ -94,23 +95,23 @@ private:
     int nn_, ne_;
     std::size_t width_;
     bool byAge_;
-    std::vector<std::uint32_t> data_;        // per id: nn_ nodes, then ne_ edges
-    std::vector<std::uint32_t> livePos_;     // per id: position in live_, or kNoId
-    std::vector<Id> live_;
-    std::vector<Id> free_;
+    GrowArray<std::uint32_t> data_;          // per id: nn_ nodes, then ne_ edges
+    GrowArray<std::uint32_t> livePos_;       // per id: position in live_, or kNoId
+    GrowArray<Id> live_;
+    GrowArray<Id> free_;
     // Per node, the matches binding it: doubly linked lists through the
     // (match, position) pairs, numbered id * nn_ + position; one list for
     // positions that read incidences, one for the others.
     std::vector<std::uint8_t> reads_;        // per pattern node (bytes: read on every add)
-    std::vector<std::uint32_t> head_;        // per node: positions reading incidences
-    std::vector<std::uint32_t> headOther_;   // per node: the other positions
-    std::vector<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] != 0 ? head_ : headOther_; }
-    void unlinkAll(NodeId n, std::vector<std::uint32_t>& heads);
+    GrowArray<std::uint32_t> head_;          // per node: positions reading incidences
+    GrowArray<std::uint32_t> headOther_;     // per node: the other positions
+    GrowArray<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] != 0 ? head_ : headOther_; }
+    void unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads);
     struct Link {
         std::uint32_t next, prev;
     };
-    std::vector<Link> links_;                // per (match, position): one cache line, not two
-    std::vector<long long> ageSum_;          // per id (oldest only)
+    GrowArray<Link> links_;                // per (match, position): one cache line, not two
+    GrowArray<long long> ageSum_;          // per id (oldest only)
     AgeBuckets ageBuckets_;
 };
 

@@ -1,0 +1,129 @@
+#pragma once
+// A growable array of trivially copyable records, for the columns that grow
+// with the graph (node and edge records, kind indexes, match sets).
+//
+// std::vector grows by allocating a larger block and copying every element:
+// at millions of elements that reads and writes the whole array again (cache
+// misses that made a derivation step slower the larger the graph was) and
+// briefly holds both copies (peak memory). Here a large array lives in its
+// own anonymous memory mapping and grows with mremap, which moves page
+// tables, not records; only pages that are written take memory. Small arrays
+// use realloc. Elements are never constructed by default, only by the
+// operations that add them.
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <new>
+#include <type_traits>
+#include <utility>
+
+namespace g2d::rt {
+
+namespace grow_detail {
+// Resizes a block of `oldBytes` (nullptr/0 for none) to `newBytes`, keeping
+// its first `usedBytes`; throws std::bad_alloc. Blocks of at least
+// kMappedBytes are memory mappings, smaller ones come from malloc.
+void* resize(void* block, std::size_t oldBytes, std::size_t newBytes, std::size_t usedBytes);
+void release(void* block, std::size_t bytes) noexcept;
+inline constexpr std::size_t kMappedBytes = std::size_t{256} << 10;
+}  // namespace grow_detail
+
+template <class T>
+class GrowArray {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                  "GrowArray moves its records as bytes");
+
+public:
+    using value_type = T;
+    using iterator = T*;
+    using const_iterator = const T*;
+
+    GrowArray() = default;
+    GrowArray(const GrowArray& other) { append(other.begin(), other.end()); }
+    GrowArray(GrowArray&& other) noexcept
+        : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)),
+          capacity_(std::exchange(other.capacity_, 0)) {}
+    GrowArray& operator=(GrowArray other) noexcept {
+        swap(other);
+        return *this;
+    }
+    ~GrowArray() { grow_detail::release(data_, capacity_ * sizeof(T)); }
+    void swap(GrowArray& other) noexcept {
+        std::swap(data_, other.data_);
+        std::swap(size_, other.size_);
+        std::swap(capacity_, other.capacity_);
+    }
+
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    std::size_t capacity() const { return capacity_; }
+    T* data() { return data_; }
+    const T* data() const { return data_; }
+    T* begin() { return data_; }
+    T* end() { return data_ + size_; }
+    const T* begin() const { return data_; }
+    const T* end() const { return data_ + size_; }
+    T& operator[](std::size_t i) { return data_[i]; }
+    const T& operator[](std::size_t i) const { return data_[i]; }
+    T& back() { return data_[size_ - 1]; }
+    const T& back() const { return data_[size_ - 1]; }
+
+    void push_back(const T& value) {
+        if (size_ == capacity_) {
+            const T copy = value;   // `value` may live in this array
+            reserve(size_ + 1);
+            ::new (static_cast<void*>(data_ + size_)) T(copy);
+        } else {
+            ::new (static_cast<void*>(data_ + size_)) T(value);
+        }
+        ++size_;
+    }
+    template <class... Args>
+    T& emplace_back(Args&&... args) {
+        if (size_ == capacity_) reserve(size_ + 1);
+        T* slot = ::new (static_cast<void*>(data_ + size_)) T{std::forward<Args>(args)...};
+        ++size_;
+        return *slot;
+    }
+    // Appends [first, last), which must not point into this array.
+    void append(const T* first, const T* last) {
+        const auto n = static_cast<std::size_t>(last - first);
+        if (n == 0) return;
+        reserve(size_ + n);
+        std::memcpy(static_cast<void*>(data_ + size_), first, n * sizeof(T));
+        size_ += n;
+    }
+    void pop_back() { --size_; }
+    void clear() { size_ = 0; }
+    // Grows (new elements are copies of `fill`) or shrinks to `n` elements.
+    void resize(std::size_t n, const T& fill = T{}) {
+        const T copy = fill;
+        reserve(n);
+        for (std::size_t i = size_; i < n; ++i) ::new (static_cast<void*>(data_ + i)) T(copy);
+        size_ = n;
+    }
+    void assign(std::size_t n, const T& fill) {
+        clear();
+        resize(n, fill);
+    }
+    // At least `n` elements of room; grows geometrically.
+    void reserve(std::size_t n) {
+        if (n <= capacity_) return;
+        std::size_t wanted = std::max<std::size_t>({n, capacity_ * 2, 16});
+        if (wanted > max_size()) {
+            if (n > max_size()) throw std::bad_alloc();
+            wanted = max_size();
+        }
+        data_ = static_cast<T*>(
+            grow_detail::resize(data_, capacity_ * sizeof(T), wanted * sizeof(T), size_ * sizeof(T)));
+        capacity_ = wanted;
+    }
+    static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
+
+private:
+    T* data_ = nullptr;
+    std::size_t size_ = 0;
+    std::size_t capacity_ = 0;
+};
+
+}  // namespace g2d::rt

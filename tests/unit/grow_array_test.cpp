@@ -1,0 +1,85 @@
+// GrowArray: contents survive growth from a malloc'd block into a memory
+// mapping and across mremap-ed growth of the mapping; copies are deep;
+// resize, append, assign and pop_back behave as std::vector's.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "g2d/grow_array.hpp"
+
+using g2d::rt::GrowArray;
+
+namespace {
+struct Rec {
+    std::uint64_t a;
+    std::uint32_t b;
+};
+}  // namespace
+
+TEST_CASE("GrowArray keeps its elements while growing past the mapped size", "[grow_array]") {
+    GrowArray<Rec> arr;
+    std::vector<Rec> model;
+    // 3 M records of 16 bytes: 48 MB, many mremap growths after the switch at 256 KiB.
+    for (std::uint32_t i = 0; i < 3'000'000; ++i) {
+        const Rec r{i * 2654435761ull, i ^ 0x5a5a5a5au};
+        arr.push_back(r);
+        model.push_back(r);
+        if ((i & (i + 1)) == 0) {   // at every power of two minus one: compare all
+            REQUIRE(arr.size() == model.size());
+            for (std::size_t k = 0; k < model.size(); ++k) {
+                REQUIRE(arr[k].a == model[k].a);
+                REQUIRE(arr[k].b == model[k].b);
+            }
+        }
+    }
+    REQUIRE(arr.capacity() >= arr.size());
+    REQUIRE(arr.back().b == model.back().b);
+    std::size_t mismatches = 0;
+    for (std::size_t k = 0; k < model.size(); ++k) mismatches += arr[k].a != model[k].a || arr[k].b != model[k].b;
+    REQUIRE(mismatches == 0);
+}
+
+TEST_CASE("GrowArray copies are deep and moves leave the source empty", "[grow_array]") {
+    GrowArray<std::uint32_t> big;
+    for (std::uint32_t i = 0; i < 200'000; ++i) big.push_back(i);   // 800 KB: mapped
+    GrowArray<std::uint32_t> copy = big;
+    copy[7] = 99;
+    REQUIRE(big[7] == 7);
+    REQUIRE(copy.size() == 200'000);
+    REQUIRE(copy[199'999] == 199'999);
+    GrowArray<std::uint32_t> moved = std::move(copy);
+    REQUIRE(copy.empty());
+    REQUIRE(moved[7] == 99);
+    GrowArray<std::uint32_t> small;
+    small.push_back(1);
+    small = big;                      // small (malloc'd) replaced by a mapped copy
+    REQUIRE(small.size() == big.size());
+    REQUIRE(small[123'456] == 123'456);
+    big = GrowArray<std::uint32_t>{};  // mapped replaced by empty
+    REQUIRE(big.empty());
+}
+
+TEST_CASE("GrowArray resize, append, assign, pop_back and self push_back", "[grow_array]") {
+    GrowArray<int> arr;
+    arr.resize(5, 3);
+    REQUIRE(std::vector<int>(arr.begin(), arr.end()) == std::vector<int>{3, 3, 3, 3, 3});
+    const int more[] = {1, 2};
+    arr.append(more, more + 2);
+    arr.pop_back();
+    REQUIRE(std::vector<int>(arr.begin(), arr.end()) == std::vector<int>{3, 3, 3, 3, 3, 1});
+    arr.resize(2);
+    REQUIRE(arr.size() == 2);
+    arr.resize(4);                    // new elements are value-initialised
+    REQUIRE(arr[3] == 0);
+    arr.assign(3, 8);
+    REQUIRE(std::vector<int>(arr.begin(), arr.end()) == std::vector<int>{8, 8, 8});
+    // Pushing an element of the array itself while it grows.
+    GrowArray<int> self;
+    self.push_back(42);
+    for (int i = 0; i < 100'000; ++i) self.push_back(self[0]);
+    REQUIRE(self.size() == 100'001);
+    REQUIRE(self[100'000] == 42);
+    arr.clear();
+    REQUIRE(arr.empty());
+}
