@@ -330,6 +330,10 @@ private:
             return t + "                default: break;\n                }\n";
         });
         out += "            (void)node; (void)host; (void)g; (void)out;\n" + catchOp + "    }\n\n";
+        out += "    void repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer&) override {\n" + names;
+        out += "        current_ = names[rule];\n        try {\n";
+        out += perRule("            ", [&](std::size_t r) { return "                repair_" + str(static_cast<long long>(r)) + "(g, area, set);\n"; });
+        out += "            (void)g; (void)area; (void)set;\n" + catchOp + "    }\n\n";
         out += "    void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& w) const override {\n";
         out += perDaughter("        ", "writes_@(m, w)");
         out += "        (void)daughter; (void)m; (void)w;\n    }\n\n";

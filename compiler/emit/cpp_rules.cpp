@@ -19,6 +19,7 @@ public:
         std::string out;
         out += matcher(-1);
         for (std::size_t a = 0; a < r_.nodes.size(); ++a) out += matcher(static_cast<int>(a));
+        out += repair();
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) out += nac(static_cast<int>(k));
         for (std::size_t d = 0; d < r_.daughters.size(); ++d) {
             out += writeSet(static_cast<int>(d));
@@ -210,6 +211,36 @@ private:
         (void)indent;
         body.replace(at, 12, "if (" + nacTest + ") " + push + "\n");
         return out + body + "    }\n\n";
+    }
+
+    bool readsIncidence(int p) const { return r_.readsIncidence.empty() || r_.readsIncidence[static_cast<std::size_t>(p)]; }
+
+    // RuleSet::repair for this rule: the anchored searches inlined, in the
+    // generic loop's order (area nodes, then pattern nodes), adding straight
+    // into the match set.
+    std::string repair() {
+        std::string out = "    void repair_" + ri_ + "(const Graph& g, const RepairArea& area, MatchSet& set) {\n";
+        out += "        NodeId n[" + arrays() + "];\n";
+        std::string nacTest = "true";
+        for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
+        out += "        for (const NodeId h : area.nodes) {\n            if (!g.nodeAlive(h)) continue;\n";
+        out += "            const bool full = area.full(h);\n            const int hk = g.nodeKind(h);\n            (void)full;\n            (void)hk;\n";
+        for (int p = 0; p < static_cast<int>(r_.nodes.size()); ++p) {
+            std::string cond = readsIncidence(p) ? "true" : "full";
+            if (r_.nodes[p].kind >= 0) cond += " && hk == " + str(r_.nodes[p].kind);
+            out += "            if (" + cond + ") {\n";
+            out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
+            out += "                n[" + str(p) + "] = h;\n";
+            // Kept only from the first of its anchors that is searched.
+            std::string first;
+            for (int q = 0; q < p; ++q)
+                first += " && !area.searched(" + std::string(readsIncidence(q) ? "true" : "false") + ", n[" + str(q) + "])";
+            std::string body;
+            steps(r_.anchoredPlans[p], 0, nullptr, {p}, {}, "@@COMPLETE@@", body, "                ");
+            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, g);\n");
+            out += body + "            }\n";
+        }
+        return out + "        }\n    }\n\n";
     }
 
     std::string nac(int k) {

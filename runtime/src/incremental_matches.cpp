@@ -11,11 +11,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
         sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence);
-        Shape shape;
-        shape.radius = info.radius;
-        shape.kinds = info.nodeKinds;
-        for (int p = 0; p < nn; ++p) shape.reads.push_back(sets_.back().readsIncidence(p) ? 1 : 0);
-        shapes_.push_back(std::move(shape));
+        radius_.push_back(info.radius);
         found_.reset(nn, info.edgeCount);
         rules.findMatches(r, g, found_);
         for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
@@ -62,9 +58,8 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
                                 const std::vector<NodeId>& edgesOnly) {
     if (itself.empty() && edgesOnly.empty()) return;
     for (std::size_t r = 0; r < sets_.size(); ++r) {
-        const Shape& shape = shapes_[r];
         MatchSet& set = sets_[r];
-        if (shape.radius < 0) {
+        if (radius_[r] < 0) {
             // Not local: find them all again.
             set.clear();
             found_.reset(set.nodes(), set.edges());
@@ -72,30 +67,30 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
             continue;
         }
-        region(g, itself, edgesOnly, shape.radius);
+        region(g, itself, edgesOnly, radius_[r]);
         for (NodeId n : area_) set.removeTouching(n, !fully(n));
-        const int nn = set.nodes();
-        const std::uint8_t* reads = shape.reads.data();
-        // Whether the anchored search for pattern node q at host h runs.
-        auto searched = [&](int q, NodeId h) {
-            const std::uint32_t s = seen_[h];
-            return (s >> 1) == mark_ && ((s & 1) != 0 || reads[q] != 0);
-        };
-        for (NodeId h : area_) {
-            if (!g.nodeAlive(h)) continue;
-            for (int p = 0; p < nn; ++p) {
-                if (!searched(p, h)) continue;
-                const int kind = shape.kinds[static_cast<std::size_t>(p)];
-                if (kind >= 0 && kind != g.nodeKind(h)) continue;
-                found_.reset(nn, set.edges());
-                rules_.findAnchored(r, g, p, h, found_);
-                for (std::size_t i = 0; i < found_.size(); ++i) {
-                    const std::uint32_t* ids = found_.ids(i);
-                    // Keep it only from the first of its anchors that is searched.
-                    bool first = true;
-                    for (int q = 0; q < p && first; ++q) first = !searched(q, ids[q]);
-                    if (first) set.add(ids, g);
-                }
+        rules_.repair(r, g, RepairArea{area_, seen_.data(), mark_}, set, found_);
+    }
+}
+
+void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer& scratch) {
+    const std::vector<int>& kinds = info(rule).nodeKinds;
+    const int nn = set.nodes();
+    for (NodeId h : area.nodes) {
+        if (!g.nodeAlive(h)) continue;
+        const bool full = area.full(h);
+        for (int p = 0; p < nn; ++p) {
+            if (!full && !set.readsIncidence(p)) continue;
+            const int kind = kinds[static_cast<std::size_t>(p)];
+            if (kind >= 0 && kind != g.nodeKind(h)) continue;
+            scratch.reset(nn, set.edges());
+            findAnchored(rule, g, p, h, scratch);
+            for (std::size_t i = 0; i < scratch.size(); ++i) {
+                const std::uint32_t* ids = scratch.ids(i);
+                // Keep it only from the first of its anchors that is searched.
+                bool first = true;
+                for (int q = 0; q < p && first; ++q) first = !area.searched(set.readsIncidence(q), ids[q]);
+                if (first) set.add(ids, g);
             }
         }
     }

@@ -12,21 +12,23 @@ MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsInci
     for (bool r : readsIncidence) reads_.push_back(r ? 1 : 0);
 }
 
-void MatchSet::add(const std::uint32_t* ids, const Graph& g) {
+void MatchSet::add(const std::uint32_t* ids, const Graph& g) { add(ids, ids + nn_, g); }
+
+void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
     Id id;
-    const bool reused = !free_.empty();
-    if (reused) {
+    if (!free_.empty()) {
         id = free_.back();
         free_.pop_back();
     } else {
         id = static_cast<Id>(livePos_.size());
-        data_.append(ids, ids + width_);
+        data_.resize(data_.size() + width_);
         livePos_.push_back(kNoId);
         for (int i = 0; i < nn_; ++i) links_.push_back(Link{kNoId, kNoId});
         if (byAge_) ageSum_.push_back(0);
     }
     std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width_];
-    if (reused) std::copy(ids, ids + width_, p);   // a new id's ids were appended above
+    for (int i = 0; i < nn_; ++i) p[i] = nodes[i];
+    for (int i = 0; i < ne_; ++i) p[nn_ + i] = edges[i];
     livePos_[id] = static_cast<std::uint32_t>(live_.size());
     live_.push_back(id);
     for (int i = 0; i < nn_; ++i) {

@@ -20,7 +20,7 @@ struct Rec {
 TEST_CASE("GrowArray keeps its elements while growing past the mapped size", "[grow_array]") {
     GrowArray<Rec> arr;
     std::vector<Rec> model;
-    // 3 M records of 16 bytes: 48 MB, many mremap growths after the switch at 256 KiB.
+    // 3 M records of 16 bytes: 48 MB, many mremap growths after the switch to a mapping.
     for (std::uint32_t i = 0; i < 3'000'000; ++i) {
         const Rec r{i * 2654435761ull, i ^ 0x5a5a5a5au};
         arr.push_back(r);

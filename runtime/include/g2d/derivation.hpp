@@ -29,6 +29,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "g2d/graph.hpp"
@@ -56,6 +57,25 @@ struct RuleInfo {
     std::vector<bool> readsIncidence;
 };
 
+// The nodes around a step's changes whose matches a rule finds again
+// (IncrementalMatches): every node of `nodes` is marked in `seen` as
+// mark * 2 + 1 (search it at every pattern node) or mark * 2 (only its edges
+// changed: search it at the pattern nodes that read incidences).
+struct RepairArea {
+    std::span<const NodeId> nodes;
+    const std::uint32_t* seen = nullptr;
+    std::uint32_t mark = 0;
+    // Whether host `h` is searched at a pattern node (`reads`: that node reads
+    // incidences). A match found from several anchors is kept only from the
+    // first of its pattern nodes whose host is searched.
+    bool searched(bool reads, NodeId h) const {
+        const std::uint32_t s = seen[h];
+        return (s >> 1) == mark && ((s & 1) != 0 || reads);
+    }
+    // For a node of `nodes`: whether it is searched at every pattern node.
+    bool full(NodeId h) const { return (seen[h] & 1) != 0; }
+};
+
 // Elements a chosen daughter deletes or changes (for parallel steps).
 struct WriteSet {
     std::vector<NodeId> nodes;
@@ -76,6 +96,12 @@ public:
     virtual void findMatches(std::size_t rule, const Graph& g, MatchBuffer& out) = 0;
     // Every match of `rule` that binds pattern node `node` to host node `host`.
     virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out) = 0;
+    // Adds to `set` every match of `rule` that binds a node of `area`, each
+    // once, in the order of the area's nodes, then pattern nodes, then
+    // findAnchored's order (so every back end fills the set alike). This one
+    // runs findAnchored per (node, pattern node) through `scratch`;
+    // generated code replaces it with inlined searches.
+    virtual void repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer& scratch);
     // What applying `daughter` to `m` deletes or changes, appended to `out`.
     virtual void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& out) const = 0;
     // Evaluates everything the daughter computes, on the graph as it is now

@@ -25,7 +25,7 @@ namespace grow_detail {
 // kMappedBytes are memory mappings, smaller ones come from malloc.
 void* resize(void* block, std::size_t oldBytes, std::size_t newBytes, std::size_t usedBytes);
 void release(void* block, std::size_t bytes) noexcept;
-inline constexpr std::size_t kMappedBytes = std::size_t{256} << 10;
+inline constexpr std::size_t kMappedBytes = std::size_t{64} << 10;
 }  // namespace grow_detail
 
 template <class T>

@@ -41,16 +41,9 @@ private:
     bool inArea(NodeId n) const { return (seen_[n] >> 1) == mark_; }
     bool fully(NodeId n) const { return (seen_[n] & 1) != 0; }
 
-    // What the repair loop reads of each rule, copied out of RuleInfo.
-    struct Shape {
-        int radius = 0;
-        std::vector<int> kinds;              // per pattern node; -1: any
-        std::vector<std::uint8_t> reads;     // per pattern node: reads incidences
-    };
-
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
-    std::vector<Shape> shapes_;
+    std::vector<int> radius_;                // per rule (RuleInfo::radius)
     GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;

@@ -69,6 +69,7 @@ public:
 
     // Adds a match (nodes, then edges); the caller guarantees it is not there yet.
     void add(const std::uint32_t* ids, const Graph& g);
+    void add(const NodeId* nodes, const EdgeId* edges, const Graph& g);
     // Removes every match that binds node `n`, or (incidenceOnly) every match
     // binding it at a pattern node that reads incidences.
     void removeTouching(NodeId n, bool incidenceOnly = false);
