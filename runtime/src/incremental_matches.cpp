@@ -15,7 +15,9 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         found_.reset(nn, info.edgeCount);
         rules.findMatches(r, g, found_);
         for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
+        byRadius_.push_back(r);
     }
+    std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
 }
 
 void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itself,
@@ -57,7 +59,8 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
 void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
                                 const std::vector<NodeId>& edgesOnly) {
     if (itself.empty() && edgesOnly.empty()) return;
-    for (std::size_t r = 0; r < sets_.size(); ++r) {
+    int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
+    for (const std::size_t r : byRadius_) {
         MatchSet& set = sets_[r];
         if (radius_[r] < 0) {
             // Not local: find them all again.
@@ -67,7 +70,10 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
             continue;
         }
-        region(g, itself, edgesOnly, radius_[r]);
+        if (radius_[r] != areaRadius) {
+            region(g, itself, edgesOnly, radius_[r]);
+            areaRadius = radius_[r];
+        }
         for (NodeId n : area_) set.removeTouching(n, !fully(n));
         rules_.repair(r, g, RepairArea{area_, seen_.data(), mark_}, set, found_);
     }

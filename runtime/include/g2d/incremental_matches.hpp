@@ -44,6 +44,8 @@ private:
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
+    // The rules by radius (stable), so that rules of one radius share one area.
+    std::vector<std::size_t> byRadius_;
     GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;
