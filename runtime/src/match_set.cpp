@@ -1,15 +1,23 @@
 #include "g2d/match_set.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 namespace g2d::rt {
 
 MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsIncidence)
-    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)), byAge_(byAge) {
+    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)),
+      stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 2 : 0)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
     if (readsIncidence.size() != static_cast<std::size_t>(nodes)) readsIncidence.assign(static_cast<std::size_t>(nodes), true);
     for (bool r : readsIncidence) reads_.push_back(r ? 1 : 0);
+}
+
+long long MatchSet::ageSum(Id id) const {
+    long long sum;
+    std::memcpy(&sum, data(id) + stride_ - 2, sizeof sum);
+    return sum;
 }
 
 void MatchSet::add(const std::uint32_t* ids, const Graph& g) { add(ids, ids + nn_, g); }
@@ -20,60 +28,61 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
         id = free_.back();
         free_.pop_back();
     } else {
-        id = static_cast<Id>(livePos_.size());
-        data_.resize(data_.size() + width_);
-        livePos_.push_back(kNoId);
-        for (int i = 0; i < nn_; ++i) links_.push_back(Link{kNoId, kNoId});
-        if (byAge_) ageSum_.push_back(0);
+        // Link numbers are 32-bit word offsets.
+        if (rec_.size() + 2 * stride_ > 0xffffffffu) throw std::length_error("too many matches of one rule (over 4 G words)");
+        id = static_cast<Id>(rec_.size() / stride_);
+        rec_.resize(rec_.size() + stride_);
     }
-    std::uint32_t* p = &data_[static_cast<std::size_t>(id) * width_];
+    std::uint32_t* p = data(id);
     for (int i = 0; i < nn_; ++i) p[i] = nodes[i];
     for (int i = 0; i < ne_; ++i) p[nn_ + i] = edges[i];
-    livePos_[id] = static_cast<std::uint32_t>(live_.size());
+    p[width_] = static_cast<std::uint32_t>(live_.size());
     live_.push_back(id);
+    std::uint32_t* links = p + width_ + 1;
     for (int i = 0; i < nn_; ++i) {
         const NodeId n = p[i];
         auto& heads = headFor(i);
         if (n >= heads.size()) heads.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1) + heads.size() / 2, kNoId);
-        const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
-        links_[link].next = heads[n];
-        links_[link].prev = kNoId;
-        if (heads[n] != kNoId) links_[heads[n]].prev = link;
+        const std::uint32_t link = linkOf(id, i);
+        links[2 * i] = heads[n];
+        links[2 * i + 1] = kNoId;
+        if (heads[n] != kNoId) rec_[heads[n] + 1] = link;
         heads[n] = link;
     }
     if (byAge_) {
         long long sum = 0;
         for (int i = 0; i < nn_; ++i) sum += g.nodeAge(p[i]);
         for (int i = 0; i < ne_; ++i) sum += g.edgeAge(p[nn_ + i]);
-        ageSum_[id] = sum;
+        std::memcpy(p + stride_ - 2, &sum, sizeof sum);
         ageBuckets_.insert(id, sum);
     }
 }
 
 void MatchSet::remove(Id id) {
-    const std::uint32_t* p = data(id);
+    std::uint32_t* p = data(id);
+    const std::uint32_t* links = p + width_ + 1;
     for (int i = 0; i < nn_; ++i) {
-        const std::uint32_t link = id * static_cast<std::uint32_t>(nn_) + static_cast<std::uint32_t>(i);
-        if (links_[link].prev != kNoId)
-            links_[links_[link].prev].next = links_[link].next;
+        const std::uint32_t next = links[2 * i], prev = links[2 * i + 1];
+        if (prev != kNoId)
+            rec_[prev] = next;
         else
-            headFor(i)[p[i]] = links_[link].next;
-        if (links_[link].next != kNoId) links_[links_[link].next].prev = links_[link].prev;
+            headFor(i)[p[i]] = next;
+        if (next != kNoId) rec_[next + 1] = prev;
     }
     // Out of the live order: swap with the last.
-    const std::uint32_t pos = livePos_[id];
+    const std::uint32_t pos = p[width_];
     const Id last = live_.back();
     live_[pos] = last;
-    livePos_[last] = pos;
+    livePos(last) = pos;
     live_.pop_back();
-    livePos_[id] = kNoId;
+    p[width_] = kNoId;
     if (byAge_) ageBuckets_.erase(id);
     free_.push_back(id);
 }
 
 void MatchSet::unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads) {
     if (n >= heads.size()) return;
-    while (heads[n] != kNoId) remove(heads[n] / static_cast<std::uint32_t>(nn_));
+    while (heads[n] != kNoId) remove(static_cast<Id>(heads[n] / stride_));
 }
 
 void MatchSet::removeTouching(NodeId n, bool incidenceOnly) {
@@ -82,14 +91,11 @@ void MatchSet::removeTouching(NodeId n, bool incidenceOnly) {
 }
 
 void MatchSet::clear() {
-    data_.clear();
-    livePos_.clear();
+    rec_.clear();
     live_.clear();
     free_.clear();
     head_.clear();
     headOther_.clear();
-    links_.clear();
-    ageSum_.clear();
     ageBuckets_.clear();
 }
 
@@ -105,8 +111,8 @@ Match MatchSet::pickOldest(Rng& rng) {
 }
 
 std::size_t MatchSet::memoryBytes() const {
-    return (data_.capacity() + livePos_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() + headOther_.capacity() +
-            links_.capacity() * 2) * 4 + ageSum_.capacity() * 8 + ageBuckets_.memoryBytes();
+    return (rec_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() + headOther_.capacity()) * 4 +
+           ageBuckets_.memoryBytes();
 }
 
 }  // namespace g2d::rt

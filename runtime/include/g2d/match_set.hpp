@@ -82,37 +82,43 @@ public:
     const std::uint32_t* idsAt(std::size_t i) const { return data(live_[i]); }
     int nodes() const { return nn_; }
     int edges() const { return ne_; }
-    long long ageSumAt(std::size_t i) const { return ageSum_[live_[i]]; }
+    long long ageSumAt(std::size_t i) const { return ageSum(live_[i]); }
     Match pickRandom(Rng& rng) const;
     Match pickOldest(Rng& rng);
     std::size_t memoryBytes() const;
 
 private:
     using Id = std::uint32_t;
-    const std::uint32_t* data(Id id) const { return &data_[static_cast<std::size_t>(id) * width_]; }
+    // One record per match id, so that dropping a match touches one place:
+    //   words [0, width_)            its node ids, then its edge ids
+    //   word  width_                 its position in live_ (kNoId: free)
+    //   words width_ + 1 + 2i, +1    next / prev in the list of matches
+    //                                binding its node i (see below)
+    //   2 words after (oldest only)  its age sum
+    // The per-node lists are doubly linked through those link words and
+    // numbered by the word offset of their `next` word; each node heads one
+    // list for positions that read incidences and one for the others.
+    const std::uint32_t* data(Id id) const { return &rec_[static_cast<std::size_t>(id) * stride_]; }
+    std::uint32_t* data(Id id) { return &rec_[static_cast<std::size_t>(id) * stride_]; }
+    std::uint32_t& livePos(Id id) { return rec_[static_cast<std::size_t>(id) * stride_ + width_]; }
+    std::uint32_t linkOf(Id id, int position) const {
+        return static_cast<std::uint32_t>(static_cast<std::size_t>(id) * stride_ + width_ + 1 + 2 * static_cast<std::size_t>(position));
+    }
+    long long ageSum(Id id) const;
     Match view(Id id) const { return Match{data(id), data(id) + nn_}; }
     void remove(Id id);
 
     int nn_, ne_;
-    std::size_t width_;
+    std::size_t width_, stride_;
     bool byAge_;
-    GrowArray<std::uint32_t> data_;          // per id: nn_ nodes, then ne_ edges
-    GrowArray<std::uint32_t> livePos_;       // per id: position in live_, or kNoId
+    GrowArray<std::uint32_t> rec_;           // stride_ words per id
     GrowArray<Id> live_;
     GrowArray<Id> free_;
-    // Per node, the matches binding it: doubly linked lists through the
-    // (match, position) pairs, numbered id * nn_ + position; one list for
-    // positions that read incidences, one for the others.
     std::vector<std::uint8_t> reads_;        // per pattern node (bytes: read on every add)
     GrowArray<std::uint32_t> head_;          // per node: positions reading incidences
     GrowArray<std::uint32_t> headOther_;     // per node: the other positions
     GrowArray<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] != 0 ? head_ : headOther_; }
     void unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads);
-    struct Link {
-        std::uint32_t next, prev;
-    };
-    GrowArray<Link> links_;                // per (match, position): one cache line, not two
-    GrowArray<long long> ageSum_;          // per id (oldest only)
     AgeBuckets ageBuckets_;
 };
 
