@@ -145,6 +145,13 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
         throw timeLimit(limits, 0);
     }
     IncrementalMatches& sets = *found;
+    // A priority whose limit is used up never applies again: its rules' sets
+    // are no longer kept (mutex STS: the requests, once every process made one).
+    auto retireIfSpent = [&](const Group& grp) {
+        if (grp.limit && grp.applied >= *grp.limit)
+            for (std::size_t r : grp.rules) sets.retire(r);
+    };
+    for (const auto& grp : groups) retireIfSpent(grp);
     g.takeDirty(changed, edgesChanged);
     static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
@@ -190,6 +197,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 if (verify) sets.verify(g, step);
                 applied = true;
                 ++grp.applied;
+                retireIfSpent(grp);
                 break;
             }
             if (applied) break;

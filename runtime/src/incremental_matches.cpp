@@ -16,6 +16,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         rules.findMatches(r, g, found_);
         for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
         byRadius_.push_back(r);
+        retired_.push_back(false);
     }
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
 }
@@ -61,6 +62,7 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
     if (itself.empty() && edgesOnly.empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     for (const std::size_t r : byRadius_) {
+        if (retired_[r]) continue;
         MatchSet& set = sets_[r];
         if (radius_[r] < 0) {
             // Not local: find them all again.
@@ -102,9 +104,16 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
     }
 }
 
+void IncrementalMatches::retire(std::size_t rule) {
+    if (retired_[rule]) return;
+    retired_[rule] = true;
+    sets_[rule].clear();
+}
+
 void IncrementalMatches::verify(const Graph& g, long long step) {
     using Key = std::vector<std::uint32_t>;
     for (std::size_t r = 0; r < sets_.size(); ++r) {
+        if (retired_[r]) continue;
         const MatchSet& set = sets_[r];
         const std::size_t width = static_cast<std::size_t>(set.nodes() + set.edges());
         found_.reset(set.nodes(), set.edges());

@@ -25,6 +25,9 @@ public:
     IncrementalMatches(RuleSet& rules, const Graph& g);
 
     MatchSet& of(std::size_t rule) { return sets_[rule]; }
+    // Stops keeping `rule`'s matches (it will not be applied again): its set
+    // is emptied and no longer repaired or verified.
+    void retire(std::size_t rule);
     // Repairs every rule's set after the nodes in `itself` changed, and those
     // in `edgesOnly` saw only edges change (Graph::takeDirty).
     void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly);
@@ -44,6 +47,7 @@ private:
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
+    std::vector<bool> retired_;              // per rule
     // The rules by radius (stable), so that rules of one radius share one area.
     std::vector<std::size_t> byRadius_;
     GrowArray<std::uint32_t> seen_;
