@@ -185,6 +185,8 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                     // still the one of the last completed step.
                     throw timeLimit(limits, step);
                 }
+                ++grp.applied;
+                retireIfSpent(grp);   // before the repair: a spent rule needs none
                 g.takeDirty(changed, edgesChanged);
                 try {
                     sets.update(g, changed, edgesChanged);
@@ -196,8 +198,6 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 }
                 if (verify) sets.verify(g, step);
                 applied = true;
-                ++grp.applied;
-                retireIfSpent(grp);
                 break;
             }
             if (applied) break;

@@ -419,3 +419,66 @@ TEST_CASE("a negative condition not connected to the match sees changes anywhere
     CHECK(r.run.derivation.steps == 1);
     CHECK(r.run.graph().nodeCount() == 3);
 }
+
+namespace {
+// Counts how often each rule's matches are repaired after a step.
+class CountingRules : public rt::RuleSet {
+public:
+    explicit CountingRules(rt::RuleSet& inner) : inner_(inner), repairs(inner.ruleCount(), 0) {}
+    std::size_t ruleCount() const override { return inner_.ruleCount(); }
+    const rt::RuleInfo& info(std::size_t rule) const override { return inner_.info(rule); }
+    void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override { inner_.findMatches(rule, g, out); }
+    void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out) override {
+        inner_.findAnchored(rule, g, node, host, out);
+    }
+    void repair(std::size_t rule, const rt::Graph& g, const rt::RepairArea& area, rt::MatchSet& set, rt::MatchBuffer& scratch) override {
+        ++repairs[rule];
+        inner_.repair(rule, g, area, set, scratch);
+    }
+    void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override {
+        inner_.writeSet(rule, daughter, m, out);
+    }
+    void prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g, rt::Rng& rng, long long step) override {
+        inner_.prepare(rule, daughter, m, g, rng, step);
+    }
+    void commit(rt::Graph& g, long long step) override { inner_.commit(g, step); }
+
+private:
+    rt::RuleSet& inner_;
+
+public:
+    std::vector<long long> repairs;
+};
+}  // namespace
+
+TEST_CASE("a priority whose limit is used up is no longer kept up to date", "[run][limits]") {
+    // Grow (priority 0, limit 5) would still match after its 5 steps; Walk
+    // (priority 1) then runs 20 steps. Grow's matches are repaired only while
+    // it can still apply, and the derivation is the same as without that.
+    const std::string src = "node P { n: int = 0; }\nedge E directed;\naxiom { a: P at (0, 0); }\n"
+                            "limit 25;\npriority 0 limit 5;\n"
+                            "rule Grow priority 0 { match { a: P; } produce { a; b: P at (1, 0); a -[E]-> b; } }\n"
+                            "rule Walk priority 1 { match { a: P; } produce { a { n = a.n + 1 }; } }\n";
+    auto compiled = test::compile(src);
+    REQUIRE(compiled.program);
+    const auto& prog = *compiled.program;
+    rt::Rng rng(7);
+    auto st = interp::initState(prog, interp::defaultParams(prog), rng);
+    rt::Graph g = interp::buildAxiom(st, rng);
+    interp::InterpretedRules inner(st);
+    CountingRules rules(inner);
+    rt::DerivationLimits limits;
+    limits.steps = 25;
+    limits.perPriority[0] = 5;
+    const auto result = rt::derive(g, rules, rng, limits);
+    CHECK(result.steps == 25);
+    CHECK(g.nodeCount() == 6);
+    CHECK(rules.repairs[0] == 4);    // after Grow's steps 1-4; its 5th step spends the limit
+    CHECK(rules.repairs[1] == 25);   // after every step
+    // The same derivation as the whole interpreter's run.
+    auto whole = derive(src, 7);
+    CHECK(whole.run.derivation.steps == 25);
+    long long walked = 0;
+    for (rt::NodeId n : whole.run.graph().allNodes()) walked += std::get<long long>(whole.run.graph().nodeAttr(n, 0));
+    CHECK(walked == 20);
+}
