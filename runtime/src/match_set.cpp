@@ -85,11 +85,6 @@ void MatchSet::unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads) {
     while (heads[n] != kNoId) remove(static_cast<Id>(heads[n] / stride_));
 }
 
-void MatchSet::removeTouching(NodeId n, bool incidenceOnly) {
-    unlinkAll(n, head_);
-    if (!incidenceOnly) unlinkAll(n, headOther_);
-}
-
 void MatchSet::clear() {
     rec_.clear();
     live_.clear();

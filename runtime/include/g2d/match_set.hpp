@@ -72,7 +72,11 @@ public:
     void add(const NodeId* nodes, const EdgeId* edges, const Graph& g);
     // Removes every match that binds node `n`, or (incidenceOnly) every match
     // binding it at a pattern node that reads incidences.
-    void removeTouching(NodeId n, bool incidenceOnly = false);
+    // Inline: most nodes of a repaired area head no list of a given rule.
+    void removeTouching(NodeId n, bool incidenceOnly = false) {
+        if (n < head_.size() && head_[n] != kNoId) unlinkAll(n, head_);
+        if (!incidenceOnly && n < headOther_.size() && headOther_[n] != kNoId) unlinkAll(n, headOther_);
+    }
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
     void clear();
 
