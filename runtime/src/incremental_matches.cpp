@@ -16,7 +16,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         rules.findMatches(r, g, found_);
         for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
         byRadius_.push_back(r);
-        retired_.push_back(false);
+        retired_.push_back(0);
     }
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
 }
@@ -106,7 +106,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
 
 void IncrementalMatches::retire(std::size_t rule) {
     if (retired_[rule]) return;
-    retired_[rule] = true;
+    retired_[rule] = 1;
     sets_[rule].clear();
 }
 

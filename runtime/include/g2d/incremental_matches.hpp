@@ -47,7 +47,7 @@ private:
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
-    std::vector<bool> retired_;              // per rule
+    std::vector<std::uint8_t> retired_;      // per rule (bytes: read per rule per step)
     // The rules by radius (stable), so that rules of one radius share one area.
     std::vector<std::size_t> byRadius_;
     GrowArray<std::uint32_t> seen_;
