@@ -20,6 +20,7 @@ usage: bench/run.py [--g2d build/release/bin/g2d] [--quick] [--repeat N] [--only
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -125,6 +126,47 @@ class Suite:
               f"{r['steps_per_s']:,.0f} | {r['bytes_per_element']:.0f} | {interp} | {ratio} | {orig} |", flush=True)
 
 
+def count_instructions(cmd):
+    """Instructions executed inside the derivation (callgrind, g2d::rt::derive only): repeatable on a noisy machine."""
+    proc = subprocess.run(["valgrind", "--tool=callgrind", "--toggle-collect=g2d::rt::derive(*",
+                           "--callgrind-out-file=/dev/null"] + cmd, capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise RuntimeError(f"callgrind on {' '.join(cmd)} failed: {proc.stderr.strip()[-400:]}")
+    for line in proc.stderr.splitlines():
+        if "Collected :" in line:
+            return int(line.split(":")[-1].strip().replace(",", ""))
+    raise RuntimeError(f"callgrind printed no count for {' '.join(cmd)}")
+
+
+def instructions(s, quick):
+    """The second table: compiled vs interpreted in instructions, at sizes callgrind runs in seconds."""
+    cases = [
+        ("koch-oldest", "examples/koch_snowflake.g2d", None, ["-D", "max_lod=5" if quick else "max_lod=7"]),
+        ("koch-random", "examples/koch_snowflake.g2d", ("rule Split pick oldest", "rule Split"),
+         ["-D", "max_lod=5" if quick else "max_lod=7"]),
+        ("koch-parallel", "examples/koch_snowflake.g2d", ("rule Split pick oldest", "rule Split parallel"),
+         ["-D", "max_lod=5" if quick else "max_lod=7"]),
+        ("sierpinski", "examples/sierpinski.g2d", None, ["-D", "generations=6" if quick else "generations=8"]),
+        ("mutex-sts", "bench/grammars/mutex_sts.g2d", None, ["-D", "n=300" if quick else "n=3000"]),
+    ]
+    print()
+    print("Instructions inside the derivation (callgrind; the same on every run):")
+    print()
+    print("| benchmark | size | steps | compiled instructions | per rewrite | interpreted instructions | compiled × fewer |")
+    print("|---|---|---:|---:|---:|---:|---:|", flush=True)
+    for name, path, replace, extra in cases:
+        text = open(os.path.join(ROOT, path)).read()
+        if replace:
+            text = text.replace(*replace)
+        grammar, exe = s.build(name + "-count", text)
+        flags = ["--no-svg", "--stats"] + extra
+        stats = run_once([exe] + flags)
+        compiled = count_instructions([exe] + flags)
+        interp = count_instructions([s.args.g2d, "run", grammar] + flags)
+        print(f"| {name} | {extra[-1]} | {stats['steps']} | {compiled:,} | {compiled / max(stats['applications'], 1):,.0f} | "
+              f"{interp:,} | {interp / compiled:.1f} |", flush=True)
+
+
 def koch(s, quick):
     source = open(os.path.join(ROOT, "examples/koch_snowflake.g2d")).read()
     variants = {
@@ -179,18 +221,26 @@ def main():
     ap.add_argument("--g2d", default=os.path.join(ROOT, "build/release/bin/g2d"))
     ap.add_argument("--quick", action="store_true", help="small sizes only (a smoke test of the suite)")
     ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
-    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex"])
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "instructions"])
     args = ap.parse_args()
     if args.quick:
         args.repeat = 1
     s = Suite(args)
     print(f"g2d benchmark suite — {time.strftime('%Y-%m-%d')}, {os.cpu_count()} cores; fastest of {args.repeat}")
-    print()
-    s.header()
-    for name, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex)]:
-        if args.only and name not in args.only:
-            continue
+    timed = [(n, fn) for n, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex)]
+             if not args.only or n in args.only]
+    if timed:
+        print()
+        s.header()
+    for _, fn in timed:
         fn(s, args.quick)
+    # Instruction counts: in the full suite, or when asked (--quick skips them:
+    # it also runs sanitized builds, which valgrind cannot run).
+    if (not args.only and not args.quick) or (args.only and "instructions" in args.only):
+        if not shutil.which("valgrind"):
+            print("valgrind is not installed: no instruction counts", file=sys.stderr)
+            return 1
+        instructions(s, args.quick)
     return 0
 
 
