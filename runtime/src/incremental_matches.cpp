@@ -61,11 +61,16 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
                                 const std::vector<NodeId>& edgesOnly) {
     if (itself.empty() && edgesOnly.empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
+    // When the step changed at least half of the nodes (a parallel step
+    // rewriting a whole generation), one full search is cheaper than an
+    // anchored search from every changed node at every pattern node, which
+    // finds each match once per anchor.
+    const bool most = 2 * (itself.size() + edgesOnly.size()) >= g.nodeCount();
     for (const std::size_t r : byRadius_) {
         if (retired_[r]) continue;
         MatchSet& set = sets_[r];
-        if (radius_[r] < 0) {
-            // Not local: find them all again.
+        if (radius_[r] < 0 || most) {
+            // Not local, or not worth it: find them all again.
             set.clear();
             found_.reset(set.nodes(), set.edges());
             rules_.findMatches(r, g, found_);
