@@ -199,8 +199,7 @@ TEST_CASE("the engine finds exactly the matches a brute-force matcher finds", "[
         REQUIRE(compiled.program);
         const auto& prog = *compiled.program;
         rt::Rng rng(1);
-        auto st = interp::initState(prog, interp::defaultParams(prog), rng);
-        rt::Graph g = interp::buildAxiom(st, rng);
+        auto [st, g] = test::startInterpreter(prog, rng);
         interp::InterpretedRules rules(st);
         rt::MatchBuffer found;
         found.reset(static_cast<int>(c.patKind.size()), static_cast<int>(c.patEdges.size()));

@@ -467,8 +467,7 @@ TEST_CASE("a priority whose limit is used up is no longer kept up to date", "[ru
     REQUIRE(compiled.program);
     const auto& prog = *compiled.program;
     rt::Rng rng(7);
-    auto st = interp::initState(prog, interp::defaultParams(prog), rng);
-    rt::Graph g = interp::buildAxiom(st, rng);
+    auto [st, g] = test::startInterpreter(prog, rng);
     interp::InterpretedRules inner(st);
     CountingRules rules(inner);
     rt::DerivationLimits limits;

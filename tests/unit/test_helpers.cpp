@@ -1,5 +1,7 @@
 #include "test_helpers.hpp"
 
+#include "interp/run_program.hpp"
+
 namespace g2d::test {
 
 CompileResult compile(const std::string& text, const std::string& name) {
@@ -29,6 +31,12 @@ std::string prelude() {
            "edge E directed { n: int = 0; }\n"
            "edge U { }\n"
            "axiom { a: P at (0, 0); b: P at (1, 0); a -[E]-> b; a -[U]- b; }\n";
+}
+
+InterpreterStart startInterpreter(const ir::Program& prog, rt::Rng& rng) {
+    auto state = interp::initState(prog, interp::defaultParams(prog), rng);
+    rt::Graph graph = interp::buildAxiom(state, rng);
+    return InterpreterStart{std::move(state), std::move(graph)};
 }
 
 }  // namespace g2d::test

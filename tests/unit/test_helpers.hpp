@@ -4,6 +4,9 @@
 #include <vector>
 
 #include "driver/compile.hpp"
+#include "g2d/graph.hpp"
+#include "g2d/rng.hpp"
+#include "interp/program_state.hpp"
 
 namespace g2d::test {
 
@@ -19,5 +22,13 @@ std::string firstError(const CompileResult& r);
 // A small valid grammar to build test cases from: kinds P (node, attribute
 // w: float), E (directed edge, attribute n: int), U (undirected edge).
 std::string prelude();
+
+// The interpreter's state for `prog` (default parameters) and its axiom
+// graph, for tests that drive the runtime themselves.
+struct InterpreterStart {
+    interp::ProgramState state;
+    rt::Graph graph;
+};
+InterpreterStart startInterpreter(const ir::Program& prog, rt::Rng& rng);
 
 }  // namespace g2d::test
