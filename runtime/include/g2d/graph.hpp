@@ -263,7 +263,8 @@ void Graph::removeEdge(EdgeId e) {
     touchEdge(e);
     unlink(e);
     rec.alive = false;
-    if (rec.styled || rec.slot != kNoId) dropEdgeExtras(rec, e);
+    // (A compiled grammar's slot indexes its own arrays: nothing to drop here.)
+    if (rec.styled || (rec.slot != kNoId && !defaults_[rec.kind].empty())) dropEdgeExtras(rec, e);
     --liveEdges_;
 }
 
