@@ -213,7 +213,10 @@ private:
         return out + body + "    }\n\n";
     }
 
-    bool readsIncidence(int p) const { return r_.readsIncidence.empty() || r_.readsIncidence[static_cast<std::size_t>(p)]; }
+    // As MatchSet reads RuleInfo::readsIncidence: any other size means every node.
+    bool readsIncidence(int p) const {
+        return r_.readsIncidence.size() != r_.nodes.size() || r_.readsIncidence[static_cast<std::size_t>(p)];
+    }
 
     // RuleSet::repair for this rule: the anchored searches inlined, in the
     // generic loop's order (area nodes, then pattern nodes), adding straight

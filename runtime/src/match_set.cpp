@@ -94,6 +94,11 @@ void MatchSet::clear() {
     ageBuckets_.clear();
 }
 
+void MatchSet::release() {
+    for (auto* a : {&rec_, &live_, &free_, &head_, &headOther_}) *a = GrowArray<std::uint32_t>{};
+    ageBuckets_ = AgeBuckets();
+}
+
 Match MatchSet::pickRandom(Rng& rng) const {
     if (live_.size() == 1) return view(live_[0]);
     return view(live_[static_cast<std::size_t>(rng.below(live_.size()))]);

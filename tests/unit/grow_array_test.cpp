@@ -27,10 +27,9 @@ TEST_CASE("GrowArray keeps its elements while growing past the mapped size", "[g
         model.push_back(r);
         if ((i & (i + 1)) == 0) {   // at every power of two minus one: compare all
             REQUIRE(arr.size() == model.size());
-            for (std::size_t k = 0; k < model.size(); ++k) {
-                REQUIRE(arr[k].a == model[k].a);
-                REQUIRE(arr[k].b == model[k].b);
-            }
+            std::size_t differ = 0;
+            for (std::size_t k = 0; k < model.size(); ++k) differ += arr[k].a != model[k].a || arr[k].b != model[k].b;
+            REQUIRE(differ == 0);
         }
     }
     REQUIRE(arr.capacity() >= arr.size());
@@ -74,12 +73,18 @@ TEST_CASE("GrowArray resize, append, assign, pop_back and self push_back", "[gro
     REQUIRE(arr[3] == 0);
     arr.assign(3, 8);
     REQUIRE(std::vector<int>(arr.begin(), arr.end()) == std::vector<int>{8, 8, 8});
-    // Pushing an element of the array itself while it grows.
+    // Pushing or emplacing an element of the array itself while it grows.
     GrowArray<int> self;
     self.push_back(42);
     for (int i = 0; i < 100'000; ++i) self.push_back(self[0]);
     REQUIRE(self.size() == 100'001);
     REQUIRE(self[100'000] == 42);
+    GrowArray<Rec> recs;
+    recs.push_back(Rec{7, 9});
+    for (int i = 0; i < 100'000; ++i) recs.emplace_back(recs[0]);
+    REQUIRE(recs.size() == 100'001);
+    REQUIRE(recs[100'000].a == 7);
+    REQUIRE(recs[100'000].b == 9);
     arr.clear();
     REQUIRE(arr.empty());
 }

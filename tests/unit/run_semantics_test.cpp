@@ -455,8 +455,8 @@ TEST_CASE("a priority whose limit is used up is no longer kept up to date", "[ru
     // Grow (priority 0, limit 5) would still match after its 5 steps; Walk
     // (priority 1) then runs 20 steps. Grow's matches are repaired only while
     // it can still apply, and the derivation is the same as without that.
-    // (The Q nodes keep each step's changes below half the graph, where
-    // repair gives way to a full search.)
+    // (The Q nodes keep each step's changes below half the graph; at half or
+    // more of a large graph, repair gives way to a full search.)
     std::string qs;
     for (int i = 0; i < 20; ++i) qs += " q" + std::to_string(i) + ": Q at (" + std::to_string(i) + ", 5);";
     const std::string src = "node P { n: int = 0; }\nnode Q;\nedge E directed;\naxiom { a: P at (0, 0);" + qs + " }\n"

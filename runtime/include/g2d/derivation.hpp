@@ -97,7 +97,8 @@ public:
     // Every match of `rule` that binds pattern node `node` to host node `host`.
     virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out) = 0;
     // Adds to `set` every match of `rule` that binds a node of `area`, each
-    // once, in the order of the area's nodes, then pattern nodes, then
+    // once (the caller has dropped those the set held), in the order of the
+    // area's nodes, then pattern nodes, then
     // findAnchored's order (so every back end fills the set alike). This one
     // runs findAnchored per (node, pattern node) through `scratch`;
     // generated code replaces it with inlined searches.

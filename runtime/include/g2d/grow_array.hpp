@@ -25,7 +25,12 @@ namespace grow_detail {
 // kMappedBytes are memory mappings, smaller ones come from malloc.
 void* resize(void* block, std::size_t oldBytes, std::size_t newBytes, std::size_t usedBytes);
 void release(void* block, std::size_t bytes) noexcept;
+// Under AddressSanitizer every block comes from malloc, so that overruns are caught.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr std::size_t kMappedBytes = ~std::size_t{0};
+#else
 inline constexpr std::size_t kMappedBytes = std::size_t{64} << 10;
+#endif
 }  // namespace grow_detail
 
 template <class T>
@@ -80,10 +85,14 @@ public:
     }
     template <class... Args>
     T& emplace_back(Args&&... args) {
-        if (size_ == capacity_) reserve(size_ + 1);
-        T* slot = ::new (static_cast<void*>(data_ + size_)) T{std::forward<Args>(args)...};
-        ++size_;
-        return *slot;
+        if (size_ == capacity_) {
+            const T made{std::forward<Args>(args)...};   // the arguments may live in this array
+            reserve(size_ + 1);
+            ::new (static_cast<void*>(data_ + size_)) T(made);
+        } else {
+            ::new (static_cast<void*>(data_ + size_)) T{std::forward<Args>(args)...};
+        }
+        return data_[size_++];
     }
     // Appends [first, last), which must not point into this array.
     void append(const T* first, const T* last) {

@@ -11,7 +11,12 @@
 // moves does not re-find every request pairing it with each process. A match found
 // from several anchors is kept only from its first pattern node bound inside
 // the repaired area, so no lookup is needed to avoid duplicates. A step thus
-// costs what changed, not the size of the graph.
+// costs what changed, not the size of the graph. Two exceptions: after a
+// step that changed at least half of a graph's nodes (of 64 or more), every
+// rule is searched in full, which is then cheaper; and a rule whose priority
+// limit is used up is retired: its matches are no longer kept, so its
+// conditions are no longer evaluated (nor can their run-time errors stop
+// the derivation).
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +27,8 @@ namespace g2d::rt {
 
 class IncrementalMatches {
 public:
+    static constexpr std::size_t kFullSearchMinNodes = 64;
+
     IncrementalMatches(RuleSet& rules, const Graph& g);
 
     MatchSet& of(std::size_t rule) { return sets_[rule]; }

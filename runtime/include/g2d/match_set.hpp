@@ -79,6 +79,8 @@ public:
     }
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
     void clear();
+    // Empties the set and gives its memory back.
+    void release();
 
     std::size_t size() const { return live_.size(); }
     bool empty() const { return live_.empty(); }
