@@ -81,13 +81,17 @@ class Suite:
         self.args = args
         self.work = tempfile.mkdtemp(prefix="g2d-bench-")
         self.rows = []
+        self.built = {}
 
     def build(self, name, source_text):
+        if (name, source_text) in self.built:   # the same grammar: build it once
+            return self.built[(name, source_text)]
         path = os.path.join(self.work, name + ".g2d")
         with open(path, "w") as f:
             f.write(source_text)
         exe = path[:-4]
         subprocess.run([self.args.g2d, "build", path, "-o", exe], check=True)
+        self.built[(name, source_text)] = (path, exe)
         return path, exe
 
     def case(self, bench, size, grammar, exe, extra, interpret=True, original=None):
@@ -159,24 +163,25 @@ def count_instructions(cmd):
 
 def instructions(s, quick):
     """The second table: compiled vs interpreted in instructions, at sizes callgrind runs in seconds."""
+    # (name, grammar, text replacement, extra arguments, whether the interpreter runs too)
     cases = [
-        ("koch-oldest", "examples/koch_snowflake.g2d", None, ["-D", "max_lod=5" if quick else "max_lod=7"]),
+        ("koch-oldest", "examples/koch_snowflake.g2d", None, ["-D", "max_lod=5" if quick else "max_lod=7"], True),
         # The same at 16 times the size, compiled only: instructions per
         # rewrite do not grow with the graph (its time does, by cache misses).
         ("koch-oldest", "examples/koch_snowflake.g2d", None, ["-D", "max_lod=6" if quick else "max_lod=9"], False),
         ("koch-random", "examples/koch_snowflake.g2d", ("rule Split pick oldest", "rule Split"),
-         ["-D", "max_lod=5" if quick else "max_lod=7"]),
+         ["-D", "max_lod=5" if quick else "max_lod=7"], True),
         ("koch-parallel", "examples/koch_snowflake.g2d", ("rule Split pick oldest", "rule Split parallel"),
-         ["-D", "max_lod=5" if quick else "max_lod=7"]),
-        ("sierpinski", "examples/sierpinski.g2d", None, ["-D", "generations=6" if quick else "generations=8"]),
-        ("mutex-sts", "bench/grammars/mutex_sts.g2d", None, ["-D", "n=300" if quick else "n=3000"]),
+         ["-D", "max_lod=5" if quick else "max_lod=7"], True),
+        ("sierpinski", "examples/sierpinski.g2d", None, ["-D", "generations=6" if quick else "generations=8"], True),
+        ("mutex-sts", "bench/grammars/mutex_sts.g2d", None, ["-D", "n=300" if quick else "n=3000"], True),
     ]
     print()
     print("Instructions inside the derivation (callgrind; the same on every run):")
     print()
     print("| benchmark | size | steps | compiled instructions | per rewrite | interpreted instructions | compiled × fewer |")
     print("|---|---|---:|---:|---:|---:|---:|", flush=True)
-    for name, path, replace, extra, *interpret in cases:
+    for name, path, replace, extra, interpret in cases:
         text = open(os.path.join(ROOT, path)).read()
         if replace:
             assert replace[0] in text, f"{path} no longer contains {replace[0]!r}"
@@ -186,7 +191,7 @@ def instructions(s, quick):
         stats = run_once([exe] + flags)
         compiled = count_instructions([exe] + flags)
         interp = None
-        if interpret != [False]:
+        if interpret:
             if run_once([s.args.g2d, "run", grammar] + flags)["steps"] != stats["steps"]:
                 raise RuntimeError(f"{name} {extra[-1]}: the interpreter took a different number of steps")
             interp = count_instructions([s.args.g2d, "run", grammar] + flags)

@@ -12,9 +12,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         const int nn = static_cast<int>(info.nodeKinds.size());
         sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence);
         radius_.push_back(info.radius);
-        found_.reset(nn, info.edgeCount);
-        rules.findMatches(r, g, found_);
-        for (std::size_t i = 0; i < found_.size(); ++i) sets_.back().add(found_.ids(i), g);
+        refill(r, g);
         byRadius_.push_back(r);
         retired_.push_back(0);
     }
@@ -73,19 +71,25 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
         MatchSet& set = sets_[r];
         if (radius_[r] < 0 || most) {
             // Not local, or not worth it: find them all again.
-            set.clear();
-            found_.reset(set.nodes(), set.edges());
-            rules_.findMatches(r, g, found_);
-            for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
+            refill(r, g);
             continue;
         }
         if (radius_[r] != areaRadius) {
             region(g, itself, edgesOnly, radius_[r]);
             areaRadius = radius_[r];
         }
-        for (NodeId n : area_) set.removeTouching(n, !fully(n));
-        rules_.repair(r, g, RepairArea{area_, seen_.data(), mark_}, set, found_);
+        const RepairArea area{area_, seen_.data(), mark_};
+        for (NodeId n : area_) set.removeTouching(n, !area.full(n));
+        rules_.repair(r, g, area, set, found_);
     }
+}
+
+void IncrementalMatches::refill(std::size_t rule, const Graph& g) {
+    MatchSet& set = sets_[rule];
+    set.clear();
+    found_.reset(set.nodes(), set.edges());
+    rules_.findMatches(rule, g, found_);
+    for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
 }
 
 void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer& scratch) {

@@ -49,7 +49,8 @@ private:
     // mark_ * 2 (only edges changed: pattern nodes reading incidences).
     void region(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, int radius);
     bool inArea(NodeId n) const { return (seen_[n] >> 1) == mark_; }
-    bool fully(NodeId n) const { return (seen_[n] & 1) != 0; }
+    // Empties `rule`'s set and fills it by a full search.
+    void refill(std::size_t rule, const Graph& g);
 
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
