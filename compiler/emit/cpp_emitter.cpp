@@ -19,6 +19,15 @@ std::string cLiteral(const std::string& s) {
     return lit.substr(12, lit.rfind("\", ") - 12 + 1);   // "..."
 }
 
+std::string incidenceName(ir::IncidenceRead r) {
+    switch (r) {
+    case ir::IncidenceRead::None: return "Incidence::None";
+    case ir::IncidenceRead::PatternEdges: return "Incidence::PatternEdges";
+    case ir::IncidenceRead::AllEdges: return "Incidence::AllEdges";
+    }
+    return "Incidence::AllEdges";
+}
+
 std::string paramType(const ir::Type& t) {
     switch (t.kind) {
     case ir::TypeKind::Int: return "ParamType::Int";
@@ -249,7 +258,7 @@ private:
             out += in + "    info.parallel = " + (parallel ? "true" : "false") + ";\n";
             out += in + "    info.radius = " + str(r.repairRadius) + ";\n";
             out += in + "    info.readsIncidence = {";
-            for (std::size_t i = 0; i < r.readsIncidence.size(); ++i) out += (i ? ", " : "") + std::string(r.readsIncidence[i] ? "true" : "false");
+            for (std::size_t i = 0; i < r.readsIncidence.size(); ++i) out += (i ? ", " : "") + incidenceName(r.readsIncidence[i]);
             out += "};\n";
             out += in + "    info.edgeCount = " + str(static_cast<long long>(r.edges.size())) + ";\n";
             out += in + "    info.nodeKinds = {";

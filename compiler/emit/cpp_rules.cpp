@@ -213,10 +213,13 @@ private:
         return out + body + "    }\n\n";
     }
 
-    // As MatchSet reads RuleInfo::readsIncidence: any other size means every node.
-    bool readsIncidence(int p) const {
-        return r_.readsIncidence.size() != r_.nodes.size() || r_.readsIncidence[static_cast<std::size_t>(p)];
+    // As MatchSet reads RuleInfo::readsIncidence: any other size means every
+    // node reads every edge.
+    ir::IncidenceRead reads(int p) const {
+        return r_.readsIncidence.size() != r_.nodes.size() ? ir::IncidenceRead::AllEdges
+                                                           : r_.readsIncidence[static_cast<std::size_t>(p)];
     }
+    bool readsIncidence(int p) const { return reads(p) != ir::IncidenceRead::None; }
 
     // RuleSet::repair for this rule: the anchored searches inlined, in the
     // generic loop's order (area nodes, then pattern nodes), adding straight
@@ -238,9 +241,12 @@ private:
             std::string first;
             for (int q = 0; q < p; ++q)
                 first += " && !area.searched(" + std::string(readsIncidence(q) ? "true" : "false") + ", n[" + str(q) + "])";
+            // From a node whose edges alone changed, reading only the
+            // pattern's edges: only the matches the set lacks.
+            const std::string lacking = reads(p) == ir::IncidenceRead::PatternEdges ? " && (full || area.lacks(g, set, n, e))" : "";
             std::string body;
             steps(r_.anchoredPlans[p], 0, nullptr, {p}, {}, "@@COMPLETE@@", body, "                ");
-            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, g);\n");
+            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + lacking + ") set.add(n, e, g);\n");
             out += body + "            }\n";
         }
         return out + "        }\n    }\n\n";
@@ -401,7 +407,7 @@ private:
                 for (std::size_t a = 0; a < de.assigns.size(); ++a)
                     commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = ev" + si + "_" +
                               str(static_cast<int>(a)) + ";\n";
-                if (!de.assigns.empty()) commit += c + "G.touchEdge(k" + si + ");\n";
+                if (!de.assigns.empty()) commit += c + "G.touchEdgeItself(k" + si + ");\n";
             } else {
                 commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step);\n" + c + "(void)k" + si + ";\n";
                 if (!prog_.kinds[de.kind].attrs.empty()) {

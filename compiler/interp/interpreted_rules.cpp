@@ -12,6 +12,19 @@ using rt::EdgeId;
 using rt::kNoId;
 using rt::NodeId;
 
+namespace {
+
+rt::Incidence incidence(ir::IncidenceRead r) {
+    switch (r) {
+    case ir::IncidenceRead::None: return rt::Incidence::None;
+    case ir::IncidenceRead::PatternEdges: return rt::Incidence::PatternEdges;
+    case ir::IncidenceRead::AllEdges: return rt::Incidence::AllEdges;
+    }
+    return rt::Incidence::AllEdges;
+}
+
+}  // namespace
+
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     std::size_t maxNodes = 0, maxEdges = 0;
     for (const auto& r : st.prog->rules) {
@@ -34,7 +47,7 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
             info.weights.push_back(w);
         }
         info.radius = r.repairRadius;
-        info.readsIncidence = r.readsIncidence;
+        for (ir::IncidenceRead read : r.readsIncidence) info.readsIncidence.push_back(incidence(read));
         for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
         info.edgeCount = static_cast<int>(r.edges.size());
         infos_.push_back(std::move(info));
@@ -332,7 +345,7 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
                 for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
             } else {
                 h = g.addEdge(de.kind, hostOf[de.src], hostOf[de.dst], step);
-                for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
+                for (auto& [attr, v] : values.attrs) g.initEdgeAttr(h, attr, std::move(v));
             }
             for (auto& [prop, v] : values.styles) g.setEdgeStyle(h, prop, std::move(v));
         }

@@ -279,6 +279,14 @@ struct Daughter {
 
 enum class Pick { Random, Oldest };
 
+// What a pattern node's matches read of the edges at its host beyond what
+// the other pattern nodes read:
+enum class IncidenceRead {
+    None,          // nothing (another end reads the edges between them)
+    PatternEdges,  // the pattern's own edges: adding or removing others keeps its matches
+    AllEdges,      // every edge (degrees, negative conditions): any edge change may matter
+};
+
 struct Rule {
     std::string name;
     long long priority = 0;
@@ -299,11 +307,11 @@ struct Rule {
     // -1 when a negative condition has a part not connected to the match
     // (then any change anywhere may matter).
     int repairRadius = 0;
-    // Per match node: whether a change among the host node's edges alone (an
-    // edge added, removed or changed) can make or break a match binding it
-    // there. Every edge between two match nodes is read from one end only,
-    // so a hub's edge changes need not revisit every match binding the hub.
-    std::vector<bool> readsIncidence;
+    // Per match node: which changes among the host node's edges alone (an
+    // edge added or removed) can make or break a match binding it there.
+    // Every edge between two match nodes is read from one end only, so a
+    // hub's edge changes need not revisit every match binding the hub.
+    std::vector<IncidenceRead> readsIncidence;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

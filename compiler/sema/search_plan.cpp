@@ -180,40 +180,54 @@ void markDegreeReads(const ir::Expr& e, int matchNodes, std::vector<bool>& reads
 
 }  // namespace
 
-std::vector<bool> incidenceReaders(const ir::Rule& rule) {
+std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule) {
+    using ir::IncidenceRead;
     const int outer = static_cast<int>(rule.nodes.size());
-    std::vector<bool> reads(rule.nodes.size(), false);
+    std::vector<bool> all(rule.nodes.size(), false);
     // Forced: degrees read in conditions, and edges to a negative condition's
     // own nodes (only this end sees them change).
-    for (const auto& c : rule.conditions) markDegreeReads(c.expr, outer, reads);
-    std::vector<std::pair<int, int>> between;   // edges between two match nodes
+    for (const auto& c : rule.conditions) markDegreeReads(c.expr, outer, all);
+    // Edges between two match nodes: the pattern's, and negative conditions'.
+    std::vector<std::pair<int, int>> own, forbidden;
     const auto valid = [&](int i, int limit) { return i >= 0 && i < limit; };  // not after an error
     for (const auto& e : rule.edges)
-        if (valid(e.src, outer) && valid(e.dst, outer)) between.emplace_back(e.src, e.dst);
+        if (valid(e.src, outer) && valid(e.dst, outer)) own.emplace_back(e.src, e.dst);
     for (const auto& nac : rule.nacs) {
-        for (const auto& c : nac.conditions) markDegreeReads(c.expr, outer, reads);
+        for (const auto& c : nac.conditions) markDegreeReads(c.expr, outer, all);
         const int total = outer + static_cast<int>(nac.nodes.size());
         for (const auto& e : nac.edges) {
             if (!valid(e.src, total) || !valid(e.dst, total)) continue;
             const bool srcOuter = e.src < outer, dstOuter = e.dst < outer;
-            if (srcOuter && dstOuter) between.emplace_back(e.src, e.dst);
-            else if (srcOuter) reads[static_cast<std::size_t>(e.src)] = true;
-            else if (dstOuter) reads[static_cast<std::size_t>(e.dst)] = true;
+            if (srcOuter && dstOuter) forbidden.emplace_back(e.src, e.dst);
+            else if (srcOuter) all[static_cast<std::size_t>(e.src)] = true;
+            else if (dstOuter) all[static_cast<std::size_t>(e.dst)] = true;
         }
     }
     // An edge between two match nodes changes both ends' incidences: one
     // reading end suffices. Cover them greedily, preferring ends already
-    // reading, then the end with more such edges, then the lower index.
+    // reading, then the end with more such edges, then the lower index. A
+    // negative condition's edge needs an end reading every edge (the edge is
+    // not the match's); the pattern's own, any reading end (a match binding
+    // a removed edge is dropped, one binding a new edge is found).
     std::vector<int> count(rule.nodes.size(), 0);
-    for (auto [a, b] : between) {
-        ++count[static_cast<std::size_t>(a)];
-        if (b != a) ++count[static_cast<std::size_t>(b)];
-    }
-    for (auto [a, b] : between) {
-        if (reads[static_cast<std::size_t>(a)] || reads[static_cast<std::size_t>(b)]) continue;
-        const int pick = count[static_cast<std::size_t>(b)] > count[static_cast<std::size_t>(a)] ? b : a;
-        reads[static_cast<std::size_t>(pick)] = true;
-    }
+    for (const auto* list : {&forbidden, &own})
+        for (auto [a, b] : *list) {
+            ++count[static_cast<std::size_t>(a)];
+            if (b != a) ++count[static_cast<std::size_t>(b)];
+        }
+    const auto cover = [&](const std::vector<std::pair<int, int>>& edges, std::vector<bool>& reads) {
+        for (auto [a, b] : edges) {
+            if (reads[static_cast<std::size_t>(a)] || reads[static_cast<std::size_t>(b)]) continue;
+            const int pick = count[static_cast<std::size_t>(b)] > count[static_cast<std::size_t>(a)] ? b : a;
+            reads[static_cast<std::size_t>(pick)] = true;
+        }
+    };
+    cover(forbidden, all);
+    std::vector<bool> any = all;
+    cover(own, any);
+    std::vector<IncidenceRead> reads;
+    for (std::size_t i = 0; i < rule.nodes.size(); ++i)
+        reads.push_back(all[i] ? IncidenceRead::AllEdges : any[i] ? IncidenceRead::PatternEdges : IncidenceRead::None);
     return reads;
 }
 

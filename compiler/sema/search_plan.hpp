@@ -24,6 +24,6 @@ namespace g2d::sema {
 // Rule::repairRadius of a rule whose match and negative conditions are built.
 int repairRadius(const ir::Rule& rule);
 // Rule::readsIncidence of a rule whose match and negative conditions are built.
-std::vector<bool> incidenceReaders(const ir::Rule& rule);
+std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule);
 
 }  // namespace g2d::sema

@@ -189,7 +189,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 retireIfSpent(grp);   // before the repair: a spent rule needs none
                 g.takeDirty(changed, edgesChanged);
                 try {
-                    sets.update(g, changed, edgesChanged);
+                    sets.update(g, changed, edgesChanged, step);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
                     if (tracer) tracer->stepDone(step, g);

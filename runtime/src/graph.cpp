@@ -110,12 +110,12 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
     auto& rec = edges_[e];
     if (!rec.alive || !nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("reconnecting a dead edge or to a dead node");
     if (rec.src == src && rec.dst == dst) return;
-    touchEdge(e);
+    touchEdgeItself(e);
     unlink(e);
     rec.src = src;
     rec.dst = dst;
     link(e);
-    touchEdge(e);
+    touchEdgeItself(e);
 }
 
 void Graph::setNodeAttr(NodeId n, int i, Value v) {
@@ -124,8 +124,12 @@ void Graph::setNodeAttr(NodeId n, int i, Value v) {
 }
 
 void Graph::setEdgeAttr(EdgeId e, int i, Value v) {
+    initEdgeAttr(e, i, std::move(v));
+    touchEdgeItself(e);
+}
+
+void Graph::initEdgeAttr(EdgeId e, int i, Value v) {
     pool_[edges_[e].kind][attrIndex(edges_[e].kind, edges_[e].slot, i)] = std::move(v);
-    touchEdge(e);
 }
 
 const std::vector<StyleOverride>& Graph::nodeStyle(NodeId n) const {

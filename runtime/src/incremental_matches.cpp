@@ -56,7 +56,7 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
 }
 
 void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly) {
+                                const std::vector<NodeId>& edgesOnly, long long step) {
     if (itself.empty() && edgesOnly.empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     // When the step changed at least half of the nodes (a parallel step
@@ -78,8 +78,11 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             region(g, itself, edgesOnly, radius_[r]);
             areaRadius = radius_[r];
         }
-        const RepairArea area{area_, seen_.data(), mark_};
-        for (NodeId n : area_) set.removeTouching(n, !area.full(n));
+        const RepairArea area{area_, seen_.data(), mark_, step};
+        for (NodeId n : area_) {
+            if (area.full(n)) set.removeTouching(n);
+            else set.removeBrokenAt(n, g);
+        }
         rules_.repair(r, g, area, set, found_);
     }
 }
@@ -102,6 +105,9 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
             if (!full && !set.readsIncidence(p)) continue;
             const int kind = kinds[static_cast<std::size_t>(p)];
             if (kind >= 0 && kind != g.nodeKind(h)) continue;
+            // Only the edges changed, and this pattern node reads only its own
+            // edges: most matches found here were kept.
+            const bool maybeKept = !full && !set.readsAllEdges(p);
             scratch.reset(nn, set.edges());
             findAnchored(rule, g, p, h, scratch);
             for (std::size_t i = 0; i < scratch.size(); ++i) {
@@ -109,7 +115,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
                 // Keep it only from the first of its anchors that is searched.
                 bool first = true;
                 for (int q = 0; q < p && first; ++q) first = !area.searched(set.readsIncidence(q), ids[q]);
-                if (first) set.add(ids, g);
+                if (first && (!maybeKept || area.lacks(g, set, ids, ids + nn))) set.add(ids, g);
             }
         }
     }

@@ -6,12 +6,12 @@
 
 namespace g2d::rt {
 
-MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsIncidence)
+MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads)
     : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)),
       stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 2 : 0)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
-    if (readsIncidence.size() != static_cast<std::size_t>(nodes)) readsIncidence.assign(static_cast<std::size_t>(nodes), true);
-    for (bool r : readsIncidence) reads_.push_back(r ? 1 : 0);
+    if (reads.size() != static_cast<std::size_t>(nodes)) reads.assign(static_cast<std::size_t>(nodes), Incidence::AllEdges);
+    for (Incidence r : reads) reads_.push_back(static_cast<std::uint8_t>(r));
 }
 
 long long MatchSet::ageSum(Id id) const {
@@ -83,6 +83,20 @@ void MatchSet::remove(Id id) {
 void MatchSet::unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads) {
     if (n >= heads.size()) return;
     while (heads[n] != kNoId) remove(static_cast<Id>(heads[n] / stride_));
+}
+
+void MatchSet::unlinkBroken(NodeId n, const Graph& g) {
+    std::uint32_t link = head_[n];
+    while (link != kNoId) {
+        const std::uint32_t next = rec_[link];   // read before a removal unlinks it
+        const Id id = static_cast<Id>(link / stride_);
+        const int position = static_cast<int>((link - id * stride_ - width_ - 1) / 2);
+        bool broken = reads_[static_cast<std::size_t>(position)] == kAll;
+        const std::uint32_t* edges = data(id) + nn_;
+        for (int i = 0; i < ne_ && !broken; ++i) broken = !g.edgeAlive(edges[i]);
+        if (broken) remove(id);
+        link = next;
+    }
 }
 
 void MatchSet::clear() {

@@ -424,7 +424,7 @@ namespace {
 // Counts how often each rule's matches are repaired after a step.
 class CountingRules : public rt::RuleSet {
 public:
-    explicit CountingRules(rt::RuleSet& inner) : inner_(inner), repairs(inner.ruleCount(), 0) {}
+    explicit CountingRules(rt::RuleSet& inner) : inner_(inner), repairs(inner.ruleCount(), 0), added(inner.ruleCount()) {}
     std::size_t ruleCount() const override { return inner_.ruleCount(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return inner_.info(rule); }
     void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override { inner_.findMatches(rule, g, out); }
@@ -433,7 +433,9 @@ public:
     }
     void repair(std::size_t rule, const rt::Graph& g, const rt::RepairArea& area, rt::MatchSet& set, rt::MatchBuffer& scratch) override {
         ++repairs[rule];
+        const std::size_t before = set.size();   // after the broken matches were dropped
         inner_.repair(rule, g, area, set, scratch);
+        added[rule].push_back(static_cast<long long>(set.size() - before));
     }
     void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override {
         inner_.writeSet(rule, daughter, m, out);
@@ -448,6 +450,7 @@ private:
 
 public:
     std::vector<long long> repairs;
+    std::vector<std::vector<long long>> added;   // per rule, per repair: the matches it added
 };
 }  // namespace
 
@@ -485,4 +488,51 @@ TEST_CASE("a priority whose limit is used up is no longer kept up to date", "[ru
     const int p = kindIndex(prog, "P");
     for (rt::NodeId n : whole.run.graph().nodesOfKind(p)) walked += std::get<long long>(whole.run.graph().nodeAttr(n, 0));
     CHECK(walked == 20);
+}
+
+TEST_CASE("edge changes alone keep the matches they do not break", "[run][incremental]") {
+    // Splitting a→b of a path into a→p→b adds the two new edges' matches and
+    // no other: the match of the next edge b→c, whose source b only saw its
+    // edges change, stays in the set instead of being dropped and found again.
+    std::string qs;
+    for (int i = 0; i < 20; ++i) qs += " q" + std::to_string(i) + ": Q at (" + std::to_string(i) + ", 5);";
+    const std::string src = "node P; node Q;\nedge E directed;\n"
+                            "axiom { a: P at (0, 0); b: P at (1, 0); c: P at (2, 0); d: P at (3, 0); a -[E]-> b; b -[E]-> c; c -[E]-> d;" +
+                            qs + " }\nlimit 12;\n"
+                            "rule Split { match { s: P; e: P; old: s -[E]-> e; } produce { s; e; p: P at (0, 1); s -[E]-> p; p -[E]-> e; } }\n";
+    auto compiled = test::compile(src);
+    REQUIRE(compiled.program);
+    rt::Rng rng(3);
+    auto [st, g] = test::startInterpreter(*compiled.program, rng);
+    interp::InterpretedRules inner(st);
+    CountingRules rules(inner);
+    rt::DerivationLimits limits;
+    limits.steps = 12;
+    const auto result = rt::derive(g, rules, rng, limits);
+    CHECK(result.steps == 12);
+    CHECK(g.edgeCount() == 15);
+    CHECK(rules.added[0] == std::vector<long long>(12, 2));
+}
+
+TEST_CASE("a kept edge whose attribute changes is matched again", "[run][incremental]") {
+    // Count raises w on the one edge; Done needs w == 3. Only the edge's
+    // attribute changes, never a node: its ends must still be searched again.
+    auto r = derive("node P { done: bool = false; }\nedge E directed { w: int = 0; }\n"
+                    "axiom { a: P at (0, 0); b: P at (1, 0); a -[E]-> b; }\nlimit 10;\n"
+                    "rule Count priority 1 { match { a: P; b: P; e: a -[E]-> b where e.w < 3; } produce { a; b; e { w = e.w + 1 }; } }\n"
+                    "rule Done { match { a: P where not a.done; b: P; e: a -[E]-> b where e.w == 3; } produce { a { done = true }; b; e; } }\n");
+    CHECK(r.run.derivation.steps == 4);
+    CHECK(r.run.derivation.stopped == rt::StopReason::Terminal);
+    CHECK(std::get<bool>(r.run.graph().nodeAttr(0, 0)));
+}
+
+TEST_CASE("a kept edge moved to other ends is matched there", "[run][incremental]") {
+    // Move swings x's edge from a over to b; Seen then needs an edge into b.
+    auto r = derive("node P { seen: bool = false; }\nnode X;\nedge E directed;\n"
+                    "axiom { a: P at (0, 0); b: P at (1, 0); x: X at (0, 1); x -[E]-> a; a -[E]-> b; }\nlimit 10;\n"
+                    "rule Move priority 1 { match { x: X; a: P; b: P; e: x -[E]-> a; f: a -[E]-> b; } produce { x; a; b; f; e: x -[E]-> b; } }\n"
+                    "rule Seen { match { x: X; b: P where not b.seen and b.id == 1; e: x -[E]-> b; } produce { x; b { seen = true }; e; } }\n");
+    CHECK(r.run.derivation.steps == 2);
+    CHECK(r.run.derivation.stopped == rt::StopReason::Terminal);
+    CHECK(std::get<bool>(r.run.graph().nodeAttr(1, 0)));
 }

@@ -52,9 +52,9 @@ struct RuleInfo {
     std::vector<int> nodeKinds;
     int edgeCount = 0;
     int radius = 0;
-    // Per pattern node: whether edge changes alone at its host matter (see
+    // Per pattern node: which edge changes alone at its host matter (see
     // IncrementalMatches); empty means all do.
-    std::vector<bool> readsIncidence;
+    std::vector<Incidence> readsIncidence;
 };
 
 // The nodes around a step's changes whose matches a rule finds again
@@ -65,6 +65,8 @@ struct RepairArea {
     std::span<const NodeId> nodes;
     const std::uint32_t* seen = nullptr;
     std::uint32_t mark = 0;
+    long long step = 0;   // the step just applied: the edges it added are this old
+    bool contains(NodeId h) const { return (seen[h] >> 1) == mark; }
     // Whether host `h` is searched at a pattern node (`reads`: that node reads
     // incidences). A match found from several anchors is kept only from the
     // first of its pattern nodes whose host is searched.
@@ -74,6 +76,17 @@ struct RepairArea {
     }
     // For a node of `nodes`: whether it is searched at every pattern node.
     bool full(NodeId h) const { return (seen[h] & 1) != 0; }
+    // For a match found from a node whose edges alone changed, at a pattern
+    // node reading only the pattern's edges: whether the set lacks it, i.e.
+    // it binds an edge the step added, a node that changed itself, or an
+    // area node at a pattern node reading every edge (else it was kept).
+    bool lacks(const Graph& g, const MatchSet& set, const NodeId* n, const EdgeId* e) const {
+        for (int i = 0; i < set.edges(); ++i)
+            if (g.edgeAge(e[i]) == step) return true;
+        for (int i = 0; i < set.nodes(); ++i)
+            if (contains(n[i]) && (full(n[i]) || set.readsAllEdges(i))) return true;
+        return false;
+    }
 };
 
 // Elements a chosen daughter deletes or changes (for parallel steps).

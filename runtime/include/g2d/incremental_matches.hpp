@@ -6,9 +6,16 @@
 // only its own elements (a changed edge or attribute marks its nodes), so
 // the radius is 0 unless negative conditions look further; a rule whose
 // negative condition is not connected to its match is searched in full.
-// A node whose edges alone changed is revisited only at the pattern nodes
-// that read incidences (RuleInfo::readsIncidence): a resource whose token
-// moves does not re-find every request pairing it with each process. A match found
+// A node whose edges alone changed (one was added or removed) is revisited
+// only at the pattern nodes that read incidences (RuleInfo::readsIncidence):
+// a resource whose token moves does not re-find every request pairing it
+// with each process. Where such a pattern node reads only the pattern's own
+// edges, a match binding the node there is dropped only if it binds a removed
+// edge, and of the matches found there only those the set lacks are added
+// (RepairArea::lacks: a new edge, an edge's age being the step that made
+// it): splitting one edge of a path leaves the next edge's match in place.
+// An edge whose attributes or ends change marks its ends as changed
+// themselves. A match found
 // from several anchors is kept only from its first pattern node bound inside
 // the repaired area, so no lookup is needed to avoid duplicates. A step thus
 // costs what changed, not the size of the graph. Two exceptions: after a
@@ -37,7 +44,8 @@ public:
     void retire(std::size_t rule);
     // Repairs every rule's set after the nodes in `itself` changed, and those
     // in `edgesOnly` saw only edges change (Graph::takeDirty).
-    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly);
+    // `step` is the step just applied.
+    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, long long step);
     // Throws std::logic_error unless every rule's set holds exactly the
     // matches a full search finds (the tests check this after every step).
     void verify(const Graph& g, long long step);

@@ -21,6 +21,14 @@
 
 namespace g2d::rt {
 
+// What a pattern node's matches read of the edges at its host node beyond
+// what the other pattern nodes read (see IncrementalMatches):
+enum class Incidence : std::uint8_t {
+    None,          // nothing: edge changes there alone leave its matches
+    PatternEdges,  // the pattern's own edges: a removed one breaks a match, a new one may make one
+    AllEdges,      // every edge (degrees, negative conditions): any change may make or break one
+};
+
 // One match: the host nodes bound to the pattern's nodes, and the host edges
 // bound to its edges, in pattern order. A view: valid while what it points
 // into is unchanged.
@@ -63,21 +71,29 @@ private:
 
 class MatchSet {
 public:
-    // `readsIncidence[i]`: pattern node i is indexed apart, so that matches
-    // binding a node there can be dropped alone (empty: every node).
-    MatchSet(int nodes, int edges, bool byAge, std::vector<bool> readsIncidence = {});
+    // `reads[i]`: what pattern node i reads of its host's edges; the nodes
+    // that read any are indexed apart, so that matches binding a node there
+    // can be dropped alone (empty: every node reads every edge).
+    MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads = {});
 
     // Adds a match (nodes, then edges); the caller guarantees it is not there yet.
     void add(const std::uint32_t* ids, const Graph& g);
     void add(const NodeId* nodes, const EdgeId* edges, const Graph& g);
-    // Removes every match that binds node `n`, or (incidenceOnly) every match
-    // binding it at a pattern node that reads incidences.
+    // Removes every match that binds node `n`.
     // Inline: most nodes of a repaired area head no list of a given rule.
-    void removeTouching(NodeId n, bool incidenceOnly = false) {
+    void removeTouching(NodeId n) {
         if (n < head_.size() && head_[n] != kNoId) unlinkAll(n, head_);
-        if (!incidenceOnly && n < headOther_.size() && headOther_[n] != kNoId) unlinkAll(n, headOther_);
+        if (n < headOther_.size() && headOther_[n] != kNoId) unlinkAll(n, headOther_);
     }
+    // Removes the matches that only edge changes at node `n` break: those
+    // binding it at a pattern node reading every edge, and those binding a
+    // removed edge (found through their pattern nodes that read edges).
+    void removeBrokenAt(NodeId n, const Graph& g) {
+        if (n < head_.size() && head_[n] != kNoId) unlinkBroken(n, g);
+    }
+    // Whether pattern node `node` reads its host's edges (any, or all).
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
+    bool readsAllEdges(int node) const { return reads_[static_cast<std::size_t>(node)] == kAll; }
     void clear();
     // Empties the set and gives its memory back.
     void release();
@@ -120,11 +136,13 @@ private:
     GrowArray<std::uint32_t> rec_;           // stride_ words per id
     GrowArray<Id> live_;
     GrowArray<Id> free_;
-    std::vector<std::uint8_t> reads_;        // per pattern node (bytes: read on every add)
+    static constexpr std::uint8_t kAll = static_cast<std::uint8_t>(Incidence::AllEdges);
+    std::vector<std::uint8_t> reads_;        // per pattern node, an Incidence (bytes: read on every add)
     GrowArray<std::uint32_t> head_;          // per node: positions reading incidences
     GrowArray<std::uint32_t> headOther_;     // per node: the other positions
     GrowArray<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] != 0 ? head_ : headOther_; }
     void unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads);
+    void unlinkBroken(NodeId n, const Graph& g);
     AgeBuckets ageBuckets_;
 };
 
