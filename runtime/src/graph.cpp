@@ -1,5 +1,6 @@
 #include "g2d/graph.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace g2d::rt {
@@ -79,7 +80,7 @@ void Graph::deadEndpoint() { throw std::logic_error("edge endpoint is not a live
 
 void Graph::dropEdgeExtras(EdgeRec& rec, EdgeId e) {
     clearAttrBlock(rec.kind, rec.slot);
-    if (rec.styled) edgeStyles_.erase(e);
+    if (rec.styled) dropStyleList(edgeStyleList_, e);
     rec.styled = false;
 }
 
@@ -101,7 +102,7 @@ void Graph::removeNode(NodeId n) {
     allNodes_.pop_back();
     rec.alive = false;
     clearAttrBlock(rec.kind, rec.slot);
-    if (rec.styled) nodeStyles_.erase(n);
+    if (rec.styled) dropStyleList(nodeStyleList_, n);
     rec.styled = false;
     --liveNodes_;
 }
@@ -133,21 +134,23 @@ void Graph::initEdgeAttr(EdgeId e, int i, Value v) {
 }
 
 const std::vector<StyleOverride>& Graph::nodeStyle(NodeId n) const {
-    return nodes_[n].styled ? nodeStyles_.at(n) : kNoStyle;
+    return nodes_[n].styled ? styleLists_[nodeStyleList_[n]] : kNoStyle;
 }
 
 const std::vector<StyleOverride>& Graph::edgeStyle(EdgeId e) const {
-    return edges_[e].styled ? edgeStyles_.at(e) : kNoStyle;
+    return edges_[e].styled ? styleLists_[edgeStyleList_[e]] : kNoStyle;
 }
 
 void Graph::setNodeStyle(NodeId n, const std::string& prop, Value v) {
+    auto& list = styleListOf(nodeStyleList_, n, nodes_.size());
     nodes_[n].styled = true;
-    setStyle(nodeStyles_[n], prop, std::move(v));
+    setStyle(list, prop, std::move(v));
 }
 
 void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v) {
+    auto& list = styleListOf(edgeStyleList_, e, edges_.size());
     edges_[e].styled = true;
-    setStyle(edgeStyles_[e], prop, std::move(v));
+    setStyle(list, prop, std::move(v));
 }
 
 void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly) {
@@ -184,7 +187,31 @@ std::size_t Graph::memoryBytes() const {
                         allNodes_.capacity() * sizeof(NodeId) + dirty_.capacity() * sizeof(NodeId);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
+    bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity() + freeStyleLists_.capacity()) * sizeof(std::uint32_t);
+    for (const auto& l : styleLists_) bytes += sizeof l + l.capacity() * sizeof(StyleOverride);
     return bytes;
+}
+
+std::vector<StyleOverride>& Graph::styleListOf(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity) {
+    if (id >= lists.size()) lists.resize(std::max<std::size_t>(capacity, id + 1) + capacity / 2, kNoId);
+    std::uint32_t& list = lists[id];
+    if (list == kNoId) {
+        if (!freeStyleLists_.empty()) {
+            list = freeStyleLists_.back();
+            freeStyleLists_.pop_back();
+        } else {
+            list = static_cast<std::uint32_t>(styleLists_.size());
+            styleLists_.emplace_back();
+        }
+    }
+    return styleLists_[list];
+}
+
+void Graph::dropStyleList(GrowArray<std::uint32_t>& lists, std::uint32_t id) {
+    std::uint32_t& list = lists[id];
+    styleLists_[list].clear();   // keeps its capacity for the next styled element
+    freeStyleLists_.push_back(list);
+    list = kNoId;
 }
 
 void Graph::setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v) {

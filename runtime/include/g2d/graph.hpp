@@ -10,14 +10,13 @@
 // Per-kind node indexes make a search's first step O(1) per candidate.
 // Attributes live in per-kind pools (an element's `slot` indexes its kind's
 // pool); a compiled grammar keeps them in its own typed arrays instead and
-// uses the slot for those. Style overrides are rare and live in a side table.
+// uses the slot for those. Style overrides are rare and live in pooled lists.
 //
 // Element classes are explicit (nodes, edges) so that faces can be added as
 // a third class with their own index and incidences.
 #include <cstdint>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "g2d/grow_array.hpp"
@@ -203,8 +202,15 @@ private:
     GrowArray<EdgeRec> edges_;
     std::vector<GrowArray<NodeId>> kindNodes_;
     GrowArray<NodeId> allNodes_;
-    std::unordered_map<NodeId, std::vector<StyleOverride>> nodeStyles_;
-    std::unordered_map<EdgeId, std::vector<StyleOverride>> edgeStyles_;
+    // Style overrides: an element's list (by index, kNoId for none; sized
+    // when the first element of its class gets one). Lists of removed
+    // elements are emptied and reused, so that restyling grammars allocate
+    // nothing per element once warm.
+    GrowArray<std::uint32_t> nodeStyleList_, edgeStyleList_;
+    std::vector<std::vector<StyleOverride>> styleLists_;
+    std::vector<std::uint32_t> freeStyleLists_;
+    std::vector<StyleOverride>& styleListOf(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity);
+    void dropStyleList(GrowArray<std::uint32_t>& lists, std::uint32_t id);
     std::size_t liveNodes_ = 0, liveEdges_ = 0;
     std::vector<NodeId> dirty_;
 };
