@@ -115,10 +115,11 @@ public:
         clear();
         resize(n, fill);
     }
-    // At least `n` elements of room; grows geometrically.
+    // At least `n` elements of room; grows geometrically, from 4 KiB (a
+    // small graph's columns then grow a few times, not a dozen).
     void reserve(std::size_t n) {
         if (n <= capacity_) return;
-        std::size_t wanted = std::max<std::size_t>({n, capacity_ * 2, 16});
+        std::size_t wanted = std::max<std::size_t>({n, capacity_ * 2, kFirstCapacity});
         if (wanted > max_size()) {
             if (n > max_size()) throw std::bad_alloc();
             wanted = max_size();
@@ -130,6 +131,7 @@ public:
     static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
 
 private:
+    static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(16, 4096 / sizeof(T));
     T* data_ = nullptr;
     std::size_t size_ = 0;
     std::size_t capacity_ = 0;
