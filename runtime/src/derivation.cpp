@@ -48,7 +48,9 @@ struct Group {
 };
 
 // Applies a maximal set of non-overlapping matches, all found before the
-// step. Marks are step-stamped arrays, so a step costs O(matches).
+// step: taken in the order drawn (shuffled, or oldest first), with their
+// daughters drawn then, and rewritten in the set's order. Marks are
+// step-stamped arrays, so a step costs O(matches).
 class ParallelStep {
 public:
     // Returns how many matches were rewritten.
@@ -78,7 +80,7 @@ public:
         grow(writtenNodes_, g.nodeCapacity());
         grow(readEdges_, g.edgeCapacity());
         grow(writtenEdges_, g.edgeCapacity());
-        std::size_t applied = 0;
+        taken_.clear();
         for (std::uint32_t i : order_) {
             const Match m{&batch_[i * width], &batch_[i * width] + nn};
             bool clash = false;
@@ -95,12 +97,19 @@ public:
             for (int k = 0; k < ne; ++k) readEdges_[m.edges[k]] = stamp_;
             for (NodeId n : writes_.nodes) writtenNodes_[n] = stamp_;
             for (EdgeId e : writes_.edges) writtenEdges_[e] = stamp_;
-            if (tracer) tracer->applying(rule, daughter, m, g);
-            rules.prepare(rule, daughter, m, g, rng, step);
-            ++applied;
+            taken_.push_back(Taken{i, static_cast<std::uint32_t>(daughter)});
+        }
+        // Rewrite the taken matches in the set's order, not the draw's: the
+        // set holds them roughly as the graph stores their elements, so the
+        // rewrite walks memory forward instead of jumping across it.
+        std::sort(taken_.begin(), taken_.end(), [](const Taken& a, const Taken& b) { return a.match < b.match; });
+        for (const Taken& t : taken_) {
+            const Match m{&batch_[t.match * width], &batch_[t.match * width] + nn};
+            if (tracer) tracer->applying(rule, t.daughter, m, g);
+            rules.prepare(rule, t.daughter, m, g, rng, step);
         }
         rules.commit(g, step);
-        return applied;
+        return taken_.size();
     }
 
 private:
@@ -108,6 +117,10 @@ private:
         if (v.size() < n) v.resize(n + n / 2, 0);
     }
     std::vector<std::uint32_t> batch_, order_;
+    struct Taken {
+        std::uint32_t match, daughter;   // the match's place in batch_, its daughter
+    };
+    std::vector<Taken> taken_;
     std::vector<long long> sums_;
     std::vector<std::uint32_t> readNodes_, writtenNodes_, readEdges_, writtenEdges_;
     std::uint32_t stamp_ = 0;

@@ -272,6 +272,20 @@ TEST_CASE("a parallel step rewrites every non-overlapping match at once", "[run]
     CHECK(r.run.graph().nodeCount() == 2);
 }
 
+TEST_CASE("a parallel step rewrites the taken matches in the set's order", "[run][parallel]") {
+    // The ten P nodes' matches are drawn in random order but rewritten in the
+    // match set's (here the nodes' own), so the k-th new Q node is P k's.
+    std::string ps;
+    for (int i = 0; i < 10; ++i) ps += " p" + std::to_string(i) + ": P at (" + std::to_string(i) + ", 0);";
+    for (std::uint64_t seed : {1, 2, 3}) {
+        auto r = derive("node P; node Q;\naxiom {" + ps + " }\nlimit 1;\n"
+                        "rule Mark parallel { match { x: P; } produce { x; y: Q at x.pos + (0, 1); } }\n", seed);
+        const auto& g = r.run.graph();
+        REQUIRE(g.nodeCount() == 20);
+        for (rt::NodeId k = 0; k < 10; ++k) CHECK(g.pos(10 + k).x == static_cast<double>(k));
+    }
+}
+
 TEST_CASE("automatic placement follows the match (thesis Fig. 5.3)", "[run][placement]") {
     auto r = derive("node V; edge E directed;\naxiom { a: V at (0, 0); b: V at (1, 1); a -[E]-> b; }\nlimit 1;\n"
                     "rule Double { match { x: V @ (0, 0); y: V @ (1, 0); x -[E]-> y; } "

@@ -23,7 +23,10 @@
 //   4. whatever the daughter's expressions draw, in source order.
 // A parallel step shuffles the matches (random) or sorts them oldest first,
 // then takes each match that does not overlap those already taken, drawing
-// its daughter (3) and evaluating its expressions (4) in that order.
+// its daughter (3) in that order; then it evaluates the taken matches'
+// expressions (4) and rewrites them in the order of the rule's match set
+// (which matches are taken is the draw's; the set's order keeps the
+// rewrite's memory accesses close together).
 #include <chrono>
 #include <cstdint>
 #include <functional>
