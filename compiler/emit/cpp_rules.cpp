@@ -65,6 +65,14 @@ private:
     }
 
     // Nested blocks for plan[i..]; `onComplete` is the innermost code.
+    // Set while a repair's search is generated: a test, true for a match to
+    // drop, emitted where the last of the pattern's edges is bound.
+    std::string newEdgeGate_;
+    std::string gate(const ir::NegativeCondition* nac, const std::vector<int>& boundEdges, const std::string& in) const {
+        if (nac || newEdgeGate_.empty() || boundEdges.size() + 1 != r_.edges.size()) return "";
+        return in + "if (" + newEdgeGate_ + ") continue;\n";
+    }
+
     void steps(const std::vector<PlanStep>& plan, std::size_t i, const ir::NegativeCondition* nac,
                std::vector<int> boundNodes, std::vector<int> boundEdges, const std::string& onComplete,
                std::string& out, const std::string& in) {
@@ -122,6 +130,7 @@ private:
             const std::string used = notUsedEdge(ed);
             out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
                    ") continue;\n";
+            out += gate(nac, boundEdges, body);
             if (directed)
                 out += body + nd + " = " + (s.fromIsSource ? "g.target(" : "g.source(") + ed + ");\n";
             else
@@ -152,6 +161,7 @@ private:
                                               : "((" + a + " == " + hs + " && " + b + " == " + hd + ") || (" + a +
                                                     " == " + hd + " && " + b + " == " + hs + "))";
             out += body + "if (!" + fits + ") continue;\n";
+            out += gate(nac, boundEdges, body);
             boundEdges.push_back(s.edge);
             out += body + "{\n";
             steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
@@ -237,16 +247,24 @@ private:
             out += "            if (" + cond + ") {\n";
             out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
             out += "                n[" + str(p) + "] = h;\n";
-            // Kept only from the first of its anchors that is searched.
-            std::string first;
-            for (int q = 0; q < p; ++q)
-                first += " && !area.searched(" + std::string(readsIncidence(q) ? "true" : "false") + ", n[" + str(q) + "])";
+            // Kept only from the first of its anchors that adds it
+            // (RepairArea::bindsNewEdge).
+            std::string searchedFirst = "true", staleFirst = "true";
+            for (int q = 0; q < p; ++q) {
+                searchedFirst += " && !area.searched(" + std::string(readsIncidence(q) ? "true" : "false") + ", n[" + str(q) + "])";
+                staleFirst += " && !area.stale(n[" + str(q) + "], " + (reads(q) == ir::IncidenceRead::AllEdges ? "true" : "false") + ")";
+            }
+            std::string fresh = "false";
+            for (std::size_t k = 0; k < r_.edges.size(); ++k) fresh += " || g.edgeAge(e[" + str(static_cast<int>(k)) + "]) == area.step";
+            const std::string first = p == 0 ? "" : " && ((" + fresh + ") ? (" + searchedFirst + ") : (" + staleFirst + "))";
             // From a node whose edges alone changed, reading only the
-            // pattern's edges: only the matches the set lacks.
-            const std::string lacking = reads(p) == ir::IncidenceRead::PatternEdges ? " && (full || area.lacks(g, set, n, e))" : "";
+            // pattern's edges: only matches binding a new edge, dropped as
+            // soon as the last edge is bound.
+            if (reads(p) == ir::IncidenceRead::PatternEdges) newEdgeGate_ = "!full && !(" + fresh + ")";
             std::string body;
             steps(r_.anchoredPlans[p], 0, nullptr, {p}, {}, "@@COMPLETE@@", body, "                ");
-            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + lacking + ") set.add(n, e, g);\n");
+            newEdgeGate_.clear();
+            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, g);\n");
             out += body + "            }\n";
         }
         return out + "        }\n    }\n\n";

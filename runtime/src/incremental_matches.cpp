@@ -106,16 +106,19 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
             const int kind = kinds[static_cast<std::size_t>(p)];
             if (kind >= 0 && kind != g.nodeKind(h)) continue;
             // Only the edges changed, and this pattern node reads only its own
-            // edges: most matches found here were kept.
-            const bool maybeKept = !full && !set.readsAllEdges(p);
+            // edges: only matches binding a new edge are added from here.
+            const bool newEdgesOnly = !full && !set.readsAllEdges(p);
             scratch.reset(nn, set.edges());
             findAnchored(rule, g, p, h, scratch);
             for (std::size_t i = 0; i < scratch.size(); ++i) {
                 const std::uint32_t* ids = scratch.ids(i);
-                // Keep it only from the first of its anchors that is searched.
+                const bool fresh = area.bindsNewEdge(g, ids + nn, set.edges());
+                if (newEdgesOnly && !fresh) continue;
+                // Keep it only from the first of its anchors that adds it.
                 bool first = true;
-                for (int q = 0; q < p && first; ++q) first = !area.searched(set.readsIncidence(q), ids[q]);
-                if (first && (!maybeKept || area.lacks(g, set, ids, ids + nn))) set.add(ids, g);
+                for (int q = 0; q < p && first; ++q)
+                    first = fresh ? !area.searched(set.readsIncidence(q), ids[q]) : !area.stale(ids[q], set.readsAllEdges(q));
+                if (first) set.add(ids, g);
             }
         }
     }

@@ -79,17 +79,19 @@ struct RepairArea {
     }
     // For a node of `nodes`: whether it is searched at every pattern node.
     bool full(NodeId h) const { return (seen[h] & 1) != 0; }
-    // For a match found from a node whose edges alone changed, at a pattern
-    // node reading only the pattern's edges: whether the set lacks it, i.e.
-    // it binds an edge the step added, a node that changed itself, or an
-    // area node at a pattern node reading every edge (else it was kept).
-    bool lacks(const Graph& g, const MatchSet& set, const NodeId* n, const EdgeId* e) const {
-        for (int i = 0; i < set.edges(); ++i)
+    // Whether a match binds an edge the step added. Such a match is added
+    // from the first of its pattern nodes whose host is searched; any other
+    // match the set lacks (it binds a node that changed itself, or an area
+    // node at a pattern node reading every edge) from the first of those
+    // (`stale`). A node whose edges alone changed, searched at a pattern
+    // node reading only the pattern's edges, thus adds only matches binding
+    // a new edge: the others were kept.
+    bool bindsNewEdge(const Graph& g, const EdgeId* e, int edges) const {
+        for (int i = 0; i < edges; ++i)
             if (g.edgeAge(e[i]) == step) return true;
-        for (int i = 0; i < set.nodes(); ++i)
-            if (contains(n[i]) && (full(n[i]) || set.readsAllEdges(i))) return true;
         return false;
     }
+    bool stale(NodeId h, bool readsAllEdges) const { return contains(h) && (full(h) || readsAllEdges); }
 };
 
 // Elements a chosen daughter deletes or changes (for parallel steps).
