@@ -41,13 +41,14 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
     std::uint32_t* links = p + width_ + 1;
     for (int i = 0; i < nn_; ++i) {
         const NodeId n = p[i];
-        auto& heads = headFor(i);
-        if (n >= heads.size()) heads.resize(std::max<std::size_t>(g.nodeCapacity(), n + 1) + heads.size() / 2, kNoId);
+        if (2 * std::size_t{n} >= heads_.size())
+            heads_.resize(2 * (std::max<std::size_t>(g.nodeCapacity(), n + 1) + heads_.size() / 4), kNoId);
+        std::uint32_t& head = heads_[headOf(n, i)];
         const std::uint32_t link = linkOf(id, i);
-        links[2 * i] = heads[n];
+        links[2 * i] = head;
         links[2 * i + 1] = kNoId;
-        if (heads[n] != kNoId) rec_[heads[n] + 1] = link;
-        heads[n] = link;
+        if (head != kNoId) rec_[head + 1] = link;
+        head = link;
     }
     if (byAge_) {
         long long sum = 0;
@@ -66,7 +67,7 @@ void MatchSet::remove(Id id) {
         if (prev != kNoId)
             rec_[prev] = next;
         else
-            headFor(i)[p[i]] = next;
+            heads_[headOf(p[i], i)] = next;
         if (next != kNoId) rec_[next + 1] = prev;
     }
     // Out of the live order: swap with the last.
@@ -80,13 +81,12 @@ void MatchSet::remove(Id id) {
     free_.push_back(id);
 }
 
-void MatchSet::unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads) {
-    if (n >= heads.size()) return;
-    while (heads[n] != kNoId) remove(static_cast<Id>(heads[n] / stride_));
+void MatchSet::unlinkAll(std::size_t head) {
+    while (heads_[head] != kNoId) remove(static_cast<Id>(heads_[head] / stride_));
 }
 
 void MatchSet::unlinkBroken(NodeId n, const Graph& g) {
-    std::uint32_t link = head_[n];
+    std::uint32_t link = heads_[2 * std::size_t{n}];
     while (link != kNoId) {
         const std::uint32_t next = rec_[link];   // read before a removal unlinks it
         const Id id = static_cast<Id>(link / stride_);
@@ -103,13 +103,12 @@ void MatchSet::clear() {
     rec_.clear();
     live_.clear();
     free_.clear();
-    head_.clear();
-    headOther_.clear();
+    heads_.clear();
     ageBuckets_.clear();
 }
 
 void MatchSet::release() {
-    for (auto* a : {&rec_, &live_, &free_, &head_, &headOther_}) *a = GrowArray<std::uint32_t>{};
+    for (auto* a : {&rec_, &live_, &free_, &heads_}) *a = GrowArray<std::uint32_t>{};
     ageBuckets_ = AgeBuckets();
 }
 
@@ -125,7 +124,7 @@ Match MatchSet::pickOldest(Rng& rng) {
 }
 
 std::size_t MatchSet::memoryBytes() const {
-    return (rec_.capacity() + live_.capacity() + free_.capacity() + head_.capacity() + headOther_.capacity()) * 4 +
+    return (rec_.capacity() + live_.capacity() + free_.capacity() + heads_.capacity()) * 4 +
            ageBuckets_.memoryBytes();
 }
 

@@ -82,14 +82,16 @@ public:
     // Removes every match that binds node `n`.
     // Inline: most nodes of a repaired area head no list of a given rule.
     void removeTouching(NodeId n) {
-        if (n < head_.size() && head_[n] != kNoId) unlinkAll(n, head_);
-        if (n < headOther_.size() && headOther_[n] != kNoId) unlinkAll(n, headOther_);
+        const std::size_t at = 2 * std::size_t{n};
+        if (at >= heads_.size()) return;
+        if (heads_[at] != kNoId) unlinkAll(at);
+        if (heads_[at + 1] != kNoId) unlinkAll(at + 1);
     }
     // Removes the matches that only edge changes at node `n` break: those
     // binding it at a pattern node reading every edge, and those binding a
     // removed edge (found through their pattern nodes that read edges).
     void removeBrokenAt(NodeId n, const Graph& g) {
-        if (n < head_.size() && head_[n] != kNoId) unlinkBroken(n, g);
+        if (2 * std::size_t{n} < heads_.size() && heads_[2 * std::size_t{n}] != kNoId) unlinkBroken(n, g);
     }
     // Whether pattern node `node` reads its host's edges (any, or all).
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
@@ -138,10 +140,13 @@ private:
     GrowArray<Id> free_;
     static constexpr std::uint8_t kAll = static_cast<std::uint8_t>(Incidence::AllEdges);
     std::vector<std::uint8_t> reads_;        // per pattern node, an Incidence (bytes: read on every add)
-    GrowArray<std::uint32_t> head_;          // per node: positions reading incidences
-    GrowArray<std::uint32_t> headOther_;     // per node: the other positions
-    GrowArray<std::uint32_t>& headFor(int position) { return reads_[static_cast<std::size_t>(position)] != 0 ? head_ : headOther_; }
-    void unlinkAll(NodeId n, GrowArray<std::uint32_t>& heads);
+    // Per node two list heads side by side (one cache line for both): word
+    // 2n heads the list of positions reading incidences, 2n + 1 the others'.
+    GrowArray<std::uint32_t> heads_;
+    std::size_t headOf(NodeId n, int position) const {
+        return 2 * std::size_t{n} + (reads_[static_cast<std::size_t>(position)] != 0 ? 0 : 1);
+    }
+    void unlinkAll(std::size_t head);   // every match of the list heads_[head]
     void unlinkBroken(NodeId n, const Graph& g);
     AgeBuckets ageBuckets_;
 };
