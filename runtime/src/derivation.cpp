@@ -187,6 +187,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                         result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
                     } else {
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
+                        sets.prefetch(g, m, set.nodes(), set.edges());
                         const std::size_t d = pickDaughter(info.weights, rng);
                         if (tracer) tracer->applying(r, d, m, g);
                         rules.prepare(r, d, m, g, rng, step);

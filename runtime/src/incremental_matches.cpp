@@ -87,6 +87,16 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
     }
 }
 
+void IncrementalMatches::prefetch(const Graph& g, Match m, int nodes, int edges) const {
+    for (int i = 0; i < nodes; ++i) {
+        const NodeId n = m.nodes[i];
+        g.prefetchNode(n);
+        if (n < seen_.size()) __builtin_prefetch(&seen_[n]);
+        for (std::size_t r = 0; r < sets_.size() && r < 4; ++r) sets_[r].prefetchHeads(n);
+    }
+    for (int i = 0; i < edges; ++i) g.prefetchEdge(m.edges[i]);
+}
+
 void IncrementalMatches::refill(std::size_t rule, const Graph& g) {
     MatchSet& set = sets_[rule];
     set.clear();

@@ -46,6 +46,10 @@ public:
     // in `edgesOnly` saw only edges change (Graph::takeDirty).
     // `step` is the step just applied.
     void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, long long step);
+    // Prefetches what the next update reads about the nodes of a match
+    // about to be rewritten (their marks, their lists in the first rules'
+    // sets), with the match's own records.
+    void prefetch(const Graph& g, Match m, int nodes, int edges) const;
     // Throws std::logic_error unless every rule's set holds exactly the
     // matches a full search finds (the tests check this after every step).
     void verify(const Graph& g, long long step);

@@ -93,6 +93,9 @@ public:
     void removeBrokenAt(NodeId n, const Graph& g) {
         if (2 * std::size_t{n} < heads_.size() && heads_[2 * std::size_t{n}] != kNoId) unlinkBroken(n, g);
     }
+    void prefetchHeads(NodeId n) const {
+        if (2 * std::size_t{n} < heads_.size()) __builtin_prefetch(&heads_[2 * std::size_t{n}]);
+    }
     // Whether pattern node `node` reads its host's edges (any, or all).
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
     bool readsAllEdges(int node) const { return reads_[static_cast<std::size_t>(node)] == kAll; }
