@@ -329,16 +329,16 @@ private:
         out += "        current_ = names[rule];\n        try {\n";
         out += perRule("            ", [&](std::size_t r) { return "                match_" + str(static_cast<long long>(r)) + "(g, out);\n"; });
         out += catchOp + "    }\n\n";
-        out += "    void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out) override {\n" + names;
+        out += "    void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out, EdgeId newFrom) override {\n" + names;
         out += "        current_ = names[rule];\n        try {\n";
         out += perRule("            ", [&](std::size_t r) {
             std::string t = "                switch (node) {\n";
             for (std::size_t a = 0; a < prog_.rules[r].nodes.size(); ++a)
                 t += "                case " + str(static_cast<long long>(a)) + ": match_" + str(static_cast<long long>(r)) + "_a" +
-                     str(static_cast<long long>(a)) + "(g, host, out); break;\n";
+                     str(static_cast<long long>(a)) + "(g, host, out, newFrom); break;\n";
             return t + "                default: break;\n                }\n";
         });
-        out += "            (void)node; (void)host; (void)g; (void)out;\n" + catchOp + "    }\n\n";
+        out += "            (void)node; (void)host; (void)g; (void)out; (void)newFrom;\n" + catchOp + "    }\n\n";
         out += "    void repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer&) override {\n" + names;
         out += "        current_ = names[rule];\n        try {\n";
         out += perRule("            ", [&](std::size_t r) { return "                repair_" + str(static_cast<long long>(r)) + "(g, area, set);\n"; });

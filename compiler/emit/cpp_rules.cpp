@@ -65,9 +65,16 @@ private:
     }
 
     // Nested blocks for plan[i..]; `onComplete` is the innermost code.
-    // Set while a repair's search is generated: a test, true for a match to
-    // drop, emitted where the last of the pattern's edges is bound.
+    // Set while a search that keeps only matches binding a new edge is
+    // generated: a test, true for a binding to drop, emitted where the last
+    // of the pattern's edges is bound.
     std::string newEdgeGate_;
+    // Whether the bound pattern edges include one whose id is at least `from`.
+    std::string bindsNewEdge(const std::string& from) const {
+        std::string t = "false";
+        for (std::size_t k = 0; k < r_.edges.size(); ++k) t += " || e[" + str(static_cast<int>(k)) + "] >= " + from;
+        return t;
+    }
     std::string gate(const ir::NegativeCondition* nac, const std::vector<int>& boundEdges, const std::string& in) const {
         if (nac || newEdgeGate_.empty() || boundEdges.size() + 1 != r_.edges.size()) return "";
         return in + "if (" + newEdgeGate_ + ") continue;\n";
@@ -203,7 +210,7 @@ private:
     std::string matcher(int anchor) {
         std::string out = anchor < 0 ? "    void match_" + ri_ + "(const Graph& g, MatchBuffer& out) {\n"
                                      : "    void match_" + ri_ + "_a" + str(anchor) +
-                                           "(const Graph& g, NodeId host, MatchBuffer& out) {\n";
+                                           "(const Graph& g, NodeId host, MatchBuffer& out, EdgeId newFrom) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
         out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
         if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
@@ -212,8 +219,14 @@ private:
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
         const std::string push = "out.add(n, e);";
         std::string body;
-        if (anchor < 0) steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
-        else steps(r_.anchoredPlans[anchor], 0, nullptr, {anchor}, {}, "@@COMPLETE@@", body, "        ");
+        if (anchor < 0) {
+            steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
+        } else {
+            out += "        (void)newFrom;\n";
+            newEdgeGate_ = "newFrom != kNoId && !(" + bindsNewEdge("newFrom") + ")";
+            steps(r_.anchoredPlans[anchor], 0, nullptr, {anchor}, {}, "@@COMPLETE@@", body, "        ");
+            newEdgeGate_.clear();
+        }
         // The innermost code, indented where it lands.
         const auto at = body.find("@@COMPLETE@@");
         const auto lineStart = body.rfind('\n', at) + 1;
@@ -254,8 +267,7 @@ private:
                 searchedFirst += " && !area.searched(" + std::string(readsIncidence(q) ? "true" : "false") + ", n[" + str(q) + "])";
                 staleFirst += " && !area.stale(n[" + str(q) + "], " + (reads(q) == ir::IncidenceRead::AllEdges ? "true" : "false") + ")";
             }
-            std::string fresh = "false";
-            for (std::size_t k = 0; k < r_.edges.size(); ++k) fresh += " || g.edgeAge(e[" + str(static_cast<int>(k)) + "]) == area.step";
+            const std::string fresh = bindsNewEdge("area.newEdgesFrom");
             const std::string first = p == 0 ? "" : " && ((" + fresh + ") ? (" + searchedFirst + ") : (" + staleFirst + "))";
             // From a node whose edges alone changed, reading only the
             // pattern's edges: only matches binding a new edge, dropped as

@@ -150,7 +150,7 @@ bool InterpretedRules::tryEdge(const rt::Graph& g, const ir::Rule& r, const ir::
         const bool fits = directed ? (a == from && b == hd) : ((a == from && b == hd) || (a == hd && b == from));
         if (!fits) return false;
         boundEdges_[s.edge] = e;
-        const bool stop = search(g, r, nac, plan, i + 1, onComplete);
+        const bool stop = keptByNewEdgeGate(r, nac) && search(g, r, nac, plan, i + 1, onComplete);
         boundEdges_[s.edge] = kNoId;
         return stop;
     }
@@ -162,7 +162,7 @@ bool InterpretedRules::tryEdge(const rt::Graph& g, const ir::Rule& r, const ir::
     if (std::find(boundNodes_.begin(), boundNodes_.end(), other) != boundNodes_.end()) return false;
     boundEdges_[s.edge] = e;
     boundNodes_[s.node] = other;
-    const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
+    const bool stop = keptByNewEdgeGate(r, nac) && orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
     boundNodes_[s.node] = kNoId;
     boundEdges_[s.edge] = kNoId;
     return stop;
@@ -191,12 +191,24 @@ void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::Mat
 }
 
 void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
-                                    rt::MatchBuffer& out) {
+                                    rt::MatchBuffer& out, rt::EdgeId newEdgesFrom) {
     const ir::Rule& r = st_.prog->rules[rule];
     current_ = &r;
     boundNodes_[node] = host;
+    newEdgesFrom_ = newEdgesFrom;
     collect(g, r, r.anchoredPlans[node], out);
+    newEdgesFrom_ = kNoId;
     boundNodes_[node] = kNoId;
+}
+
+bool InterpretedRules::keptByNewEdgeGate(const ir::Rule& r, const ir::NegativeCondition* nac) const {
+    if (nac || newEdgesFrom_ == kNoId) return true;
+    bool fresh = false;
+    for (std::size_t k = 0; k < r.edges.size(); ++k) {
+        if (boundEdges_[k] == kNoId) return true;   // not all bound yet
+        fresh = fresh || boundEdges_[k] >= newEdgesFrom_;
+    }
+    return fresh;
 }
 
 // ---- rewriting ------------------------------------------------------------------

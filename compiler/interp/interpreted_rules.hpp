@@ -17,7 +17,8 @@ public:
     std::size_t ruleCount() const override { return infos_.size(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
     void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override;
-    void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out) override;
+    void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out,
+                      rt::EdgeId newEdgesFrom = rt::kNoId) override;
     void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override;
     void prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g, rt::Rng& rng,
                  long long step) override;
@@ -51,6 +52,9 @@ private:
     void collect(const rt::Graph& g, const ir::Rule& r, const std::vector<ir::PlanStep>& plan, rt::MatchBuffer& out);
     bool orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const;
     bool nacsHold(const rt::Graph& g, const ir::Rule& r);
+    // While findAnchored keeps only matches binding a new edge: false once
+    // every pattern edge is bound and none is new (RuleSet::findAnchored).
+    bool keptByNewEdgeGate(const ir::Rule& r, const ir::NegativeCondition* nac) const;
     void evaluateValues(const std::vector<ir::AttrAssign>& attrs, const std::vector<ir::StyleAssign>& styles,
                         EvalFrame& f, Values& out);
 
@@ -62,6 +66,7 @@ private:
     std::vector<std::optional<rt::vec2>> placed_;
     std::vector<rt::NodeId> boundNodes_;
     std::vector<rt::EdgeId> boundEdges_;
+    rt::EdgeId newEdgesFrom_ = rt::kNoId;
     std::vector<rt::Value> locals_;
     const ir::Rule* current_ = nullptr;
 };

@@ -56,7 +56,7 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
 }
 
 void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, long long step) {
+                                const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom) {
     if (itself.empty() && edgesOnly.empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     // When the step changed at least half of the nodes (a parallel step
@@ -78,7 +78,7 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             region(g, itself, edgesOnly, radius_[r]);
             areaRadius = radius_[r];
         }
-        const RepairArea area{area_, seen_.data(), mark_, step};
+        const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom};
         for (NodeId n : area_) {
             if (area.full(n)) set.removeTouching(n);
             else set.removeBrokenAt(n, g);
@@ -119,11 +119,10 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
             // edges: only matches binding a new edge are added from here.
             const bool newEdgesOnly = !full && !set.readsAllEdges(p);
             scratch.reset(nn, set.edges());
-            findAnchored(rule, g, p, h, scratch);
+            findAnchored(rule, g, p, h, scratch, newEdgesOnly ? area.newEdgesFrom : kNoId);
             for (std::size_t i = 0; i < scratch.size(); ++i) {
                 const std::uint32_t* ids = scratch.ids(i);
-                const bool fresh = area.bindsNewEdge(g, ids + nn, set.edges());
-                if (newEdgesOnly && !fresh) continue;
+                const bool fresh = area.bindsNewEdge(ids + nn, set.edges());
                 // Keep it only from the first of its anchors that adds it.
                 bool first = true;
                 for (int q = 0; q < p && first; ++q)

@@ -88,7 +88,9 @@ void MatchSet::unlinkAll(std::size_t head) {
 void MatchSet::unlinkBroken(NodeId n, const Graph& g) {
     std::uint32_t link = heads_[2 * std::size_t{n}];
     while (link != kNoId) {
-        const std::uint32_t next = rec_[link];   // read before a removal unlinks it
+        // Read before a removal unlinks it: the next entry belongs to another
+        // match (a match binds a host node once: matching is injective).
+        const std::uint32_t next = rec_[link];
         const Id id = static_cast<Id>(link / stride_);
         const int position = static_cast<int>((link - id * stride_ - width_ - 1) / 2);
         bool broken = reads_[static_cast<std::size_t>(position)] == kAll;

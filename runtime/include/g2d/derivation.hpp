@@ -68,11 +68,11 @@ struct RepairArea {
     std::span<const NodeId> nodes;
     const std::uint32_t* seen = nullptr;
     std::uint32_t mark = 0;
-    long long step = 0;   // the step just applied: the edges it added are this old
+    EdgeId newEdgesFrom = 0;   // the edges the step added have ids from this one on (ids are never reused)
     bool contains(NodeId h) const { return (seen[h] >> 1) == mark; }
     // Whether host `h` is searched at a pattern node (`reads`: that node reads
-    // incidences). A match found from several anchors is kept only from the
-    // first of its pattern nodes whose host is searched.
+    // incidences). A match binding a new edge is added from the first of its
+    // pattern nodes whose host is searched (see bindsNewEdge).
     bool searched(bool reads, NodeId h) const {
         const std::uint32_t s = seen[h];
         return (s >> 1) == mark && ((s & 1) != 0 || reads);
@@ -81,14 +81,14 @@ struct RepairArea {
     bool full(NodeId h) const { return (seen[h] & 1) != 0; }
     // Whether a match binds an edge the step added. Such a match is added
     // from the first of its pattern nodes whose host is searched; any other
-    // match the set lacks (it binds a node that changed itself, or an area
-    // node at a pattern node reading every edge) from the first of those
-    // (`stale`). A node whose edges alone changed, searched at a pattern
-    // node reading only the pattern's edges, thus adds only matches binding
-    // a new edge: the others were kept.
-    bool bindsNewEdge(const Graph& g, const EdgeId* e, int edges) const {
+    // match the set lacks (it binds a node that changed itself or lies in
+    // the radius, or an area node at a pattern node reading every edge) from
+    // the first of those (`stale`). A node whose edges alone changed,
+    // searched at a pattern node reading only the pattern's edges, thus adds
+    // only matches binding a new edge: the others were kept.
+    bool bindsNewEdge(const EdgeId* e, int edges) const {
         for (int i = 0; i < edges; ++i)
-            if (g.edgeAge(e[i]) == step) return true;
+            if (e[i] >= newEdgesFrom) return true;
         return false;
     }
     bool stale(NodeId h, bool readsAllEdges) const { return contains(h) && (full(h) || readsAllEdges); }
@@ -113,7 +113,13 @@ public:
     // `out` (reset by the caller to the rule's widths).
     virtual void findMatches(std::size_t rule, const Graph& g, MatchBuffer& out) = 0;
     // Every match of `rule` that binds pattern node `node` to host node `host`.
-    virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out) = 0;
+    // With `newEdgesFrom` (not kNoId), only those binding an edge whose id is
+    // at least that (an edge the step added): a binding none of whose
+    // pattern edges is new is dropped as soon as its last one is bound, so
+    // conditions searched after that point are not evaluated for it (every
+    // back end drops at the same point).
+    virtual void findAnchored(std::size_t rule, const Graph& g, int node, NodeId host, MatchBuffer& out,
+                              EdgeId newEdgesFrom = kNoId) = 0;
     // Adds to `set` every match of `rule` that binds a node of `area`, each
     // once (the caller has dropped those the set held), in the order of the
     // area's nodes, then pattern nodes, then

@@ -105,6 +105,7 @@ public:
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
     void setNodeAttr(NodeId n, int i, Value v);
+    // Valid until the next style is set on any element (the lists are pooled).
     const std::vector<StyleOverride>& nodeStyle(NodeId n) const;
     // A back end's own handle for the element's attributes (compiled grammars
     // keep them in typed arrays); kNoId until set.

@@ -1,29 +1,29 @@
 #pragma once
 // Every rule's matches, found once on the axiom and then repaired after each
-// step around what the step changed: for each rule, every match binding a
-// node within `radius` edges of a changed node is dropped, and the matches
-// binding such a node are found again by anchored searches. A match reads
-// only its own elements (a changed edge or attribute marks its nodes), so
-// the radius is 0 unless negative conditions look further; a rule whose
-// negative condition is not connected to its match is searched in full.
-// A node whose edges alone changed (one was added or removed) is revisited
-// only at the pattern nodes that read incidences (RuleInfo::readsIncidence):
-// a resource whose token moves does not re-find every request pairing it
-// with each process. Where such a pattern node reads only the pattern's own
-// edges, a match binding the node there is dropped only if it binds a removed
-// edge, and of the matches found there only those the set lacks are added
-// (RepairArea::lacks: a new edge, an edge's age being the step that made
-// it): splitting one edge of a path leaves the next edge's match in place.
-// An edge whose attributes or ends change marks its ends as changed
-// themselves. A match found
-// from several anchors is kept only from its first pattern node bound inside
-// the repaired area, so no lookup is needed to avoid duplicates. A step thus
-// costs what changed, not the size of the graph. Two exceptions: after a
-// step that changed at least half of a graph's nodes (of 64 or more), every
-// rule is searched in full, which is then cheaper; and a rule whose priority
-// limit is used up is retired: its matches are no longer kept, so its
-// conditions are no longer evaluated (nor can their run-time errors stop
-// the derivation).
+// step around what the step changed: for each rule, the matches a change can
+// have broken are dropped, and the matches binding a changed node (or one
+// within `radius` edges of it) that the set lacks are found by anchored
+// searches. A match reads only its own elements (a changed attribute marks
+// its nodes), so the radius is 0 unless negative conditions look further; a
+// rule whose negative condition is not connected to its match is searched in
+// full. A node that changed itself (or lies in the radius) has every match
+// binding it dropped and searched again. A node whose edges alone changed
+// (one was added or removed) is revisited only at the pattern nodes that read
+// incidences (RuleInfo::readsIncidence): a resource whose token moves does
+// not re-find every request pairing it with each process. Where such a
+// pattern node reads only the pattern's own edges, a match binding the node
+// there is dropped only if it binds a removed edge, and only matches binding
+// a new edge are searched from there (new edges have the highest ids, which
+// are never reused): splitting one edge of a path leaves the next edge's
+// match in place. An edge whose attributes or ends change marks its ends as
+// changed themselves. Each missing match is added from exactly one anchor
+// (RepairArea::bindsNewEdge says which), so no lookup is needed to avoid
+// duplicates. A step thus costs what changed, not the size of the graph. Two
+// exceptions: after a step that changed at least half of a graph's nodes (of
+// 64 or more), every rule is searched in full, which is then cheaper; and a
+// rule whose priority limit is used up is retired: its matches are no longer
+// kept, so its conditions are no longer evaluated (nor can their run-time
+// errors stop the derivation).
 #include <cstdint>
 #include <vector>
 
@@ -44,8 +44,8 @@ public:
     void retire(std::size_t rule);
     // Repairs every rule's set after the nodes in `itself` changed, and those
     // in `edgesOnly` saw only edges change (Graph::takeDirty).
-    // `step` is the step just applied.
-    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, long long step);
+    // The step just applied added the edges from id `newEdgesFrom` on.
+    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom);
     // Prefetches what the next update reads about the nodes of a match
     // about to be rewritten (their marks, their lists in the first rules'
     // sets), with the match's own records.
