@@ -92,7 +92,8 @@ void IncrementalMatches::prefetch(const Graph& g, Match m, int nodes, int edges)
         const NodeId n = m.nodes[i];
         g.prefetchNode(n);
         if (n < seen_.size()) __builtin_prefetch(&seen_[n]);
-        for (std::size_t r = 0; r < sets_.size() && r < 4; ++r) sets_[r].prefetchHeads(n);
+        for (std::size_t r = 0; r < sets_.size() && r < 4; ++r)
+            if (!retired_[r]) sets_[r].prefetchHeads(n);
     }
     for (int i = 0; i < edges; ++i) g.prefetchEdge(m.edges[i]);
 }

@@ -119,8 +119,9 @@ public:
     long long edgeAge(EdgeId e) const { return edges_[e].age; }
     const Value& edgeAttr(EdgeId e, int i) const { return pool_[edges_[e].kind][attrIndex(edges_[e].kind, edges_[e].slot, i)]; }
     void setEdgeAttr(EdgeId e, int i, Value v);
-    // The same for an edge added in this step: incremental matching sees all
-    // of a new edge through its age, so its ends need no further mark.
+    // The same for an edge added in this step: incremental matching tells a
+    // new edge by its id (the step's new edges have the highest), so its ends
+    // need no further mark.
     void initEdgeAttr(EdgeId e, int i, Value v);
     const std::vector<StyleOverride>& edgeStyle(EdgeId e) const;
     std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
@@ -149,7 +150,7 @@ public:
     // and nodes only whose incident edges were added or removed. An edge
     // whose attributes or ends change makes its ends count as changed
     // themselves (incremental matching tells an edge the step added by its
-    // age, but keeps no other mark per edge).
+    // id, but keeps no other mark per edge).
     void touchNode(NodeId n) { touch(n, kChangedItself); }
     void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedEdges); touch(edges_[e].dst, kChangedEdges); }
     void touchEdgeItself(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }

@@ -93,6 +93,7 @@ public:
     void removeBrokenAt(NodeId n, const Graph& g) {
         if (2 * std::size_t{n} < heads_.size() && heads_[2 * std::size_t{n}] != kNoId) unlinkBroken(n, g);
     }
+    // Asks for node `n`'s list heads ahead of a repair (IncrementalMatches::prefetch).
     void prefetchHeads(NodeId n) const {
         if (2 * std::size_t{n} < heads_.size()) __builtin_prefetch(&heads_[2 * std::size_t{n}]);
     }
