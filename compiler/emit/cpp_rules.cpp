@@ -473,20 +473,30 @@ private:
     std::string placement(const ir::Daughter& d, const std::string& in) {
         std::string out = in + "{\n";
         const std::string b = in + "    ";
-        out += b + "std::vector<vec2> mother, host, refDaughter, refHost;\n";
+        // Fixed-size arrays: placement allocates nothing per step.
+        std::string mother, host, refDaughter, refHost;
+        auto item = [](std::string& list, const std::string& v) { list += (list.empty() ? "" : ", ") + v; };
         for (std::size_t i = 0; i < r_.nodes.size(); ++i) {
             const auto& sk = *r_.nodes[i].sketch;
-            out += b + "mother.push_back(" + cppLiteral(ir::Value{ir::Vec2{sk.x, sk.y}}, ir::kVec2Type) + ");\n";
-            out += b + "host.push_back(g.pos(m.nodes[" + str(static_cast<int>(i)) + "]));\n";
+            item(mother, cppLiteral(ir::Value{ir::Vec2{sk.x, sk.y}}, ir::kVec2Type));
+            item(host, "g.pos(m.nodes[" + str(static_cast<int>(i)) + "])");
         }
-        bool anyKept = false;
+        int kept = 0;
         for (const auto& dn : d.nodes)
             if (dn.motherNode >= 0) {
-                anyKept = true;
-                out += b + "refDaughter.push_back(" + cppLiteral(ir::Value{ir::Vec2{dn.sketch->x, dn.sketch->y}}, ir::kVec2Type) + ");\n";
-                out += b + "refHost.push_back(host[" + str(dn.motherNode) + "]);\n";
+                ++kept;
+                item(refDaughter, cppLiteral(ir::Value{ir::Vec2{dn.sketch->x, dn.sketch->y}}, ir::kVec2Type));
+                item(refHost, "host[" + str(dn.motherNode) + "]");
             }
-        if (!anyKept) out += b + "refDaughter = mother;\n" + b + "refHost = host;\n";
+        const std::string nodes = str(static_cast<int>(r_.nodes.size()));
+        out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
+        out += b + "const vec2 host[" + nodes + "] = {" + host + "};\n";
+        if (kept > 0) {
+            out += b + "const vec2 refDaughter[" + str(kept) + "] = {" + refDaughter + "};\n";
+            out += b + "const vec2 refHost[" + str(kept) + "] = {" + refHost + "};\n";
+        } else {   // no node kept: the whole match is the reference
+            out += b + "const auto& refDaughter = mother;\n" + b + "const auto& refHost = host;\n";
+        }
         std::string directed = "std::nullopt";
         for (const auto& e : r_.edges)
             if (prog_.kinds[e.kind].directed && e.src != e.dst) {

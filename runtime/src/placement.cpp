@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kEps = 1e-12;
 
-vec2 mean(const std::vector<vec2>& ps) {
+vec2 mean(std::span<const vec2> ps) {
     vec2 c{0, 0};
     for (const auto& p : ps) c += p;
     return ps.empty() ? c : c / static_cast<double>(ps.size());
@@ -19,7 +19,7 @@ struct Moments {
     double sxx = 0, sxy = 0, syy = 0;
 };
 
-Moments moments(const std::vector<vec2>& ps) {
+Moments moments(std::span<const vec2> ps) {
     Moments m;
     const vec2 c = mean(ps);
     for (const auto& p : ps) {
@@ -42,7 +42,7 @@ bool isotropic(const Moments& m) {
 // else its total-least-squares line, taken pointing right (in (-90°, 90°]) as
 // the thesis's tool did, so a mirrored match of a symmetric pattern is not
 // turned upside down; 0 for a set with no principal axis (isotropic).
-double direction(const std::vector<vec2>& ps, std::optional<std::pair<int, int>> edge) {
+double direction(std::span<const vec2> ps, std::optional<std::pair<int, int>> edge) {
     if (edge) {
         const vec2 u = ps[edge->second] - ps[edge->first];
         return length(u) > kEps ? std::atan2(u.y, u.x) : 0.0;
@@ -60,10 +60,14 @@ struct Extent {
     double x = 0, y = 0;
 };
 
-Extent extents(const std::vector<vec2>& ps) {
+// The extents of the points `at` maps `ps` to.
+template <class Map>
+Extent extents(std::span<const vec2> ps, Map at) {
     if (ps.empty()) return {};
-    double x0 = ps[0].x, x1 = x0, y0 = ps[0].y, y1 = y0;
-    for (const auto& p : ps) {
+    const vec2 first = at(ps[0]);
+    double x0 = first.x, x1 = x0, y0 = first.y, y1 = y0;
+    for (const auto& q : ps) {
+        const vec2 p = at(q);
         x0 = std::min(x0, p.x);
         x1 = std::max(x1, p.x);
         y0 = std::min(y0, p.y);
@@ -80,18 +84,18 @@ vec2 PlacementFrame::place(vec2 sketch) const {
     return cH + vec2{sx * r.x, sy * r.y};
 }
 
-PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& host,
+PlacementFrame placementFrame(std::span<const vec2> mother, std::span<const vec2> host,
                               std::optional<std::pair<int, int>> directedEdge,
-                              const std::vector<vec2>& refDaughter, const std::vector<vec2>& refHost) {
+                              std::span<const vec2> refDaughter, std::span<const vec2> refHost) {
     PlacementFrame f;
     f.cD = mean(refDaughter);
     f.cH = mean(refHost);
     const double delta = direction(host, directedEdge) - direction(mother, directedEdge);
     f.cosA = std::cos(delta);
     f.sinA = std::sin(delta);
-    std::vector<vec2> turned;
-    for (const auto& p : mother) turned.push_back({f.cosA * p.x - f.sinA * p.y, f.sinA * p.x + f.cosA * p.y});
-    const Extent m = extents(turned), h = extents(host);
+    // The mother's extents once turned by Δ (no copy: this runs every step).
+    const Extent m = extents(mother, [&](vec2 p) { return vec2{f.cosA * p.x - f.sinA * p.y, f.sinA * p.x + f.cosA * p.y}; });
+    const Extent h = extents(host, [](vec2 p) { return p; });
     // An extent below 1e-9 of the larger one is rounding noise: no extent.
     const double tiny = 1e-9 * std::max({m.x, m.y, kEps});
     f.sx = m.x > tiny ? h.x / m.x : 1;

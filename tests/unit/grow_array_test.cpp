@@ -4,6 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "g2d/grow_array.hpp"
@@ -37,6 +40,43 @@ TEST_CASE("GrowArray keeps its elements while growing past the mapped size", "[g
     std::size_t mismatches = 0;
     for (std::size_t k = 0; k < model.size(); ++k) mismatches += arr[k].a != model[k].a || arr[k].b != model[k].b;
     REQUIRE(mismatches == 0);
+}
+
+namespace {
+// Whether the mapping holding `p` is advised to use huge pages (its
+// VmFlags in /proc/self/smaps include "hg").
+bool hugePageAdvised(const void* p) {
+    std::ifstream smaps("/proc/self/smaps");
+    const auto at = reinterpret_cast<std::uintptr_t>(p);
+    bool inside = false;
+    for (std::string line; std::getline(smaps, line);) {
+        unsigned long long from = 0, to = 0;
+        if (std::sscanf(line.c_str(), "%llx-%llx ", &from, &to) == 2 && line.find(' ') > line.find('-')) {
+            inside = from <= at && at < to;
+        } else if (inside && line.rfind("VmFlags:", 0) == 0) {
+            return line.find(" hg") != std::string::npos;
+        }
+    }
+    return false;
+}
+}  // namespace
+
+TEST_CASE("GrowArray asks for huge pages for blocks of 2 MiB or more", "[grow_array]") {
+    if (g2d::rt::grow_detail::kMappedBytes == ~std::size_t{0}) return;   // sanitizer builds: all from malloc
+    GrowArray<std::uint64_t> arr;
+    std::size_t advised = 0, large = 0;
+    for (std::uint64_t i = 0; i < 4'000'000; ++i) {
+        const auto before = arr.capacity();
+        arr.push_back(i);
+        if (arr.capacity() != before && arr.capacity() * sizeof(std::uint64_t) >= (std::size_t{2} << 20)) {
+            ++large;   // it grew: checked after each move of the block
+            advised += hugePageAdvised(arr.data());
+            REQUIRE(reinterpret_cast<std::uintptr_t>(arr.data()) % (std::size_t{2} << 20) == 0);
+            REQUIRE(arr[i / 2] == i / 2);
+        }
+    }
+    REQUIRE(large >= 4);
+    REQUIRE(advised == large);
 }
 
 TEST_CASE("GrowArray copies are deep and moves leave the source empty", "[grow_array]") {

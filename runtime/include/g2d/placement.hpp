@@ -20,8 +20,8 @@
 // per world axis, as in the tool: across a horizontal line it is 1, along a
 // slanted one it is uniform.
 #include <optional>
+#include <span>
 #include <utility>
-#include <vector>
 
 #include "g2d/vec_math.hpp"
 
@@ -37,8 +37,8 @@ struct PlacementFrame {
 // `mother` and `host`: all matched nodes; `directedEdge`: (source, target) as
 // indices into them; `refDaughter` and `refHost`: R's daughter sketches and
 // host positions.
-PlacementFrame placementFrame(const std::vector<vec2>& mother, const std::vector<vec2>& host,
+PlacementFrame placementFrame(std::span<const vec2> mother, std::span<const vec2> host,
                               std::optional<std::pair<int, int>> directedEdge,
-                              const std::vector<vec2>& refDaughter, const std::vector<vec2>& refHost);
+                              std::span<const vec2> refDaughter, std::span<const vec2> refHost);
 
 }  // namespace g2d::rt
