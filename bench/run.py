@@ -175,6 +175,10 @@ def instructions(s, quick):
          ["-D", "max_lod=5" if quick else "max_lod=7"], True),
         ("sierpinski", "examples/sierpinski.g2d", None, ["-D", "generations=6" if quick else "generations=8"], True),
         ("mutex-sts", "bench/grammars/mutex_sts.g2d", None, ["-D", "n=300" if quick else "n=3000"], True),
+        # Three thesis examples at the original's step counts (seed 1).
+        ("thesis tree", "examples/tree.g2d", None, ["--seed", "1", "--steps", "200"], True),
+        ("thesis facade_varied", "examples/facade_varied.g2d", None, ["--seed", "1", "--steps", "116"], True),
+        ("thesis pattern_square", "examples/pattern_square.g2d", None, ["--seed", "1", "--steps", "70"], True),
     ]
     print()
     print("Instructions inside the derivation (callgrind; the same on every run):")
@@ -186,7 +190,7 @@ def instructions(s, quick):
         if replace:
             assert replace[0] in text, f"{path} no longer contains {replace[0]!r}"
             text = text.replace(*replace)
-        grammar, exe = s.build(name + "-count", text)
+        grammar, exe = s.build(name.replace(" ", "_") + "-count", text)
         flags = ["--no-svg", "--stats"] + extra
         stats = run_once([exe] + flags)
         compiled = count_instructions([exe] + flags)

@@ -111,13 +111,19 @@ private:
         }
         case PlanStep::Op::ScanNodes: {
             const int kind = nodeKind(s.node, nac);
-            const std::string list = kind >= 0 ? "g.nodesOfKind(" + str(kind) + ")" : "g.allNodes()";
-            const std::string c = "c" + str(static_cast<int>(i));
-            out += in + "{\n" + next + "const auto& l" + str(static_cast<int>(i)) + " = " + list + ";\n";
-            out += next + "for (std::size_t " + c + " = 0; " + c + " < l" + str(static_cast<int>(i)) + ".size(); ++" + c + ") {\n";
+            const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
             const std::string body = next + "    ";
-            out += body + "n[" + str(s.node) + "] = l" + str(static_cast<int>(i)) + "[" + c + "];\n";
+            if (kind >= 0) {
+                out += in + "{\n" + next + "const auto " + l + " = g.nodesOfKind(" + str(kind) + ");\n";
+                out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
+                out += body + "n[" + str(s.node) + "] = " + l + "[" + c + "];\n";
+            } else {   // a wildcard: every live node, by id
+                out += in + "{\n" + next + "for (const NodeId " + c + " : g.allNodes()) {\n";
+                out += body + "n[" + str(s.node) + "] = " + c + ";\n";
+            }
             std::string test = "true" + notUsedNode("n[" + str(s.node) + "]");
+            if (!nac)
+                if (const std::string kinds = hasEdgeKinds(s.node, "n[" + str(s.node) + "]"); !kinds.empty()) test += " && " + kinds;
             const std::string ord = orderedTest(s.node, boundNodes);
             if (!ord.empty()) test += " && " + ord;
             boundNodes.push_back(s.node);
@@ -214,6 +220,8 @@ private:
         out += "        NodeId n[" + arrays() + "];\n";
         out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
         if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
+        if (anchor >= 0)
+            if (const std::string kinds = hasEdgeKinds(anchor, "host"); !kinds.empty()) out += "        if (!(" + kinds + ")) return;\n";
         std::string complete = "";
         std::string nacTest = "true";
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
@@ -234,6 +242,28 @@ private:
         (void)indent;
         body.replace(at, 12, "if (" + nacTest + ") " + push + "\n");
         return out + body + "    }\n\n";
+    }
+
+    // The edge kinds a host of pattern node `p` must have had (Graph::edgeKindsAt),
+    // as a C++ expression; "" when the test cannot skip anything: the node has
+    // no pattern edges, or the grammar has one edge kind (every node with an
+    // edge has it).
+    std::string neededEdgeKinds(int p) const {
+        int edgeKinds = 0;
+        for (const auto& k : prog_.kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
+        if (edgeKinds <= 1) return "";
+        std::vector<int> kinds;
+        for (const auto& e : r_.edges)
+            if ((e.src == p || e.dst == p) && e.kind >= 0 && std::find(kinds.begin(), kinds.end(), e.kind) == kinds.end())
+                kinds.push_back(e.kind);
+        std::string need;
+        for (int k : kinds) need += (need.empty() ? "" : " | ") + std::string("Graph::edgeKindBit(") + str(k) + ")";
+        return need.empty() ? "" : "(" + need + ")";
+    }
+    // The test that host `h` has every edge kind pattern node `p` needs ("" for none).
+    std::string hasEdgeKinds(int p, const std::string& h) const {
+        const std::string need = neededEdgeKinds(p);
+        return need.empty() ? "" : "(g.edgeKindsAt(" + h + ") & " + need + ") == " + need;
     }
 
     // As MatchSet reads RuleInfo::readsIncidence: any other size means every
@@ -257,6 +287,7 @@ private:
         for (int p = 0; p < static_cast<int>(r_.nodes.size()); ++p) {
             std::string cond = readsIncidence(p) ? "true" : "full";
             if (r_.nodes[p].kind >= 0) cond += " && hk == " + str(r_.nodes[p].kind);
+            if (const std::string kinds = hasEdgeKinds(p, "h"); !kinds.empty()) cond += " && " + kinds;
             out += "            if (" + cond + ") {\n";
             out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
             out += "                n[" + str(p) + "] = h;\n";

@@ -27,6 +27,8 @@ rt::Incidence incidence(ir::IncidenceRead r) {
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     std::size_t maxNodes = 0, maxEdges = 0;
+    int edgeKinds = 0;   // with one, every node with an edge has it: no test
+    for (const auto& k : st.prog->kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
     for (const auto& r : st.prog->rules) {
         rt::RuleInfo info;
         info.priority = r.priority;
@@ -58,6 +60,13 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         }
         maxNodes = std::max(maxNodes, r.nodes.size() + nacNodes);
         maxEdges = std::max(maxEdges, r.edges.size() + nacEdges);
+        auto& need = neededEdgeKinds_.emplace_back(r.nodes.size(), 0);
+        if (edgeKinds > 1)
+            for (const auto& e : r.edges)
+                if (e.kind >= 0) {
+                    need[static_cast<std::size_t>(e.src)] |= rt::Graph::edgeKindBit(e.kind);
+                    need[static_cast<std::size_t>(e.dst)] |= rt::Graph::edgeKindBit(e.kind);
+                }
     }
     boundNodes_.assign(maxNodes, kNoId);
     boundEdges_.assign(maxEdges, kNoId);
@@ -104,15 +113,22 @@ bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::N
     }
     case PlanStep::Op::ScanNodes: {
         const int kind = nodeKind(s.node);
-        const auto& candidates = kind >= 0 ? g.nodesOfKind(kind) : g.allNodes();
-        for (std::size_t c = 0; c < candidates.size(); ++c) {
-            const NodeId h = candidates[c];
-            if (nodeUsed(h)) continue;
+        const auto rule = static_cast<std::size_t>(&r - st_.prog->rules.data());
+        auto tryHost = [&](NodeId h) {
+            if (nodeUsed(h) || (!nac && !hasEdgeKinds(g, rule, s.node, h))) return false;
             boundNodes_[s.node] = h;
             const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
             boundNodes_[s.node] = kNoId;
-            if (stop) return true;
+            return stop;
+        };
+        if (kind < 0) {
+            for (NodeId h : g.allNodes())
+                if (tryHost(h)) return true;
+            return false;
         }
+        const auto candidates = g.nodesOfKind(kind);
+        for (std::size_t c = 0; c < candidates.size(); ++c)
+            if (tryHost(candidates[c])) return true;
         return false;
     }
     case PlanStep::Op::ExtendEdge:
@@ -193,6 +209,7 @@ void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::Mat
 void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
                                     rt::MatchBuffer& out, rt::EdgeId newEdgesFrom) {
     const ir::Rule& r = st_.prog->rules[rule];
+    if (!hasEdgeKinds(g, rule, node, host)) return;
     current_ = &r;
     boundNodes_[node] = host;
     newEdgesFrom_ = newEdgesFrom;

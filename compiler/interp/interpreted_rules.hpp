@@ -60,6 +60,14 @@ private:
 
     const ProgramState& st_;
     std::vector<rt::RuleInfo> infos_;
+    // Per rule, per pattern node: the edge kinds a host must have had
+    // (rt::Graph::edgeKindsAt); 0 when the test cannot skip anything (as the
+    // generated code's, so that both back ends evaluate the same conditions).
+    std::vector<std::vector<std::uint32_t>> neededEdgeKinds_;
+    bool hasEdgeKinds(const rt::Graph& g, std::size_t rule, int node, rt::NodeId h) const {
+        const std::uint32_t need = neededEdgeKinds_[rule][static_cast<std::size_t>(node)];
+        return (g.edgeKindsAt(h) & need) == need;
+    }
     std::vector<Prepared> pending_;   // the first pendingCount_ are in use
     std::size_t pendingCount_ = 0;
     std::vector<rt::NodeId> hostOf_;

@@ -90,16 +90,12 @@ void Graph::removeNode(NodeId n) {
     touchNode(n);
     while (rec.firstOut != kNoId) removeEdge(rec.firstOut);
     while (rec.firstIn != kNoId) removeEdge(rec.firstIn);
-    // Swap-remove from the indexes, fixing the moved node's slot.
+    // Swap-remove from the kind's index, fixing the moved node's slot.
     auto& kindList = kindNodes_[rec.kind];
     const NodeId movedK = kindList.back();
     kindList[rec.slotInKind] = movedK;
     nodes_[movedK].slotInKind = rec.slotInKind;
     kindList.pop_back();
-    const NodeId movedA = allNodes_.back();
-    allNodes_[rec.slotInAll] = movedA;
-    nodes_[movedA].slotInAll = rec.slotInAll;
-    allNodes_.pop_back();
     rec.alive = false;
     clearAttrBlock(rec.kind, rec.slot);
     if (rec.styled) dropStyleList(nodeStyleList_, n);
@@ -184,7 +180,7 @@ int Graph::outDegree(NodeId n) const {
 
 std::size_t Graph::memoryBytes() const {
     std::size_t bytes = nodes_.capacity() * sizeof(NodeRec) + edges_.capacity() * sizeof(EdgeRec) +
-                        allNodes_.capacity() * sizeof(NodeId) + dirty_.capacity() * sizeof(NodeId);
+                        dirty_.capacity() * sizeof(NodeId);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
     bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity() + freeStyleLists_.capacity()) * sizeof(std::uint32_t);

@@ -558,3 +558,19 @@ TEST_CASE("a kept edge moved to other ends is matched there", "[run][incremental
     CHECK(r.run.derivation.stopped == rt::StopReason::Terminal);
     CHECK(std::get<bool>(r.run.graph().nodeAttr(1, 0)));
 }
+
+TEST_CASE("a node lacking an edge kind its pattern node needs is not searched", "[run][matching]") {
+    // x's condition divides by zero wherever it is evaluated; it is evaluated
+    // only at an A that has (or had) an E edge, which the match needs there.
+    const std::string kinds = "node A { z: int = 0; }\nnode B;\nedge E directed;\nedge F directed;\n";
+    const std::string rule = "rule R { match { x: A where 10 % x.z == 0; y: B; x -[E]-> y; } produce { x; y; } }\n";
+    SECTION("its only edges are of another kind: no match, no error") {
+        auto r = derive(kinds + "axiom { a: A; b: B; a -[F]-> b; }\n" + rule);
+        CHECK(r.run.derivation.steps == 0);
+    }
+    SECTION("with an edge of the needed kind the condition is evaluated") {
+        auto c = compile(kinds + "axiom { a: A; b: B; a -[F]-> b; b -[E]-> a; }\n" + rule);
+        REQUIRE(c.program);
+        CHECK_THROWS_WITH(interp::runProgram(*c.program, {}, 1, {}), "division by zero");
+    }
+}

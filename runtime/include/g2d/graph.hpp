@@ -71,6 +71,34 @@ private:
     NodeId n_;
 };
 
+// The live nodes in id order (ids of removed nodes are skipped).
+class LiveNodes {
+public:
+    class iterator {
+    public:
+        iterator(const Graph* g, NodeId n) : g_(g), n_(n) { settle(); }
+        NodeId operator*() const { return n_; }
+        iterator& operator++() {
+            ++n_;
+            settle();
+            return *this;
+        }
+        bool operator!=(const iterator& o) const { return n_ != o.n_; }
+        bool operator==(const iterator& o) const { return n_ == o.n_; }
+
+    private:
+        inline void settle();
+        const Graph* g_;
+        NodeId n_;
+    };
+    explicit LiveNodes(const Graph* g) : g_(g) {}
+    iterator begin() const { return iterator(g_, 0); }
+    inline iterator end() const;
+
+private:
+    const Graph* g_;
+};
+
 class Graph {
 public:
     explicit Graph(std::vector<KindInfo> kinds);
@@ -128,9 +156,16 @@ public:
     void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
     void setEdgeStyle(EdgeId e, const std::string& prop, Value v);
 
-    // Live nodes of one kind, or of every kind; order is deterministic.
+    // Live nodes of one kind (deterministic order), or of every kind (by id).
     std::span<const NodeId> nodesOfKind(int kind) const { return {kindNodes_[kind].data(), kindNodes_[kind].size()}; }
-    std::span<const NodeId> allNodes() const { return {allNodes_.data(), allNodes_.size()}; }
+    LiveNodes allNodes() const { return LiveNodes(this); }
+
+    // A superset of the kinds of the edges a node has (or had), one bit per
+    // kind modulo 32: a search anchored at the node skips it at once when a
+    // pattern node needs an edge kind it never had (the bit is set when an
+    // edge is linked there and not cleared when it goes).
+    static constexpr std::uint32_t edgeKindBit(int kind) { return std::uint32_t{1} << (static_cast<unsigned>(kind) & 31u); }
+    std::uint32_t edgeKindsAt(NodeId n) const { return nodes_[n].edgeKinds; }
 
     // Incidence, as intrusive lists (newest first):
     //   for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) ...
@@ -169,7 +204,8 @@ private:
         std::uint8_t styled : 1 = 0;
         std::uint8_t dirty : 2 = 0;               // kChanged* bits (kept here: one cache line per node)
         std::uint32_t slot = kNoId;
-        std::uint32_t slotInKind = 0, slotInAll = 0;
+        std::uint32_t slotInKind = 0;            // its place in kindNodes_[kind]
+        std::uint32_t edgeKinds = 0;             // edgeKindsAt
         EdgeId firstOut = kNoId, firstIn = kNoId;
     };
     struct EdgeRec {                         // 40 bytes
@@ -207,7 +243,6 @@ private:
     GrowArray<NodeRec> nodes_;
     GrowArray<EdgeRec> edges_;
     std::vector<GrowArray<NodeId>> kindNodes_;
-    GrowArray<NodeId> allNodes_;
     // Style overrides: an element's list (by index, kNoId for none; sized
     // when the first element of its class gets one). Lists of removed
     // elements are emptied and reused, so that restyling grammars allocate
@@ -230,10 +265,8 @@ NodeId Graph::addNode(int kind, vec2 pos, long long age) {
     rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
     auto& ofKind = kindNodes_[kind];
     rec.slotInKind = static_cast<std::uint32_t>(ofKind.size());
-    rec.slotInAll = static_cast<std::uint32_t>(allNodes_.size());
     rec.dirty = kChangedItself;
     ofKind.push_back(id);
-    allNodes_.push_back(id);
     nodes_.push_back(rec);
     dirty_.push_back(id);
     ++liveNodes_;
@@ -258,6 +291,8 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
 
 void Graph::link(EdgeId e) {
     auto& rec = edges_[e];
+    nodes_[rec.src].edgeKinds |= edgeKindBit(rec.kind);
+    nodes_[rec.dst].edgeKinds |= edgeKindBit(rec.kind);
     rec.prevOut = kNoId;
     rec.nextOut = nodes_[rec.src].firstOut;
     if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = e;
@@ -286,5 +321,11 @@ void Graph::removeEdge(EdgeId e) {
     if (rec.styled || (rec.slot != kNoId && !defaults_[rec.kind].empty())) dropEdgeExtras(rec, e);
     --liveEdges_;
 }
+
+void LiveNodes::iterator::settle() {
+    while (n_ < g_->nodeCapacity() && !g_->nodeAlive(n_)) ++n_;
+}
+
+LiveNodes::iterator LiveNodes::end() const { return iterator(g_, static_cast<NodeId>(g_->nodeCapacity())); }
 
 }  // namespace g2d::rt
