@@ -115,8 +115,10 @@ public:
         clear();
         resize(n, fill);
     }
-    // At least `n` elements of room; grows geometrically, from 4 KiB (a
-    // small graph's columns then grow a few times, not a dozen).
+    // At least `n` elements of room; grows geometrically, from 256 bytes:
+    // a grammar of many rules keeps dozens of small arrays, and when each
+    // started at 4 KiB they spread over as many fresh pages, each a page
+    // fault (about 2 µs here) on first touch, which dominated small runs.
     void reserve(std::size_t n) {
         if (n <= capacity_) return;
         std::size_t wanted = std::max<std::size_t>({n, capacity_ * 2, kFirstCapacity});
@@ -131,7 +133,7 @@ public:
     static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
 
 private:
-    static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(16, 4096 / sizeof(T));
+    static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(4, 256 / sizeof(T));
     T* data_ = nullptr;
     std::size_t size_ = 0;
     std::size_t capacity_ = 0;
