@@ -1,5 +1,6 @@
 #include "g2d/grow_array.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <sys/mman.h>
@@ -9,10 +10,11 @@ namespace g2d::rt::grow_detail {
 
 namespace {
 
-// Blocks this large are placed on 2 MiB boundaries and asked to be backed by
-// huge pages: a derivation of millions of elements then takes 512 times
-// fewer page faults while its arrays fill, and its scattered reads miss the
-// TLB far less often (a cost that otherwise grows with the graph).
+// Mappings are placed on 2 MiB boundaries, and the part of one an array has
+// grown into is asked to be backed by huge pages once it is that large: a
+// derivation of millions of elements then takes 512 times fewer page faults
+// while its arrays fill, and its scattered reads miss the TLB far less often
+// (a cost that otherwise grows with the graph).
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
 std::size_t pageRounded(std::size_t bytes) {
@@ -22,14 +24,12 @@ std::size_t pageRounded(std::size_t bytes) {
 
 bool mapped(std::size_t bytes) { return bytes >= kMappedBytes; }
 
-// Reserves `bytes` of address space at a 2 MiB boundary when that large
-// (the unaligned ends of a larger reservation are given back).
+// `bytes` of address space at a 2 MiB boundary, or nullptr. Reserved only:
+// a page takes memory when first written.
 void* reserve(std::size_t bytes) {
-    const bool huge = bytes >= kHugePage;
-    const std::size_t span = huge ? bytes + kHugePage : bytes;
-    void* p = mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED) throw std::bad_alloc();
-    if (!huge) return p;
+    const std::size_t span = bytes + kHugePage;
+    void* p = mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+    if (p == MAP_FAILED) return nullptr;
     const auto at = reinterpret_cast<std::uintptr_t>(p);
     const std::uintptr_t aligned = (at + kHugePage - 1) & ~(kHugePage - 1);
     if (aligned > at) munmap(p, aligned - at);
@@ -38,49 +38,63 @@ void* reserve(std::size_t bytes) {
     return reinterpret_cast<void*>(aligned);
 }
 
-void adviseHuge(void* p, std::size_t bytes) {
-    // Advice only: where the kernel has no huge pages, small ones serve.
-    if (bytes >= kHugePage) madvise(p, bytes, MADV_HUGEPAGE);
+// A reservation of at least `bytes`: kReservedBytes ahead when the system
+// grants that much address space, else just what is needed.
+void* reserveAhead(std::size_t& bytes) {
+    const std::size_t wanted = pageRounded(std::max(bytes, kReservedBytes));
+    if (void* p = reserve(wanted)) {
+        bytes = wanted;
+        return p;
+    }
+    bytes = pageRounded(bytes);
+    if (void* p = reserve(bytes)) return p;
+    throw std::bad_alloc();
 }
 
 }  // namespace
 
-void* resize(void* block, std::size_t oldBytes, std::size_t newBytes, std::size_t usedBytes) {
+void* grow(void* block, std::size_t& roomBytes, std::size_t newBytes, std::size_t usedBytes) {
     if (!mapped(newBytes)) {
         // Small: malloc's realloc (the old block is small too: arrays only grow).
         void* p = std::realloc(block, newBytes);
         if (!p) throw std::bad_alloc();
+        roomBytes = newBytes;
         return p;
     }
-    const std::size_t bytes = pageRounded(newBytes);
-    if (block && mapped(oldBytes)) {
-        // The kernel moves the pages; nothing is copied. Into an aligned
-        // reservation when the block is large enough for huge pages.
-        void* p;
-        if (bytes >= kHugePage) {
-            void* to = reserve(bytes);
-            p = mremap(block, pageRounded(oldBytes), bytes, MREMAP_MAYMOVE | MREMAP_FIXED, to);
-            if (p == MAP_FAILED) munmap(to, bytes);
-        } else {
-            p = mremap(block, pageRounded(oldBytes), bytes, MREMAP_MAYMOVE);
+    if (block && mapped(roomBytes)) {
+        // Past its reservation: the kernel moves the pages into a new one
+        // (twice as large); nothing is copied.
+        std::size_t bytes = std::max(newBytes, 2 * roomBytes);
+        void* to = reserveAhead(bytes);
+        void* p = mremap(block, roomBytes, bytes, MREMAP_MAYMOVE | MREMAP_FIXED, to);
+        if (p == MAP_FAILED) {
+            munmap(to, bytes);
+            throw std::bad_alloc();
         }
-        if (p == MAP_FAILED) throw std::bad_alloc();
-        adviseHuge(p, bytes);
+        roomBytes = bytes;
         return p;
     }
-    void* p = reserve(bytes);
-    adviseHuge(p, bytes);
+    std::size_t bytes = newBytes;
+    void* p = reserveAhead(bytes);
     if (block) {
         std::memcpy(p, block, usedBytes);
         std::free(block);
     }
+    roomBytes = bytes;
     return p;
 }
 
-void release(void* block, std::size_t bytes) noexcept {
+void adviseHuge(void* block, std::size_t roomBytes, std::size_t bytes) noexcept {
+    // Advice only: where the kernel has no huge pages, small ones serve. The
+    // whole mapping, so that it stays one region (mremap moves only one),
+    // and a mapping moved by mremap keeps it.
+    if (block && mapped(roomBytes) && bytes >= kHugePage) madvise(block, roomBytes, MADV_HUGEPAGE);
+}
+
+void release(void* block, std::size_t roomBytes) noexcept {
     if (!block) return;
-    if (mapped(bytes))
-        munmap(block, pageRounded(bytes));
+    if (mapped(roomBytes))
+        munmap(block, roomBytes);
     else
         std::free(block);
 }

@@ -20,17 +20,26 @@
 namespace g2d::rt {
 
 namespace grow_detail {
-// Resizes a block of `oldBytes` (nullptr/0 for none) to `newBytes`, keeping
-// its first `usedBytes`; throws std::bad_alloc. Blocks of at least
-// kMappedBytes are memory mappings, smaller ones come from malloc.
-void* resize(void* block, std::size_t oldBytes, std::size_t newBytes, std::size_t usedBytes);
-void release(void* block, std::size_t bytes) noexcept;
+// Makes room for at least `newBytes`, keeping the first `usedBytes` of
+// `block` (which has room for `roomBytes`; nullptr and 0 for none), and sets
+// `roomBytes` to the room of the block returned; throws std::bad_alloc.
+// Below kMappedBytes blocks come from malloc. Larger ones are memory
+// mappings that reserve address space ahead (kReservedBytes at least):
+// growing within one costs nothing, and a page takes memory only when first
+// written (no copy, no page touched twice).
+void* grow(void* block, std::size_t& roomBytes, std::size_t newBytes, std::size_t usedBytes);
+// Asks for huge pages for a mapped block once the array in it uses 2 MiB
+// or more (`bytes`): small arrays keep small pages, as a huge one would be
+// 2 MiB of memory to clear.
+void adviseHuge(void* block, std::size_t roomBytes, std::size_t bytes) noexcept;
+void release(void* block, std::size_t roomBytes) noexcept;
 // Under AddressSanitizer every block comes from malloc, so that overruns are caught.
 #if defined(__SANITIZE_ADDRESS__)
 inline constexpr std::size_t kMappedBytes = ~std::size_t{0};
 #else
-inline constexpr std::size_t kMappedBytes = std::size_t{64} << 10;
+inline constexpr std::size_t kMappedBytes = std::size_t{4} << 10;
 #endif
+inline constexpr std::size_t kReservedBytes = std::size_t{64} << 20;
 }  // namespace grow_detail
 
 template <class T>
@@ -47,16 +56,17 @@ public:
     GrowArray(const GrowArray& other) { append(other.begin(), other.end()); }
     GrowArray(GrowArray&& other) noexcept
         : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)),
-          capacity_(std::exchange(other.capacity_, 0)) {}
+          capacity_(std::exchange(other.capacity_, 0)), room_(std::exchange(other.room_, 0)) {}
     GrowArray& operator=(GrowArray other) noexcept {
         swap(other);
         return *this;
     }
-    ~GrowArray() { grow_detail::release(data_, capacity_ * sizeof(T)); }
+    ~GrowArray() { grow_detail::release(data_, room_); }
     void swap(GrowArray& other) noexcept {
         std::swap(data_, other.data_);
         std::swap(size_, other.size_);
         std::swap(capacity_, other.capacity_);
+        std::swap(room_, other.room_);
     }
 
     std::size_t size() const { return size_; }
@@ -126,9 +136,10 @@ public:
             if (n > max_size()) throw std::bad_alloc();
             wanted = max_size();
         }
-        data_ = static_cast<T*>(
-            grow_detail::resize(data_, capacity_ * sizeof(T), wanted * sizeof(T), size_ * sizeof(T)));
+        if (wanted * sizeof(T) > room_)
+            data_ = static_cast<T*>(grow_detail::grow(data_, room_, wanted * sizeof(T), size_ * sizeof(T)));
         capacity_ = wanted;
+        grow_detail::adviseHuge(data_, room_, capacity_ * sizeof(T));
     }
     static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
 
@@ -136,7 +147,8 @@ private:
     static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(4, 256 / sizeof(T));
     T* data_ = nullptr;
     std::size_t size_ = 0;
-    std::size_t capacity_ = 0;
+    std::size_t capacity_ = 0;   // elements: grows geometrically (and says when to advise huge pages)
+    std::size_t room_ = 0;       // bytes the block has room for (a mapping's reservation)
 };
 
 }  // namespace g2d::rt
