@@ -288,6 +288,9 @@ private:
             std::string cond = readsIncidence(p) ? "true" : "full";
             if (r_.nodes[p].kind >= 0) cond += " && hk == " + str(r_.nodes[p].kind);
             if (const std::string kinds = hasEdgeKinds(p, "h"); !kinds.empty()) cond += " && " + kinds;
+            // At a node the step created, an earlier pattern node adds every match (ir::Rule::newHostAddsNothing).
+            if (static_cast<std::size_t>(p) < r_.newHostAddsNothing.size() && r_.newHostAddsNothing[static_cast<std::size_t>(p)])
+                cond += " && h < area.newNodesFrom";
             out += "            if (" + cond + ") {\n";
             out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
             out += "                n[" + str(p) + "] = h;\n";

@@ -312,6 +312,13 @@ struct Rule {
     // Every edge between two match nodes is read from one end only, so a
     // hub's edge changes need not revisit every match binding the hub.
     std::vector<IncidenceRead> readsIncidence;
+    // Per match node: a search anchored there at a node the step created
+    // cannot add a match, so repair skips it. Such a match binds one of the
+    // node's edges, all new, and is added from the first of its pattern
+    // nodes whose host is searched: an earlier pattern node joined to this
+    // one by a pattern edge and reading incidences is (both ends of a new
+    // edge are marked).
+    std::vector<bool> newHostAddsNothing;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

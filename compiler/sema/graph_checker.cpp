@@ -438,6 +438,7 @@ private:
                                      static_cast<int>(rule_.nodes.size()));
         rule_.repairRadius = repairRadius(rule_);
         rule_.readsIncidence = incidenceReaders(rule_);
+        rule_.newHostAddsNothing = newHostsAddingNothing(rule_);
     }
 
     bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {

@@ -231,4 +231,17 @@ std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule) {
     return reads;
 }
 
+std::vector<bool> newHostsAddingNothing(const ir::Rule& rule) {
+    const int outer = static_cast<int>(rule.nodes.size());
+    std::vector<bool> nothing(rule.nodes.size(), false);
+    if (rule.readsIncidence.size() != rule.nodes.size()) return nothing;   // after an error
+    for (const auto& e : rule.edges) {
+        if (e.src < 0 || e.dst < 0 || e.src >= outer || e.dst >= outer) continue;
+        const int first = std::min(e.src, e.dst), later = std::max(e.src, e.dst);
+        if (first < later && rule.readsIncidence[static_cast<std::size_t>(first)] != ir::IncidenceRead::None)
+            nothing[static_cast<std::size_t>(later)] = true;
+    }
+    return nothing;
+}
+
 }  // namespace g2d::sema

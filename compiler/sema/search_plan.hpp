@@ -25,5 +25,7 @@ namespace g2d::sema {
 int repairRadius(const ir::Rule& rule);
 // Rule::readsIncidence of a rule whose match and negative conditions are built.
 std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule);
+// ir::Rule::newHostAddsNothing, from its edges and readsIncidence.
+std::vector<bool> newHostsAddingNothing(const ir::Rule& rule);
 
 }  // namespace g2d::sema

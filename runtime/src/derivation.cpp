@@ -174,6 +174,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
         }
         const long long step = result.steps + 1;
         const auto newEdgesFrom = static_cast<EdgeId>(g.edgeCapacity());   // ids are never reused
+        const auto newNodesFrom = static_cast<NodeId>(g.nodeCapacity());
         bool applied = false;
         for (auto& grp : groups) {
             if (grp.limit && grp.applied >= *grp.limit) continue;
@@ -204,7 +205,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 retireIfSpent(grp);   // before the repair: a spent rule needs none
                 g.takeDirty(changed, edgesChanged);
                 try {
-                    sets.update(g, changed, edgesChanged, newEdgesFrom);
+                    sets.update(g, changed, edgesChanged, newEdgesFrom, newNodesFrom);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
                     if (tracer) tracer->stepDone(step, g);

@@ -56,7 +56,7 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
 }
 
 void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom) {
+                                const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom, NodeId newNodesFrom) {
     if (itself.empty() && edgesOnly.empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     // When the step changed at least half of the nodes (a parallel step
@@ -78,7 +78,7 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             region(g, itself, edgesOnly, radius_[r]);
             areaRadius = radius_[r];
         }
-        const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom};
+        const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom, newNodesFrom};
         for (NodeId n : area_) {
             if (area.full(n)) set.removeTouching(n);
             else set.removeBrokenAt(n, g);
@@ -108,6 +108,7 @@ void IncrementalMatches::refill(std::size_t rule, const Graph& g) {
 
 void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer& scratch) {
     const std::vector<int>& kinds = info(rule).nodeKinds;
+    const std::vector<std::uint8_t>& newAddsNothing = info(rule).newHostAddsNothing;
     const int nn = set.nodes();
     for (NodeId h : area.nodes) {
         if (!g.nodeAlive(h)) continue;
@@ -116,6 +117,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
             if (!full && !set.readsIncidence(p)) continue;
             const int kind = kinds[static_cast<std::size_t>(p)];
             if (kind >= 0 && kind != g.nodeKind(h)) continue;
+            if (h >= area.newNodesFrom && !newAddsNothing.empty() && newAddsNothing[static_cast<std::size_t>(p)]) continue;
             // Only the edges changed, and this pattern node reads only its own
             // edges: only matches binding a new edge are added from here.
             const bool newEdgesOnly = !full && !set.readsAllEdges(p);

@@ -438,18 +438,21 @@ namespace {
 // Counts how often each rule's matches are repaired after a step.
 class CountingRules : public rt::RuleSet {
 public:
-    explicit CountingRules(rt::RuleSet& inner) : inner_(inner), repairs(inner.ruleCount(), 0), added(inner.ruleCount()) {}
+    explicit CountingRules(rt::RuleSet& inner)
+        : inner_(inner), repairs(inner.ruleCount(), 0), added(inner.ruleCount()), anchored(inner.ruleCount()) {}
     std::size_t ruleCount() const override { return inner_.ruleCount(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return inner_.info(rule); }
     void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override { inner_.findMatches(rule, g, out); }
     void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out,
                       rt::EdgeId newEdgesFrom) override {
+        ++anchored[rule].back();
         inner_.findAnchored(rule, g, node, host, out, newEdgesFrom);
     }
     void repair(std::size_t rule, const rt::Graph& g, const rt::RepairArea& area, rt::MatchSet& set, rt::MatchBuffer& scratch) override {
         ++repairs[rule];
         const std::size_t before = set.size();   // after the broken matches were dropped
-        inner_.repair(rule, g, area, set, scratch);
+        anchored[rule].push_back(0);
+        rt::RuleSet::repair(rule, g, area, set, scratch);   // the interpreter's (through findAnchored above)
         added[rule].push_back(static_cast<long long>(set.size() - before));
     }
     void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override {
@@ -466,6 +469,7 @@ private:
 public:
     std::vector<long long> repairs;
     std::vector<std::vector<long long>> added;   // per rule, per repair: the matches it added
+    std::vector<std::vector<long long>> anchored;   // per rule, per repair: its anchored searches
 };
 }  // namespace
 
@@ -527,6 +531,11 @@ TEST_CASE("edge changes alone keep the matches they do not break", "[run][increm
     CHECK(result.steps == 12);
     CHECK(g.edgeCount() == 15);
     CHECK(rules.added[0] == std::vector<long long>(12, 2));
+    // Three anchored searches per step: from s and e (their edges changed)
+    // at pattern node s, which reads edges, and from the new node p at s.
+    // Not from p at e: every match binding p binds a new edge, whose source
+    // is searched at s, which adds it (ir::Rule::newHostAddsNothing).
+    CHECK(rules.anchored[0] == std::vector<long long>(12, 3));
     // A second derivation on the same graph counts its steps from 1 again,
     // so edge ages do not tell its new edges: they are told by id.
     rules.added[0].clear();

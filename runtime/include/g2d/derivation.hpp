@@ -58,6 +58,9 @@ struct RuleInfo {
     // Per pattern node: which edge changes alone at its host matter (see
     // IncrementalMatches); empty means all do.
     std::vector<Incidence> readsIncidence;
+    // Per pattern node: whether a search anchored there at a node the step
+    // created can add nothing (ir::Rule::newHostAddsNothing); empty: none.
+    std::vector<std::uint8_t> newHostAddsNothing;
 };
 
 // The nodes around a step's changes whose matches a rule finds again
@@ -69,6 +72,7 @@ struct RepairArea {
     const std::uint32_t* seen = nullptr;
     std::uint32_t mark = 0;
     EdgeId newEdgesFrom = 0;   // the edges the step added have ids from this one on (ids are never reused)
+    NodeId newNodesFrom = kNoId;   // likewise the nodes it added
     bool contains(NodeId h) const { return (seen[h] >> 1) == mark; }
     // Whether host `h` is searched at a pattern node (`reads`: that node reads
     // incidences). A match binding a new edge is added from the first of its

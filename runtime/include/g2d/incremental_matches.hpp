@@ -44,8 +44,10 @@ public:
     void retire(std::size_t rule);
     // Repairs every rule's set after the nodes in `itself` changed, and those
     // in `edgesOnly` saw only edges change (Graph::takeDirty).
-    // The step just applied added the edges from id `newEdgesFrom` on.
-    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom);
+    // The step just applied added the edges from id `newEdgesFrom` on, and
+    // the nodes from `newNodesFrom` on.
+    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom,
+                NodeId newNodesFrom);
     // Prefetches what the next update reads about the nodes of a match
     // about to be rewritten (their marks, their lists in the first rules'
     // sets), with the match's own records.
