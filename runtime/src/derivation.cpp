@@ -178,9 +178,15 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
         bool applied = false;
         for (auto& grp : groups) {
             if (grp.limit && grp.applied >= *grp.limit) continue;
-            order = grp.rules;
-            shuffle(order, rng);
-            for (std::size_t r : order) {
+            // Rules of one priority are tried in random order (a group of
+            // one needs no copy: shuffling it draws nothing).
+            const std::vector<std::size_t>* tryOrder = &grp.rules;
+            if (grp.rules.size() > 1) {
+                order = grp.rules;
+                shuffle(order, rng);
+                tryOrder = &order;
+            }
+            for (std::size_t r : *tryOrder) {
                 MatchSet& set = sets.of(r);
                 if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
