@@ -40,6 +40,10 @@ IncidentRange::iterator& IncidentRange::iterator::operator++() {
 Graph::Graph(std::vector<KindInfo> kinds)
     : kinds_(std::move(kinds)), defaults_(kinds_.size()), pool_(kinds_.size()), kindNodes_(kinds_.size()) {
     if (kinds_.size() > kMaxKinds) throw std::length_error("a grammar may declare at most 32767 kinds");
+    // The two columns every graph grows: a page each from the start, not a
+    // chain of small reallocations (other arrays start small, to share pages).
+    nodes_.reserve(4096 / sizeof(NodeRec));
+    edges_.reserve(4096 / sizeof(EdgeRec));
 }
 
 void Graph::setKindDefaults(int kind, std::vector<Value> defaults) { defaults_[kind] = std::move(defaults); }

@@ -10,11 +10,11 @@ namespace g2d::rt::grow_detail {
 
 namespace {
 
-// Mappings are placed on 2 MiB boundaries, and the part of one an array has
-// grown into is asked to be backed by huge pages once it is that large: a
-// derivation of millions of elements then takes 512 times fewer page faults
-// while its arrays fill, and its scattered reads miss the TLB far less often
-// (a cost that otherwise grows with the graph).
+// Mappings are placed on 2 MiB boundaries, and one is asked to be backed by
+// huge pages once the array in it is that large: a derivation of millions
+// of elements then takes 512 times fewer page faults while its arrays fill,
+// and its scattered reads miss the TLB far less often (a cost that
+// otherwise grows with the graph).
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
 std::size_t pageRounded(std::size_t bytes) {

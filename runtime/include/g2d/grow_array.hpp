@@ -5,11 +5,11 @@
 // std::vector grows by allocating a larger block and copying every element:
 // at millions of elements that reads and writes the whole array again (cache
 // misses that made a derivation step slower the larger the graph was) and
-// briefly holds both copies (peak memory). Here a large array lives in its
-// own anonymous memory mapping and grows with mremap, which moves page
-// tables, not records; only pages that are written take memory. Small arrays
-// use realloc. Elements are never constructed by default, only by the
-// operations that add them.
+// briefly holds both copies (peak memory). Here an array past 64 KiB lives in
+// its own anonymous memory mapping, which reserves address space ahead and
+// grows past that with mremap, which moves page tables, not records; only
+// pages that are written take memory. Small arrays use realloc. Elements
+// are never constructed by default, only by the operations that add them.
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
@@ -37,7 +37,7 @@ void release(void* block, std::size_t roomBytes) noexcept;
 #if defined(__SANITIZE_ADDRESS__)
 inline constexpr std::size_t kMappedBytes = ~std::size_t{0};
 #else
-inline constexpr std::size_t kMappedBytes = std::size_t{4} << 10;
+inline constexpr std::size_t kMappedBytes = std::size_t{64} << 10;
 #endif
 inline constexpr std::size_t kReservedBytes = std::size_t{64} << 20;
 }  // namespace grow_detail
