@@ -244,20 +244,13 @@ private:
         return out + body + "    }\n\n";
     }
 
-    // The edge kinds a host of pattern node `p` must have had (Graph::edgeKindsAt),
-    // as a C++ expression; "" when the test cannot skip anything: the node has
-    // no pattern edges, or the grammar has one edge kind (every node with an
-    // edge has it).
+    // The edge kinds a host of pattern node `p` must have had
+    // (ir::Rule::neededEdgeKinds) as a C++ expression; "" for none.
     std::string neededEdgeKinds(int p) const {
-        int edgeKinds = 0;
-        for (const auto& k : prog_.kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
-        if (edgeKinds <= 1) return "";
-        std::vector<int> kinds;
-        for (const auto& e : r_.edges)
-            if ((e.src == p || e.dst == p) && e.kind >= 0 && std::find(kinds.begin(), kinds.end(), e.kind) == kinds.end())
-                kinds.push_back(e.kind);
+        if (static_cast<std::size_t>(p) >= r_.neededEdgeKinds.size()) return "";
         std::string need;
-        for (int k : kinds) need += (need.empty() ? "" : " | ") + std::string("Graph::edgeKindBit(") + str(k) + ")";
+        for (int k : r_.neededEdgeKinds[static_cast<std::size_t>(p)])
+            need += (need.empty() ? "" : " | ") + std::string("Graph::edgeKindBit(") + str(k) + ")";
         return need.empty() ? "" : "(" + need + ")";
     }
     // The test that host `h` has every edge kind pattern node `p` needs ("" for none).

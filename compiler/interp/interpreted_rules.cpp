@@ -27,8 +27,6 @@ rt::Incidence incidence(ir::IncidenceRead r) {
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     std::size_t maxNodes = 0, maxEdges = 0;
-    int edgeKinds = 0;   // with one, every node with an edge has it: no test
-    for (const auto& k : st.prog->kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
     for (const auto& r : st.prog->rules) {
         rt::RuleInfo info;
         info.priority = r.priority;
@@ -62,12 +60,8 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         maxNodes = std::max(maxNodes, r.nodes.size() + nacNodes);
         maxEdges = std::max(maxEdges, r.edges.size() + nacEdges);
         auto& need = neededEdgeKinds_.emplace_back(r.nodes.size(), 0);
-        if (edgeKinds > 1)
-            for (const auto& e : r.edges)
-                if (e.kind >= 0) {
-                    need[static_cast<std::size_t>(e.src)] |= rt::Graph::edgeKindBit(e.kind);
-                    need[static_cast<std::size_t>(e.dst)] |= rt::Graph::edgeKindBit(e.kind);
-                }
+        for (std::size_t i = 0; i < r.neededEdgeKinds.size() && i < need.size(); ++i)
+            for (int k : r.neededEdgeKinds[i]) need[i] |= rt::Graph::edgeKindBit(k);
     }
     boundNodes_.assign(maxNodes, kNoId);
     boundEdges_.assign(maxEdges, kNoId);

@@ -60,9 +60,8 @@ private:
 
     const ProgramState& st_;
     std::vector<rt::RuleInfo> infos_;
-    // Per rule, per pattern node: the edge kinds a host must have had
-    // (rt::Graph::edgeKindsAt); 0 when the test cannot skip anything (as the
-    // generated code's, so that both back ends evaluate the same conditions).
+    // Per rule, per pattern node: ir::Rule::neededEdgeKinds as a mask of
+    // rt::Graph::edgeKindBit (0: no test), as generated code tests them.
     std::vector<std::vector<std::uint32_t>> neededEdgeKinds_;
     bool hasEdgeKinds(const rt::Graph& g, std::size_t rule, int node, rt::NodeId h) const {
         const std::uint32_t need = neededEdgeKinds_[rule][static_cast<std::size_t>(node)];

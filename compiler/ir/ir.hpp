@@ -319,6 +319,11 @@ struct Rule {
     // one by a pattern edge and reading incidences is (both ends of a new
     // edge are marked).
     std::vector<bool> newHostAddsNothing;
+    // Per match node: the distinct kinds of its pattern edges, all of which a
+    // host must have had (rt::Graph::edgeKindsAt) to be searched there; empty
+    // where that test cannot skip anything (no pattern edges, or a grammar of
+    // one edge kind: every node with an edge has it).
+    std::vector<std::vector<int>> neededEdgeKinds;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

@@ -439,6 +439,9 @@ private:
         rule_.repairRadius = repairRadius(rule_);
         rule_.readsIncidence = incidenceReaders(rule_);
         rule_.newHostAddsNothing = newHostsAddingNothing(rule_);
+        int edgeKinds = 0;
+        for (const auto& k : g_.prog.kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
+        rule_.neededEdgeKinds = edgeKindsNeeded(rule_, edgeKinds);
     }
 
     bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {

@@ -244,4 +244,19 @@ std::vector<bool> newHostsAddingNothing(const ir::Rule& rule) {
     return nothing;
 }
 
+std::vector<std::vector<int>> edgeKindsNeeded(const ir::Rule& rule, int edgeKinds) {
+    std::vector<std::vector<int>> needed(rule.nodes.size());
+    if (edgeKinds <= 1) return needed;
+    const int outer = static_cast<int>(rule.nodes.size());
+    for (const auto& e : rule.edges) {
+        if (e.kind < 0) continue;
+        for (int end : {e.src, e.dst}) {
+            if (end < 0 || end >= outer) continue;   // after an error
+            auto& kinds = needed[static_cast<std::size_t>(end)];
+            if (std::find(kinds.begin(), kinds.end(), e.kind) == kinds.end()) kinds.push_back(e.kind);
+        }
+    }
+    return needed;
+}
+
 }  // namespace g2d::sema

@@ -27,5 +27,7 @@ int repairRadius(const ir::Rule& rule);
 std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule);
 // ir::Rule::newHostAddsNothing, from its edges and readsIncidence.
 std::vector<bool> newHostsAddingNothing(const ir::Rule& rule);
+// ir::Rule::neededEdgeKinds, for a grammar declaring `edgeKinds` edge kinds.
+std::vector<std::vector<int>> edgeKindsNeeded(const ir::Rule& rule, int edgeKinds);
 
 }  // namespace g2d::sema
