@@ -436,7 +436,7 @@ private:
         std::string out = "    Params P_;\n    Consts C_;\n    Rng* rng_ = nullptr;\n    int loc_ = -1;\n    const char* current_ = \"\";  // the rule being matched or applied (no copy in the hot path)\n";
         out += "    Graph graph_;\n    std::vector<ParamSpec> specs_;\n    JsonSchema schema_;\n    std::vector<std::string> defs_;\n";
         out += "    std::vector<RuleInfo> infos_;\n";
-        out += "    struct PendingRef {\n        std::uint32_t daughter, index;\n    };\n    std::vector<PendingRef> pendingOrder_;\n";
+        out += "    struct PendingRef {\n        std::uint32_t daughter, index;\n    };\n    GrowArray<PendingRef> pendingOrder_;\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             if (prog_.kinds[k].attrs.empty()) continue;
             const std::string sk = str(static_cast<long long>(k));

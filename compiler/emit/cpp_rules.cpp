@@ -483,7 +483,8 @@ private:
         const std::string ne = str(static_cast<int>(std::max<std::size_t>(r_.edges.size(), 1)));
         std::string record = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n";
         for (const auto& [type, name] : kept) record += "        " + type + " " + name + ";\n";
-        record += "    };\n    std::vector<Pending_" + rd + "> pending_" + rd + "_;\n\n";
+        // A parallel step keeps one per match: plain records grow without copying.
+        record += "    };\n    GrowableArray<Pending_" + rd + "> pending_" + rd + "_;\n\n";
         out += in + "Pending_" + rd + "& p = pending_" + rd + "_.emplace_back();\n";
         out += in + "std::copy(m.nodes, m.nodes + " + str(static_cast<int>(r_.nodes.size())) + ", p.mn);\n";
         out += in + "std::copy(m.edges, m.edges + " + str(static_cast<int>(r_.edges.size())) + ", p.me);\n";

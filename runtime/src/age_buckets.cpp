@@ -112,9 +112,20 @@ std::span<const std::uint32_t> AgeBuckets::lowest() {
     const Page& page = *pages_[pageHeap_.front()];
     std::size_t w = 0;
     while (page.occupied[w] == 0) ++w;
+    lowestWord_ = w;
     const std::size_t slot = w * 64 + static_cast<std::size_t>(std::countr_zero(page.occupied[w]));
     Group& group = groups_[page.groupOf[slot]];
     return {idsOf(group), group.size};
+}
+
+std::size_t AgeBuckets::peekLowest(std::uint32_t* groups, std::size_t count) const {
+    if (pageHeap_.empty() || !pages_[pageHeap_.front()]) return 0;
+    const Page& page = *pages_[pageHeap_.front()];
+    std::size_t found = 0;
+    for (std::size_t w = lowestWord_; w < kPageWords && found < count; ++w)
+        for (std::uint64_t bits = page.occupied[w]; bits != 0 && found < count; bits &= bits - 1)
+            groups[found++] = page.groupOf[w * 64 + static_cast<std::size_t>(std::countr_zero(bits))];
+    return found;
 }
 
 void AgeBuckets::clear() { *this = AgeBuckets(); }

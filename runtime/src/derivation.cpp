@@ -2,6 +2,7 @@
 
 #include "g2d/deadline.hpp"
 #include "g2d/incremental_matches.hpp"
+#include "g2d/pick_lookahead.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -58,11 +59,8 @@ public:
                     StepTracer* tracer) {
         const RuleInfo& info = rules.info(rule);
         const int nn = set.nodes(), ne = set.edges();
-        const std::size_t width = static_cast<std::size_t>(nn + ne);
-        // Copy the matches: the set is repaired only after the step, but the
-        // rules keep views until commit().
-        batch_.clear();
-        for (std::size_t i = 0; i < set.size(); ++i) batch_.insert(batch_.end(), set.idsAt(i), set.idsAt(i) + width);
+        // The matches are read in place: the set is repaired only after
+        // commit(), so the views the rules keep until then stay valid.
         order_.resize(set.size());
         std::iota(order_.begin(), order_.end(), 0);
         if (info.pick == Pick::Random) {
@@ -80,9 +78,11 @@ public:
         grow(writtenNodes_, g.nodeCapacity());
         grow(readEdges_, g.edgeCapacity());
         grow(writtenEdges_, g.edgeCapacity());
-        taken_.clear();
+        // daughter_[i]: the daughter drawn for the set's match i, kNotTaken if it is not rewritten.
+        daughter_.assign(set.size(), kNotTaken);
+        std::size_t taken = 0;
         for (std::uint32_t i : order_) {
-            const Match m{&batch_[i * width], &batch_[i * width] + nn};
+            const Match m = set.at(i);
             bool clash = false;
             for (int k = 0; k < nn; ++k) clash = clash || writtenNodes_[m.nodes[k]] == stamp_;
             for (int k = 0; k < ne; ++k) clash = clash || writtenEdges_[m.edges[k]] == stamp_;
@@ -97,30 +97,28 @@ public:
             for (int k = 0; k < ne; ++k) readEdges_[m.edges[k]] = stamp_;
             for (NodeId n : writes_.nodes) writtenNodes_[n] = stamp_;
             for (EdgeId e : writes_.edges) writtenEdges_[e] = stamp_;
-            taken_.push_back(Taken{i, static_cast<std::uint32_t>(daughter)});
+            daughter_[i] = static_cast<std::uint32_t>(daughter);
+            ++taken;
         }
         // Rewrite the taken matches in the set's order, not the draw's: the
         // set holds them roughly as the graph stores their elements, so the
         // rewrite walks memory forward instead of jumping across it.
-        std::sort(taken_.begin(), taken_.end(), [](const Taken& a, const Taken& b) { return a.match < b.match; });
-        for (const Taken& t : taken_) {
-            const Match m{&batch_[t.match * width], &batch_[t.match * width] + nn};
-            if (tracer) tracer->applying(rule, t.daughter, m, g);
-            rules.prepare(rule, t.daughter, m, g, rng, step);
+        for (std::size_t i = 0; i < daughter_.size(); ++i) {
+            if (daughter_[i] == kNotTaken) continue;
+            const Match m = set.at(i);
+            if (tracer) tracer->applying(rule, daughter_[i], m, g);
+            rules.prepare(rule, daughter_[i], m, g, rng, step);
         }
         rules.commit(g, step);
-        return taken_.size();
+        return taken;
     }
 
 private:
     static void grow(std::vector<std::uint32_t>& v, std::size_t n) {
         if (v.size() < n) v.resize(n + n / 2, 0);
     }
-    std::vector<std::uint32_t> batch_, order_;
-    struct Taken {
-        std::uint32_t match, daughter;   // the match's place in batch_, its daughter
-    };
-    std::vector<Taken> taken_;
+    static constexpr std::uint32_t kNotTaken = 0xffffffffu;
+    std::vector<std::uint32_t> order_, daughter_;
     std::vector<long long> sums_;
     std::vector<std::uint32_t> readNodes_, writtenNodes_, readEdges_, writtenEdges_;
     std::uint32_t stamp_ = 0;
@@ -149,6 +147,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     std::vector<std::size_t> order;
     std::vector<NodeId> changed, edgesChanged;
     ParallelStep parallel;
+    PickLookahead lookahead;
     std::optional<DeadlineWatch> deadline;
     if (limits.timeoutSeconds) deadline.emplace(*limits.timeoutSeconds);
     std::optional<IncrementalMatches> found;
@@ -197,6 +196,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                         sets.prefetch(g, m, set.nodes(), set.edges());
                         const std::size_t d = pickDaughter(info.weights, rng);
+                        lookahead.ahead(r, info, set, m, rng, sets, g);
                         if (tracer) tracer->applying(r, d, m, g);
                         rules.prepare(r, d, m, g, rng, step);
                         rules.commit(g, step);
@@ -237,6 +237,8 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                                std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.lookaheadGuesses = lookahead.guesses();
+    result.lookaheadHits = lookahead.hits();
     return result;
 }
 

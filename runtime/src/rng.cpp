@@ -13,10 +13,6 @@ std::uint64_t splitmix64(std::uint64_t& x) {
     return z ^ (z >> 31);
 }
 
-__extension__ typedef unsigned __int128 u128;
-
-std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-
 }  // namespace
 
 void Rng::reseed(std::uint64_t seed) {
@@ -24,35 +20,9 @@ void Rng::reseed(std::uint64_t seed) {
     for (auto& s : s_) s = splitmix64(x);
 }
 
-std::uint64_t Rng::next() {
-    const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
-    const std::uint64_t t = s_[1] << 17;
-    s_[2] ^= s_[0];
-    s_[3] ^= s_[1];
-    s_[1] ^= s_[2];
-    s_[0] ^= s_[3];
-    s_[2] ^= t;
-    s_[3] = rotl(s_[3], 45);
-    return result;
-}
-
 double Rng::unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
 double Rng::uniform(double a, double b) { return a + (b - a) * unit(); }
-
-std::uint64_t Rng::below(std::uint64_t n) {
-    // Lemire: multiply-shift with rejection of the biased low range.
-    u128 m = static_cast<u128>(next()) * n;
-    auto low = static_cast<std::uint64_t>(m);
-    if (low < n) {
-        const std::uint64_t threshold = (0 - n) % n;
-        while (low < threshold) {
-            m = static_cast<u128>(next()) * n;
-            low = static_cast<std::uint64_t>(m);
-        }
-    }
-    return static_cast<std::uint64_t>(m >> 64);
-}
 
 long long Rng::range(long long lo, long long hi) {
     if (hi <= lo) return lo;

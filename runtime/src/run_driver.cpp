@@ -212,9 +212,10 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         }
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
-                        "\"stopped\": \"%s\", \"applications\": %lld}\n",
+                        "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
-                        static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications);
+                        static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
+                        result.lookaheadGuesses, result.lookaheadHits);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "g2d run: error: %s\n", e.what());
         return 1;

@@ -30,6 +30,17 @@ public:
     void clear();
     std::size_t memoryBytes() const;
 
+    // For prefetching (PickLookahead): up to `count` groups with the lowest
+    // keys, lowest first, as handles for the calls below; returns how many.
+    // Looks only at the lowest page, from where lowest() last found the
+    // lowest key (a guess, if keys were added below it since).
+    std::size_t peekLowest(std::uint32_t* groups, std::size_t count) const;
+    void prefetchGroup(std::uint32_t group) const { __builtin_prefetch(&groups_[group]); }
+    std::span<const std::uint32_t> groupIds(std::uint32_t group) const {
+        const Group& g = groups_[group];
+        return {g.spill == kNone ? g.inl : spills_[g.spill].data(), g.size};
+    }
+
 private:
     static constexpr int kPageBits = 10;
     static constexpr std::size_t kPageKeys = std::size_t{1} << kPageBits;
@@ -64,6 +75,9 @@ private:
     std::vector<std::vector<std::uint32_t>> spills_;
     std::vector<std::uint32_t> freeSpills_;
     GrowArray<Place> placeOf_;                   // per id: its group and its place there
+    // The lowest page's first occupied word when lowest() last looked (where
+    // peekLowest starts: ids leave the groups from the lowest key up).
+    std::size_t lowestWord_ = 0;
     std::size_t count_ = 0;
 };
 

@@ -63,6 +63,11 @@ inline long long toInt(double v) { return floatToInt(v); }
 inline long long toInt(bool v) { return v ? 1 : 0; }
 inline long long toInt(const std::string& v) { return parseInt(v); }
 
+// A growable array that does not copy itself as it grows when T is plain
+// data (GrowArray), a std::vector otherwise.
+template <class T>
+using GrowableArray = std::conditional_t<std::is_trivially_copyable_v<T>, GrowArray<T>, std::vector<T>>;
+
 // Typed attribute arrays: an element's slot indexes its kind's array (one
 // that grows without copying when the attributes are plain numbers).
 template <class T>
@@ -77,7 +82,7 @@ public:
     void clear() { items_.clear(); }
 
 private:
-    std::conditional_t<std::is_trivially_copyable_v<T>, GrowArray<T>, std::vector<T>> items_;
+    GrowableArray<T> items_;
 };
 
 }  // namespace g2d::rt::compiled

@@ -159,6 +159,8 @@ struct DerivationResult {
     long long applications = 0;   // rewrites applied (a parallel step applies many)
     StopReason stopped = StopReason::Terminal;
     double seconds = 0;
+    // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.
+    long long lookaheadGuesses = 0, lookaheadHits = 0;
 };
 
 // Called after every step (for progress displays).

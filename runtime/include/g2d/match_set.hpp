@@ -113,6 +113,23 @@ public:
     long long ageSumAt(std::size_t i) const { return ageSum(live_[i]); }
     Match pickRandom(Rng& rng) const;
     Match pickOldest(Rng& rng);
+    // For prefetching a likely later pick (PickLookahead): asks for the
+    // cache line holding the set's i-th match id, or that match's record.
+    void prefetchPosition(std::size_t i) const {
+        if (i < live_.size()) __builtin_prefetch(&live_[i]);
+    }
+    void prefetchRecordAt(std::size_t i) const {
+        if (i < live_.size()) prefetchRecord(live_[i]);
+    }
+    // The same for oldest picks: the age groups next in line (AgeBuckets),
+    // and the matches in them, by their ids.
+    const AgeBuckets& ageGroups() const { return ageBuckets_; }
+    void prefetchRecord(std::uint32_t id) const {
+        __builtin_prefetch(data(id));
+        __builtin_prefetch(data(id) + stride_ - 1);   // a record may span two lines
+    }
+    Match matchOf(std::uint32_t id) const { return view(id); }
+    std::uint32_t idOf(Match m) const { return static_cast<std::uint32_t>((m.nodes - rec_.data()) / static_cast<std::ptrdiff_t>(stride_)); }
     std::size_t memoryBytes() const;
 
 private:

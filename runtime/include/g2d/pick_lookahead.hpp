@@ -1,0 +1,54 @@
+#pragma once
+// Prefetching for the picks of the coming steps.
+//
+// With millions of matches, a random pick lands on records no recent step
+// touched: the match's slot in the set, its record, its nodes and edges,
+// their lists in the sets. Each is a cache miss, and the step waits for them
+// in turn: at Koch level 10 they took two thirds of a step. But the pick a
+// later step makes is known ahead when nothing else draws random numbers in
+// between: the generator's next outputs are fixed, and the set's size
+// changes by about as much each step as in the last. So each step, for the
+// picks one, two and three steps ahead, this asks for the set's slot (three
+// ahead), the match's record (two ahead: its slot is cached by now) and the
+// match's elements (one ahead: its record is cached by now), while the
+// current step runs.
+//
+// Only a copy of the generator is advanced, so a wrong guess (another rule
+// applies, a daughter draws numbers, the size changes otherwise) costs a
+// few prefetches, never a different result.
+#include <cstddef>
+#include <cstdint>
+
+#include "g2d/derivation.hpp"
+#include "g2d/incremental_matches.hpp"
+
+namespace g2d::rt {
+
+class PickLookahead {
+public:
+    // Called once a step has drawn `picked` (and its daughter) from `rule`'s
+    // `set`, before the step is applied; `rng` is the generator then.
+    void ahead(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
+               const IncrementalMatches& sets, const Graph& g);
+    // How often a step's pick had been guessed one step ahead, and how
+    // often a guess was the record then drawn (for --stats and tests).
+    long long guesses() const { return guesses_; }
+    long long hits() const { return hits_; }
+
+    // Below this many matches a set's records (and their elements) mostly
+    // stay in the processor's caches: nothing to prefetch.
+    static constexpr std::size_t kMinMatches = 8192;
+
+private:
+    static constexpr int kAhead = 3;   // steps
+    void aheadOldest(const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
+                     const IncrementalMatches& sets, const Graph& g);
+    static constexpr std::size_t kNone = ~std::size_t{0};
+    std::size_t rule_ = kNone;      // the rule the last step picked from
+    std::size_t lastSize_ = 0;      // its set's size then
+    long long growth_[2] = {0, 0};  // the last two distinct growths of its set per step, latest first
+    const std::uint32_t* guessed_[2] = {nullptr, nullptr};   // the records guessed for the next pick
+    long long guesses_ = 0, hits_ = 0;
+};
+
+}  // namespace g2d::rt

@@ -1,0 +1,123 @@
+#include "g2d/pick_lookahead.hpp"
+
+#include <algorithm>
+
+namespace g2d::rt {
+
+void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
+                          const IncrementalMatches& sets, const Graph& g) {
+    if (guessed_[0] || guessed_[1]) {
+        ++guesses_;
+        if (picked.nodes == guessed_[0] || picked.nodes == guessed_[1]) ++hits_;
+        guessed_[0] = guessed_[1] = nullptr;
+    }
+    // A small set's records stay cached anyway: guessing would only cost.
+    if (set.size() < kMinMatches) return;
+    if (info.pick == Pick::Oldest) {
+        aheadOldest(info, set, picked, rng, sets, g);
+        return;
+    }
+    // The size the set has at the next picks depends on what those steps
+    // add and remove. Most grammars alternate between a few growths (Koch's
+    // split adds three matches, or at the last level removes one), so the
+    // guesses take the last two distinct growths seen, in every order.
+    const auto size = static_cast<long long>(set.size());
+    if (rule == rule_) {
+        const long long growth = size - static_cast<long long>(lastSize_);
+        if (growth != growth_[0]) {
+            growth_[1] = growth_[0];
+            growth_[0] = growth;
+        }
+    } else {
+        growth_[0] = growth_[1] = 0;
+    }
+    rule_ = rule;
+    lastSize_ = set.size();
+    // The raw draws of the next three picks, if they pick from this rule
+    // again and nothing else draws (derivation.hpp lists a step's draws).
+    Rng future = rng;
+    std::uint64_t raw[kAhead];
+    for (auto& r : raw) {
+        r = future.next();
+        if (info.weights.size() > 1) future.unit();
+    }
+    const long long a = growth_[0], b = growth_[1];
+    auto position = [&](int ahead, long long sizeThen) -> std::size_t {
+        if (sizeThen <= 1) return 0;
+        return static_cast<std::size_t>(Rng::belowFrom(raw[ahead - 1], static_cast<std::uint64_t>(sizeThen)));
+    };
+    // Three steps ahead: the slots between the smallest and largest guess.
+    set.prefetchPosition(position(3, size + 3 * std::min(a, b)));
+    set.prefetchPosition(position(3, size + 3 * std::max(a, b)));
+    // Two ahead: the records.
+    set.prefetchRecordAt(position(2, size + 2 * a));
+    if (b != a) {
+        set.prefetchRecordAt(position(2, size + a + b));
+        set.prefetchRecordAt(position(2, size + 2 * b));
+    }
+    // One ahead: the elements.
+    for (int i = 0; i < (b != a ? 2 : 1); ++i) {
+        const std::size_t at = position(1, size + growth_[i]);
+        if (at >= set.size()) continue;
+        const Match next = set.at(at);
+        sets.prefetch(g, next, set.nodes(), set.edges());
+        guessed_[i] = next.nodes;
+    }
+}
+
+// Oldest: each step takes one match of the lowest age group left (drawn
+// among them when they tie; a leaver's place goes to the group's last);
+// new matches are younger. So the picks ahead come from the lowest groups
+// in turn, starting with the one holding this step's pick, less that pick.
+// A group's header is read only once an earlier step asked for it.
+void PickLookahead::aheadOldest(const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
+                                const IncrementalMatches& sets, const Graph& g) {
+    const AgeBuckets& ages = set.ageGroups();
+    std::uint32_t groups[kAhead + 1];
+    const std::size_t count = ages.peekLowest(groups, kAhead + 1);
+    if (count == 0) return;
+    for (std::size_t i = 1; i < count; ++i) ages.prefetchGroup(groups[i]);
+    // The members of the group picks are drawn from, as AgeBuckets will
+    // hold them then (ties beyond kTies are left out: a rougher guess).
+    constexpr std::size_t kTies = 16;
+    std::uint32_t members[kTies];
+    std::size_t left = 0;
+    auto enter = [&](std::size_t group) {
+        const auto ids = ages.groupIds(groups[group]);
+        left = std::min(ids.size(), kTies);
+        std::copy(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(left), members);
+    };
+    auto take = [&](std::size_t at) {
+        const std::uint32_t id = members[at];
+        members[at] = members[--left];
+        return id;
+    };
+    enter(0);
+    const std::uint32_t pickedId = set.idOf(picked);
+    for (std::size_t i = 0; i < left; ++i)
+        if (members[i] == pickedId) {
+            take(i);
+            break;
+        }
+    Rng future = rng;
+    std::size_t group = 0;
+    for (int j = 1; j <= kAhead; ++j) {
+        while (left == 0) {
+            // The last header is only being asked for now.
+            if (++group + 1 >= count) return;
+            enter(group);
+        }
+        const std::size_t at = left > 1 ? static_cast<std::size_t>(future.below(left)) : 0;
+        if (info.weights.size() > 1) future.unit();
+        const std::uint32_t id = take(at);
+        if (j == 1) {
+            const Match next = set.matchOf(id);
+            sets.prefetch(g, next, set.nodes(), set.edges());
+            guessed_[0] = next.nodes;
+        } else {
+            set.prefetchRecord(id);
+        }
+    }
+}
+
+}  // namespace g2d::rt
