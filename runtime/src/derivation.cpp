@@ -194,7 +194,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                         result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
                     } else {
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
-                        sets.prefetch(g, m, set.nodes(), set.edges());
+                        if (!lookahead.guessed(m)) sets.prefetch(g, m, set.nodes(), set.edges());
                         const std::size_t d = pickDaughter(info.weights, rng);
                         lookahead.ahead(r, info, set, m, rng, sets, g);
                         if (tracer) tracer->applying(r, d, m, g);

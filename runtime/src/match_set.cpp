@@ -31,7 +31,7 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
         // Link numbers are 32-bit word offsets.
         if (rec_.size() + 2 * stride_ > 0xffffffffu) throw std::length_error("too many matches of one rule (over 4 G words)");
         id = static_cast<Id>(rec_.size() / stride_);
-        rec_.resize(rec_.size() + stride_);
+        rec_.extendUnset(stride_);   // every word is written below
     }
     std::uint32_t* p = data(id);
     for (int i = 0; i < nn_; ++i) p[i] = nodes[i];

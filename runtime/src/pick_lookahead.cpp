@@ -4,13 +4,17 @@
 
 namespace g2d::rt {
 
+bool PickLookahead::guessed(Match picked) {
+    if (!guessed_[0] && !guessed_[1]) return false;
+    ++guesses_;
+    const bool hit = picked.nodes == guessed_[0] || picked.nodes == guessed_[1];
+    hits_ += hit;
+    guessed_[0] = guessed_[1] = nullptr;
+    return hit;
+}
+
 void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
                           const IncrementalMatches& sets, const Graph& g) {
-    if (guessed_[0] || guessed_[1]) {
-        ++guesses_;
-        if (picked.nodes == guessed_[0] || picked.nodes == guessed_[1]) ++hits_;
-        guessed_[0] = guessed_[1] = nullptr;
-    }
     // A small set's records stay cached anyway: guessing would only cost.
     if (set.size() < kMinMatches) return;
     if (info.pick == Pick::Oldest) {

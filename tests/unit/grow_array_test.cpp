@@ -108,7 +108,7 @@ TEST_CASE("GrowArray copies are deep and moves leave the source empty", "[grow_a
     REQUIRE(big.empty());
 }
 
-TEST_CASE("GrowArray resize, append, assign, pop_back and self push_back", "[grow_array]") {
+TEST_CASE("GrowArray resize, append, assign, pop_back, extendUnset and self push_back", "[grow_array]") {
     GrowArray<int> arr;
     arr.resize(5, 3);
     REQUIRE(std::vector<int>(arr.begin(), arr.end()) == std::vector<int>{3, 3, 3, 3, 3});
@@ -134,6 +134,15 @@ TEST_CASE("GrowArray resize, append, assign, pop_back and self push_back", "[gro
     REQUIRE(recs.size() == 100'001);
     REQUIRE(recs[100'000].a == 7);
     REQUIRE(recs[100'000].b == 9);
+    // extendUnset appends room that the caller writes; earlier elements stay.
+    int* room = arr.extendUnset(3);
+    REQUIRE(room == arr.data() + 3);
+    room[0] = 4, room[1] = 5, room[2] = 6;
+    REQUIRE(std::vector<int>(arr.begin(), arr.end()) == std::vector<int>{8, 8, 8, 4, 5, 6});
+    for (int i = 0; i < 10'000; ++i) *arr.extendUnset(1) = i;   // across growths
+    REQUIRE(arr.size() == 10'006);
+    REQUIRE(arr[5] == 6);
+    REQUIRE(arr[10'005] == 9'999);
     arr.clear();
     REQUIRE(arr.empty());
 }

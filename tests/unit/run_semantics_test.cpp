@@ -585,22 +585,22 @@ TEST_CASE("a node lacking an edge kind its pattern node needs is not searched", 
 }
 
 TEST_CASE("picks are guessed a step ahead on large match sets", "[run][lookahead][large]") {
-    // Koch level 8 keeps tens of thousands of matches, so past 8,192 each step
-    // prefetches the records of the picks it guesses for the next steps
-    // (pick_lookahead.hpp). The guesses only prefetch, so the result is the
-    // exact curve either way; what this checks is that they are right:
-    // random picks are drawn by a copy of the generator with the set's size
-    // guessed from its last growths, and the split alternates between two.
-    // Oldest picks come from the lowest age groups in turn, ties drawn alike.
+    // 40,000 Koch splits (toward level 14) grow the set by about three
+    // matches a step, so past 32,768 matches each step prefetches the records of the
+    // picks it guesses for the next steps (pick_lookahead.hpp). The guesses
+    // only prefetch, so the result is the same either way; what this checks
+    // is that they are right: random picks are drawn by a copy of the
+    // generator with the set's size guessed from its last growths; oldest
+    // picks come from the lowest age groups in turn, ties drawn alike.
     std::string random = koch(), oldest = koch();
     random.replace(random.find("pick oldest"), 11, "");
     for (const auto& [source, leastHits] : {std::pair{random, 0.99}, std::pair{oldest, 0.99}}) {
-        auto r = derive(source, 5, {}, {{"max_lod", 8LL}});
+        auto r = derive(source, 5, 40000, {{"max_lod", 14LL}});
         const auto& d = r.run.derivation;
-        CHECK(d.steps == 65535);
-        CHECK(r.run.graph().edgeCount() == 3 * 65536);
+        CHECK(d.steps == 40000);
+        CHECK(r.run.graph().edgeCount() == 3 + 3 * 40000);
         INFO(d.lookaheadHits << " of " << d.lookaheadGuesses << " guesses right");
-        CHECK(d.lookaheadGuesses > 5000);
+        CHECK(d.lookaheadGuesses > 20000);
         CHECK(static_cast<double>(d.lookaheadHits) >= leastHits * static_cast<double>(d.lookaheadGuesses));
     }
 }

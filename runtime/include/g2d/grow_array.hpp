@@ -112,6 +112,14 @@ public:
         std::memcpy(static_cast<void*>(data_ + size_), first, n * sizeof(T));
         size_ += n;
     }
+    // Appends `n` elements left unset, for the caller to write at once
+    // (no fill that would only be overwritten); returns the first.
+    T* extendUnset(std::size_t n) {
+        reserve(size_ + n);
+        T* first = data_ + size_;
+        size_ += n;
+        return first;
+    }
     void pop_back() { --size_; }
     void clear() { size_ = 0; }
     // Grows (new elements are copies of `fill`) or shrinks to `n` elements.
