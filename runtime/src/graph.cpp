@@ -217,6 +217,9 @@ void Graph::dropStyleList(GrowArray<std::uint32_t>& lists, std::uint32_t id) {
 void Graph::setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v) {
     for (auto& s : style)
         if (s.prop == prop) { s.value = std::move(v); return; }
+    // Room for a few at once: styled elements mostly get several (stroke,
+    // width, fill), and growing 1, 2, 4 was an allocation each.
+    if (style.capacity() == 0) style.reserve(4);
     style.push_back(StyleOverride{prop, std::move(v)});
 }
 
