@@ -260,6 +260,9 @@ private:
             out += in + "    info.readsIncidence = {";
             for (std::size_t i = 0; i < r.readsIncidence.size(); ++i) out += (i ? ", " : "") + incidenceName(r.readsIncidence[i]);
             out += "};\n";
+            out += in + "    info.readDirections = {";
+            for (std::size_t i = 0; i < r.readDirections.size(); ++i) out += (i ? ", " : "") + str(static_cast<long long>(r.readDirections[i]));
+            out += "};\n";
             out += in + "    info.edgeCount = " + str(static_cast<long long>(r.edges.size())) + ";\n";
             out += in + "    info.nodeKinds = {";
             for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);

@@ -266,6 +266,13 @@ private:
                                                            : r_.readsIncidence[static_cast<std::size_t>(p)];
     }
     bool readsIncidence(int p) const { return reads(p) != ir::IncidenceRead::None; }
+    // As MatchSet reads RuleInfo::readDirections.
+    int readDirections(int p) const {
+        if (!readsIncidence(p)) return 0;
+        const int both = ir::kReadsOutEdges | ir::kReadsInEdges;
+        if (reads(p) == ir::IncidenceRead::AllEdges || r_.readDirections.size() != r_.nodes.size()) return both;
+        return r_.readDirections[static_cast<std::size_t>(p)];
+    }
 
     // RuleSet::repair for this rule: the anchored searches inlined, in the
     // generic loop's order (area nodes, then pattern nodes), adding straight
@@ -278,7 +285,12 @@ private:
         out += "        for (const NodeId h : area.nodes) {\n            if (!g.nodeAlive(h)) continue;\n";
         out += "            const bool full = area.full(h);\n            const int hk = g.nodeKind(h);\n            (void)full;\n            (void)hk;\n";
         for (int p = 0; p < static_cast<int>(r_.nodes.size()); ++p) {
-            std::string cond = readsIncidence(p) ? "true" : "full";
+            // A node whose edges alone changed only where p reads those lists
+            // (every area node has a list changed, or changed itself).
+            const int lists = readDirections(p);
+            std::string cond = lists == (ir::kReadsOutEdges | ir::kReadsInEdges) ? "true"
+                               : lists != 0 ? "(full || (area.edgeChanges(h) & " + str(lists) + ") != 0)"
+                                            : "full";
             if (r_.nodes[p].kind >= 0) cond += " && hk == " + str(r_.nodes[p].kind);
             if (const std::string kinds = hasEdgeKinds(p, "h"); !kinds.empty()) cond += " && " + kinds;
             // At a node the step created, an earlier pattern node adds every match (ir::Rule::newHostAddsNothing).
@@ -291,7 +303,7 @@ private:
             // (RepairArea::bindsNewEdge).
             std::string searchedFirst = "true", staleFirst = "true";
             for (int q = 0; q < p; ++q) {
-                searchedFirst += " && !area.searched(" + std::string(readsIncidence(q) ? "true" : "false") + ", n[" + str(q) + "])";
+                searchedFirst += " && !area.searched(" + str(readDirections(q)) + ", n[" + str(q) + "])";
                 staleFirst += " && !area.stale(n[" + str(q) + "], " + (reads(q) == ir::IncidenceRead::AllEdges ? "true" : "false") + ")";
             }
             const std::string fresh = bindsNewEdge("area.newEdgesFrom");

@@ -48,6 +48,7 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         }
         info.radius = r.repairRadius;
         for (ir::IncidenceRead read : r.readsIncidence) info.readsIncidence.push_back(incidence(read));
+        info.readDirections = r.readDirections;
         for (bool nothing : r.newHostAddsNothing) info.newHostAddsNothing.push_back(nothing ? 1 : 0);
         for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
         info.edgeCount = static_cast<int>(r.edges.size());

@@ -5,6 +5,7 @@
 //
 // Graph elements are addressed by (ElemClass, index) so that faces (and 3D
 // volumes) can join nodes and edges later without changing the addressing.
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -281,6 +282,8 @@ enum class Pick { Random, Oldest };
 
 // What a pattern node's matches read of the edges at its host beyond what
 // the other pattern nodes read:
+inline constexpr std::uint8_t kReadsOutEdges = 1, kReadsInEdges = 2;
+
 enum class IncidenceRead {
     None,          // nothing (another end reads the edges between them)
     PatternEdges,  // the pattern's own edges: adding or removing others keeps its matches
@@ -312,6 +315,14 @@ struct Rule {
     // Every edge between two match nodes is read from one end only, so a
     // hub's edge changes need not revisit every match binding the hub.
     std::vector<IncidenceRead> readsIncidence;
+    // Per match node: which of its host's edge lists it reads, as
+    // kReadsOutEdges | kReadsInEdges (0 where readsIncidence is None). A node
+    // reading only the pattern's edges reads the directions of its pattern
+    // edges (an undirected one or a loop: both); one reading every edge,
+    // both. A host whose outgoing edges alone changed is then not searched
+    // again at a node reading only incoming ones, and vice versa: a path's
+    // split revisits the source's end only.
+    std::vector<std::uint8_t> readDirections;
     // Per match node: a search anchored there at a node the step created
     // cannot add a match, so repair skips it. Such a match binds one of the
     // node's edges, all new, and is added from the first of its pattern

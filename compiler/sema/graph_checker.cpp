@@ -438,6 +438,9 @@ private:
                                      static_cast<int>(rule_.nodes.size()));
         rule_.repairRadius = repairRadius(rule_);
         rule_.readsIncidence = incidenceReaders(rule_);
+        std::vector<bool> directed;
+        for (const auto& k : g_.prog.kinds) directed.push_back(k.directed);
+        rule_.readDirections = incidenceDirections(rule_, directed);
         rule_.newHostAddsNothing = newHostsAddingNothing(rule_);
         int edgeKinds = 0;
         for (const auto& k : g_.prog.kinds) edgeKinds += k.cls == ir::ElemClass::Edge;

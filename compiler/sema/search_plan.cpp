@@ -231,6 +231,25 @@ std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule) {
     return reads;
 }
 
+std::vector<std::uint8_t> incidenceDirections(const ir::Rule& rule, const std::vector<bool>& directed) {
+    std::vector<std::uint8_t> dirs(rule.nodes.size(), 0);
+    if (rule.readsIncidence.size() != rule.nodes.size()) return dirs;   // after an error
+    const int outer = static_cast<int>(rule.nodes.size());
+    const std::uint8_t both = ir::kReadsOutEdges | ir::kReadsInEdges;
+    for (const auto& e : rule.edges) {
+        if (e.src < 0 || e.dst < 0 || e.src >= outer || e.dst >= outer) continue;
+        const bool oneWay = e.kind >= 0 && static_cast<std::size_t>(e.kind) < directed.size() &&
+                            directed[static_cast<std::size_t>(e.kind)] && e.src != e.dst;
+        dirs[static_cast<std::size_t>(e.src)] |= oneWay ? ir::kReadsOutEdges : both;
+        dirs[static_cast<std::size_t>(e.dst)] |= oneWay ? ir::kReadsInEdges : both;
+    }
+    for (std::size_t i = 0; i < dirs.size(); ++i) {
+        if (rule.readsIncidence[i] == ir::IncidenceRead::None) dirs[i] = 0;
+        else if (rule.readsIncidence[i] == ir::IncidenceRead::AllEdges || dirs[i] == 0) dirs[i] = both;
+    }
+    return dirs;
+}
+
 std::vector<bool> newHostsAddingNothing(const ir::Rule& rule) {
     const int outer = static_cast<int>(rule.nodes.size());
     std::vector<bool> nothing(rule.nodes.size(), false);

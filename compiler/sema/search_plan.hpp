@@ -25,6 +25,9 @@ namespace g2d::sema {
 int repairRadius(const ir::Rule& rule);
 // Rule::readsIncidence of a rule whose match and negative conditions are built.
 std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule);
+// ir::Rule::readDirections, from its edges, their kinds' directedness
+// (`directed`, by kind) and readsIncidence.
+std::vector<std::uint8_t> incidenceDirections(const ir::Rule& rule, const std::vector<bool>& directed);
 // ir::Rule::newHostAddsNothing, from its edges and readsIncidence.
 std::vector<bool> newHostsAddingNothing(const ir::Rule& rule);
 // ir::Rule::neededEdgeKinds, for a grammar declaring `edgeKinds` edge kinds.

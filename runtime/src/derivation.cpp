@@ -146,6 +146,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     DerivationResult result;
     std::vector<std::size_t> order;
     std::vector<NodeId> changed, edgesChanged;
+    std::vector<std::uint8_t> edgeLists;
     ParallelStep parallel;
     PickLookahead lookahead;
     std::optional<DeadlineWatch> deadline;
@@ -164,7 +165,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             for (std::size_t r : grp.rules) sets.retire(r);
     };
     for (const auto& grp : groups) retireIfSpent(grp);
-    g.takeDirty(changed, edgesChanged);
+    g.takeDirty(changed, edgesChanged, edgeLists);
     static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
@@ -209,9 +210,9 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 }
                 ++grp.applied;
                 retireIfSpent(grp);   // before the repair: a spent rule needs none
-                g.takeDirty(changed, edgesChanged);
+                g.takeDirty(changed, edgesChanged, edgeLists);
                 try {
-                    sets.update(g, changed, edgesChanged, newEdgesFrom, newNodesFrom);
+                    sets.update(g, changed, edgesChanged, edgeLists, newEdgesFrom, newNodesFrom);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
                     if (tracer) tracer->stepDone(step, g);

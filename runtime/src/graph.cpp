@@ -153,11 +153,18 @@ void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v) {
     setStyle(list, prop, std::move(v));
 }
 
-void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly) {
+void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists) {
     itself.clear();
     edgesOnly.clear();
+    edgeLists.clear();
     for (NodeId n : dirty_) {
-        (nodes_[n].dirty & kChangedItself ? itself : edgesOnly).push_back(n);
+        const std::uint8_t d = nodes_[n].dirty;
+        if (d & kChangedItself) {
+            itself.push_back(n);
+        } else {
+            edgesOnly.push_back(n);
+            edgeLists.push_back(static_cast<std::uint8_t>(d >> 1));
+        }
         nodes_[n].dirty = 0;
     }
     dirty_.clear();

@@ -10,7 +10,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
-        sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence);
+        sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence, info.readDirections);
         radius_.push_back(info.radius);
         refill(r, g);
         byRadius_.push_back(r);
@@ -20,21 +20,22 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
 }
 
 void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, int radius) {
+                                const std::vector<NodeId>& edgesOnly, const std::vector<std::uint8_t>& edgeLists,
+                                int radius) {
     if (seen_.size() < g.nodeCapacity()) seen_.resize(g.nodeCapacity() + g.nodeCapacity() / 2, 0);
-    if (++mark_ >= 0x7fffffffu) {  // about to wrap: forget every old mark
+    if (++mark_ >= 0x1fffffffu) {  // about to wrap: forget every old mark
         std::fill(seen_.begin(), seen_.end(), 0);
         mark_ = 1;
     }
-    const std::uint32_t full = mark_ * 2 + 1, partial = mark_ * 2;
+    const std::uint32_t full = mark_ * 8 + 1, partial = mark_ * 8;
     area_.clear();
     for (NodeId n : itself) {
         seen_[n] = full;
         area_.push_back(n);
     }
-    for (NodeId n : edgesOnly) {
-        seen_[n] = partial;
-        area_.push_back(n);
+    for (std::size_t i = 0; i < edgesOnly.size(); ++i) {
+        seen_[edgesOnly[i]] = partial + 2u * edgeLists[i];
+        area_.push_back(edgesOnly[i]);
     }
     // Nodes reached within the radius are revisited fully (a negative
     // condition's nodes may be there).
@@ -56,7 +57,8 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
 }
 
 void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom, NodeId newNodesFrom) {
+                                const std::vector<NodeId>& edgesOnly, const std::vector<std::uint8_t>& edgeLists,
+                                EdgeId newEdgesFrom, NodeId newNodesFrom) {
     if (itself.empty() && edgesOnly.empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     // When the step changed at least half of the nodes (a parallel step
@@ -75,13 +77,13 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             continue;
         }
         if (radius_[r] != areaRadius) {
-            region(g, itself, edgesOnly, radius_[r]);
+            region(g, itself, edgesOnly, edgeLists, radius_[r]);
             areaRadius = radius_[r];
         }
         const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom, newNodesFrom};
         for (NodeId n : area_) {
             if (area.full(n)) set.removeTouching(n);
-            else set.removeBrokenAt(n, g);
+            else set.removeBrokenAt(n, area.edgeChanges(n), g);
         }
         rules_.repair(r, g, area, set, found_);
     }
@@ -114,7 +116,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
         if (!g.nodeAlive(h)) continue;
         const bool full = area.full(h);
         for (int p = 0; p < nn; ++p) {
-            if (!full && !set.readsIncidence(p)) continue;
+            if (!full && (set.readDirections(p) & area.edgeChanges(h)) == 0) continue;
             const int kind = kinds[static_cast<std::size_t>(p)];
             if (kind >= 0 && kind != g.nodeKind(h)) continue;
             if (h >= area.newNodesFrom && !newAddsNothing.empty() && newAddsNothing[static_cast<std::size_t>(p)]) continue;
@@ -129,7 +131,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
                 // Keep it only from the first of its anchors that adds it.
                 bool first = true;
                 for (int q = 0; q < p && first; ++q)
-                    first = fresh ? !area.searched(set.readsIncidence(q), ids[q]) : !area.stale(ids[q], set.readsAllEdges(q));
+                    first = fresh ? !area.searched(set.readDirections(q), ids[q]) : !area.stale(ids[q], set.readsAllEdges(q));
                 if (first) set.add(ids, g);
             }
         }

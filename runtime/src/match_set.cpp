@@ -1,17 +1,26 @@
 #include "g2d/match_set.hpp"
 
+#include "g2d/derivation.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
 namespace g2d::rt {
 
-MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads)
+MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
     : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)),
       stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 2 : 0)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
     if (reads.size() != static_cast<std::size_t>(nodes)) reads.assign(static_cast<std::size_t>(nodes), Incidence::AllEdges);
     for (Incidence r : reads) reads_.push_back(static_cast<std::uint8_t>(r));
+    const bool given = directions.size() == reads.size();
+    for (std::size_t i = 0; i < reads.size(); ++i) {
+        const std::uint8_t both = RepairArea::kOut | RepairArea::kIn;
+        const std::uint8_t d = reads[i] == Incidence::None ? 0 : given ? directions[i] : both;
+        directions_.push_back(reads[i] == Incidence::AllEdges ? both : d);
+        readingDirections_ |= directions_.back();
+    }
 }
 
 long long MatchSet::ageSum(Id id) const {

@@ -109,3 +109,26 @@ TEST_CASE("mapping by name: kept, deleted, new, implicit keeps and wildcards", "
     CHECK(d.edges[1].motherEdge == 0);  // e is kept and rewired to n → y
     CHECK(d.edges[1].src == 0);
 }
+
+TEST_CASE("each reading match node reads the edge lists of its pattern edges' directions", "[ir][incremental]") {
+    // Each pattern edge is read from one end (readsIncidence); that end
+    // reads only its outgoing list for a directed edge leaving it, only its
+    // incoming list for one entering it, both for an undirected edge or a
+    // loop, and both where it reads every edge (a degree, a negative condition).
+    auto r = compile("node P;\nedge D directed;\nedge U;\naxiom { a: P at (0, 0); }\n"
+                     "rule Out { match { s: P; t: P; d: s -[D]-> t; } produce { s; t; } }\n"
+                     "rule In { match { s: P; t: P; u: P; d: s -[D]-> t; f: u -[D]-> t; } produce { s; t; u; } }\n"
+                     "rule Both { match { s: P; t: P; x: s -[U]- t; } produce { s; t; } }\n"
+                     "rule Loop { match { s: P; l: s -[D]-> s; } produce { s; } }\n"
+                     "rule Degree { match { s: P where s.degree > 1; t: P; d: s -[D]-> t; } produce { s; t; } }\n");
+    INFO(test::firstError(r));
+    REQUIRE(r.program);
+    const auto& rules = r.program->rules;
+    REQUIRE(rules.size() == 5);
+    const std::uint8_t out = ir::kReadsOutEdges, in = ir::kReadsInEdges, both = out | in;
+    CHECK(rules[0].readDirections == std::vector<std::uint8_t>{out, 0});
+    CHECK(rules[1].readDirections == std::vector<std::uint8_t>{0, in, 0});   // t covers both edges
+    CHECK(rules[2].readDirections == std::vector<std::uint8_t>{both, 0});
+    CHECK(rules[3].readDirections == std::vector<std::uint8_t>{both});
+    CHECK(rules[4].readDirections == std::vector<std::uint8_t>{both, 0});
+}

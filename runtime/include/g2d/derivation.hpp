@@ -58,6 +58,10 @@ struct RuleInfo {
     // Per pattern node: which edge changes alone at its host matter (see
     // IncrementalMatches); empty means all do.
     std::vector<Incidence> readsIncidence;
+    // Per pattern node: which of the host's edge lists it reads
+    // (RepairArea::kOut | kIn; ir::Rule::readDirections); empty: both
+    // wherever readsIncidence reads any.
+    std::vector<std::uint8_t> readDirections;
     // Per pattern node: whether a search anchored there at a node the step
     // created can add nothing (ir::Rule::newHostAddsNothing); empty: none.
     std::vector<std::uint8_t> newHostAddsNothing;
@@ -65,24 +69,28 @@ struct RuleInfo {
 
 // The nodes around a step's changes whose matches a rule finds again
 // (IncrementalMatches): every node of `nodes` is marked in `seen` as
-// mark * 2 + 1 (search it at every pattern node) or mark * 2 (only its edges
-// changed: search it at the pattern nodes that read incidences).
+// mark * 8 + 1 (search it at every pattern node) or mark * 8 + 2 * d, where
+// d says which of its edge lists alone changed (kOut: outgoing, kIn:
+// incoming, or both): search it at the pattern nodes reading those.
 struct RepairArea {
+    static constexpr std::uint8_t kOut = 1, kIn = 2;   // edge lists (as ir::kReadsOutEdges, kReadsInEdges)
     std::span<const NodeId> nodes;
     const std::uint32_t* seen = nullptr;
     std::uint32_t mark = 0;
     EdgeId newEdgesFrom = 0;   // the edges the step added have ids from this one on (ids are never reused)
     NodeId newNodesFrom = kNoId;   // likewise the nodes it added
-    bool contains(NodeId h) const { return (seen[h] >> 1) == mark; }
-    // Whether host `h` is searched at a pattern node (`reads`: that node reads
-    // incidences). A match binding a new edge is added from the first of its
-    // pattern nodes whose host is searched (see bindsNewEdge).
-    bool searched(bool reads, NodeId h) const {
+    bool contains(NodeId h) const { return (seen[h] >> 3) == mark; }
+    // Whether host `h` is searched at a pattern node reading the edge lists
+    // `reads` (0: none). A match binding a new edge is added from the first
+    // of its pattern nodes whose host is searched (see bindsNewEdge).
+    bool searched(std::uint8_t reads, NodeId h) const {
         const std::uint32_t s = seen[h];
-        return (s >> 1) == mark && ((s & 1) != 0 || reads);
+        return (s >> 3) == mark && ((s & 1) != 0 || ((s >> 1) & reads) != 0);
     }
-    // For a node of `nodes`: whether it is searched at every pattern node.
+    // For a node of `nodes`: whether it is searched at every pattern node,
+    // and which of its edge lists changed (when not).
     bool full(NodeId h) const { return (seen[h] & 1) != 0; }
+    std::uint8_t edgeChanges(NodeId h) const { return static_cast<std::uint8_t>((seen[h] >> 1) & 3); }
     // Whether a match binds an edge the step added. Such a match is added
     // from the first of its pattern nodes whose host is searched; any other
     // match the set lacks (it binds a node that changed itself or lies in

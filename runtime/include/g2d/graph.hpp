@@ -182,15 +182,18 @@ public:
 
     // Change tracking for incremental matching, since the last takeDirty():
     // nodes created, deleted or changed themselves (position, attributes),
-    // and nodes only whose incident edges were added or removed. An edge
-    // whose attributes or ends change makes its ends count as changed
-    // themselves (incremental matching tells an edge the step added by its
-    // id, but keeps no other mark per edge).
+    // and nodes only whose incident edges were added or removed, with which
+    // of their edge lists (outgoing, incoming) changed. An edge whose
+    // attributes or ends change makes its ends count as changed themselves
+    // (incremental matching tells an edge the step added by its id, but
+    // keeps no other mark per edge).
     void touchNode(NodeId n) { touch(n, kChangedItself); }
-    void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedEdges); touch(edges_[e].dst, kChangedEdges); }
+    void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedOut); touch(edges_[e].dst, kChangedIn); }
     void touchEdgeItself(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
-    // Moves the changed nodes into `itself` and `edgesOnly` (cleared first).
-    void takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly);
+    // Moves the changed nodes into `itself` and `edgesOnly` (cleared first);
+    // `edgeLists[i]` says which lists of `edgesOnly[i]` changed
+    // (RepairArea::kOut | kIn).
+    void takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists);
 
     // Bytes held by the graph's own arrays (for the benchmarks).
     std::size_t memoryBytes() const;
@@ -202,7 +205,7 @@ private:
         std::int16_t kind = -1;
         bool alive = true;
         std::uint8_t styled : 1 = 0;
-        std::uint8_t dirty : 2 = 0;               // kChanged* bits (kept here: one cache line per node)
+        std::uint8_t dirty : 3 = 0;               // kChanged* bits (kept here: one cache line per node)
         std::uint32_t slot = kNoId;
         std::uint32_t slotInKind = 0;            // its place in kindNodes_[kind]
         std::uint32_t edgeKinds = 0;             // edgeKindsAt
@@ -220,7 +223,8 @@ private:
     };
     static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 40);
 
-    static constexpr std::uint8_t kChangedItself = 1, kChangedEdges = 2;
+    // Out and In as RepairArea::kOut and kIn, one bit up.
+    static constexpr std::uint8_t kChangedItself = 1, kChangedOut = 2, kChangedIn = 4;
     void touch(NodeId n, std::uint8_t what) {
         if (!nodes_[n].dirty) dirty_.push_back(n);
         nodes_[n].dirty |= what;

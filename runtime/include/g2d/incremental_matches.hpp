@@ -43,10 +43,12 @@ public:
     // is emptied and no longer repaired or verified.
     void retire(std::size_t rule);
     // Repairs every rule's set after the nodes in `itself` changed, and those
-    // in `edgesOnly` saw only edges change (Graph::takeDirty).
+    // in `edgesOnly` saw only edges change, in their lists `edgeLists`
+    // (Graph::takeDirty).
     // The step just applied added the edges from id `newEdgesFrom` on, and
     // the nodes from `newNodesFrom` on.
-    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, EdgeId newEdgesFrom,
+    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly,
+                const std::vector<std::uint8_t>& edgeLists, EdgeId newEdgesFrom,
                 NodeId newNodesFrom);
     // Prefetches what the next update reads about the nodes of a match
     // about to be rewritten (their marks, their lists in the first rules'
@@ -59,10 +61,10 @@ public:
 
 private:
     // The changed nodes and those within `radius` edges of them, in area_,
-    // marked in seen_ as mark_ * 2 + 1 (to revisit at every pattern node) or
-    // mark_ * 2 (only edges changed: pattern nodes reading incidences).
-    void region(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly, int radius);
-    bool inArea(NodeId n) const { return (seen_[n] >> 1) == mark_; }
+    // marked in seen_ as RepairArea reads them.
+    void region(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly,
+                const std::vector<std::uint8_t>& edgeLists, int radius);
+    bool inArea(NodeId n) const { return (seen_[n] >> 3) == mark_; }
     // Empties `rule`'s set and fills it by a full search.
     void refill(std::size_t rule, const Graph& g);
 

@@ -74,7 +74,9 @@ public:
     // `reads[i]`: what pattern node i reads of its host's edges; the nodes
     // that read any are indexed apart, so that matches binding a node there
     // can be dropped alone (empty: every node reads every edge).
-    MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads = {});
+    // `directions[i]`: which of the host's edge lists it reads
+    // (RepairArea::kOut | kIn; empty: both, wherever it reads any).
+    MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads = {}, std::vector<std::uint8_t> directions = {});
 
     // Adds a match (nodes, then edges); the caller guarantees it is not there yet.
     void add(const std::uint32_t* ids, const Graph& g);
@@ -87,11 +89,14 @@ public:
         if (heads_[at] != kNoId) unlinkAll(at);
         if (heads_[at + 1] != kNoId) unlinkAll(at + 1);
     }
-    // Removes the matches that only edge changes at node `n` break: those
-    // binding it at a pattern node reading every edge, and those binding a
-    // removed edge (found through their pattern nodes that read edges).
-    void removeBrokenAt(NodeId n, const Graph& g) {
-        if (2 * std::size_t{n} < heads_.size() && heads_[2 * std::size_t{n}] != kNoId) unlinkBroken(n, g);
+    // Removes the matches that only changes to node `n`'s edge lists
+    // `lists` (RepairArea::kOut | kIn) break: those binding it at a pattern
+    // node reading every edge, and those binding a removed edge (found
+    // through their pattern nodes that read edges). None when no pattern
+    // node reads those lists.
+    void removeBrokenAt(NodeId n, std::uint8_t lists, const Graph& g) {
+        if ((lists & readingDirections_) != 0 && 2 * std::size_t{n} < heads_.size() && heads_[2 * std::size_t{n}] != kNoId)
+            unlinkBroken(n, g);
     }
     // Asks for node `n`'s list heads ahead of a repair (IncrementalMatches::prefetch).
     void prefetchHeads(NodeId n) const {
@@ -100,6 +105,8 @@ public:
     // Whether pattern node `node` reads its host's edges (any, or all).
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
     bool readsAllEdges(int node) const { return reads_[static_cast<std::size_t>(node)] == kAll; }
+    // Which of its host's edge lists pattern node `node` reads (RepairArea::kOut | kIn).
+    std::uint8_t readDirections(int node) const { return directions_[static_cast<std::size_t>(node)]; }
     void clear();
     // Empties the set and gives its memory back.
     void release();
@@ -161,6 +168,8 @@ private:
     GrowArray<Id> free_;
     static constexpr std::uint8_t kAll = static_cast<std::uint8_t>(Incidence::AllEdges);
     std::vector<std::uint8_t> reads_;        // per pattern node, an Incidence (bytes: read on every add)
+    std::vector<std::uint8_t> directions_;   // per pattern node, the edge lists it reads
+    std::uint8_t readingDirections_ = 0;     // their union
     // Per node two list heads side by side (one cache line for both): word
     // 2n heads the list of positions reading incidences, 2n + 1 the others'.
     GrowArray<std::uint32_t> heads_;
