@@ -109,6 +109,9 @@ class Suite:
             "bytes_per_element": rss / max(elements, 1),
             "interp_seconds": interp["seconds"] if interp else None,
             "original": original,
+            # Sequential picks guessed a step ahead for prefetching (runtime/include/g2d/pick_lookahead.hpp).
+            "guesses": compiled.get("lookahead_guesses", 0),
+            "hits": compiled.get("lookahead_hits", 0),
         }
         if interp and interp["steps"] != compiled["steps"]:
             raise RuntimeError(f"{bench} {size}: interpreted {interp['steps']} steps, compiled {compiled['steps']}")
@@ -135,8 +138,9 @@ class Suite:
                 print(line, flush=True)
 
     def header(self):
-        print("| benchmark | size | steps | elements | seconds | rewrites/s | bytes/element | interpreted s | compiled × faster | vs original |")
-        print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|", flush=True)
+        print("| benchmark | size | steps | elements | seconds | rewrites/s | bytes/element | interpreted s | compiled × faster "
+              "| vs original | picks guessed |")
+        print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|", flush=True)
 
     @staticmethod
     def print_row(r):
@@ -145,8 +149,9 @@ class Suite:
         orig = "–"
         if r["original"]:
             orig = f"{r['original'] / r['seconds']:,.0f}×"
+        guessed = f"{r['hits'] / r['guesses']:.1%} of {r['guesses']:,}" if r["guesses"] else "–"
         print(f"| {r['benchmark']} | {r['size']} | {r['steps']} | {r['elements']} | {r['seconds']:.4g} | "
-              f"{r['steps_per_s']:,.0f} | {r['bytes_per_element']:.0f} | {interp} | {ratio} | {orig} |", flush=True)
+              f"{r['steps_per_s']:,.0f} | {r['bytes_per_element']:.0f} | {interp} | {ratio} | {orig} | {guessed} |", flush=True)
 
 
 def count_instructions(cmd):
