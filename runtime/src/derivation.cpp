@@ -70,33 +70,32 @@ public:
             for (std::size_t i = 0; i < set.size(); ++i) sums_[i] = set.ageSumAt(i);
             std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return sums_[a] < sums_[b]; });
         }
-        if (++stamp_ == 0) {
-            for (auto* v : {&readNodes_, &writtenNodes_, &readEdges_, &writtenEdges_}) std::fill(v->begin(), v->end(), 0);
+        if (++stamp_ >= 0x7fffffffu) {   // about to wrap: forget every old mark
+            for (auto* v : {&nodeMarks_, &edgeMarks_}) std::fill(v->begin(), v->end(), 0);
             stamp_ = 1;
         }
-        grow(readNodes_, g.nodeCapacity());
-        grow(writtenNodes_, g.nodeCapacity());
-        grow(readEdges_, g.edgeCapacity());
-        grow(writtenEdges_, g.edgeCapacity());
+        grow(nodeMarks_, g.nodeCapacity());
+        grow(edgeMarks_, g.edgeCapacity());
+        const std::uint32_t read = stamp_ * 2, written = stamp_ * 2 + 1;
         // daughter_[i]: the daughter drawn for the set's match i, kNotTaken if it is not rewritten.
         daughter_.assign(set.size(), kNotTaken);
         std::size_t taken = 0;
         for (std::uint32_t i : order_) {
             const Match m = set.at(i);
             bool clash = false;
-            for (int k = 0; k < nn; ++k) clash = clash || writtenNodes_[m.nodes[k]] == stamp_;
-            for (int k = 0; k < ne; ++k) clash = clash || writtenEdges_[m.edges[k]] == stamp_;
+            for (int k = 0; k < nn; ++k) clash = clash || nodeMarks_[m.nodes[k]] == written;
+            for (int k = 0; k < ne; ++k) clash = clash || edgeMarks_[m.edges[k]] == written;
             if (clash) continue;
             const std::size_t daughter = pickDaughter(info.weights, rng);
             writes_.clear();
             rules.writeSet(rule, daughter, m, writes_);
-            for (NodeId n : writes_.nodes) clash = clash || readNodes_[n] == stamp_;
-            for (EdgeId e : writes_.edges) clash = clash || readEdges_[e] == stamp_;
+            for (NodeId n : writes_.nodes) clash = clash || (nodeMarks_[n] >> 1) == stamp_;
+            for (EdgeId e : writes_.edges) clash = clash || (edgeMarks_[e] >> 1) == stamp_;
             if (clash) continue;
-            for (int k = 0; k < nn; ++k) readNodes_[m.nodes[k]] = stamp_;
-            for (int k = 0; k < ne; ++k) readEdges_[m.edges[k]] = stamp_;
-            for (NodeId n : writes_.nodes) writtenNodes_[n] = stamp_;
-            for (EdgeId e : writes_.edges) writtenEdges_[e] = stamp_;
+            for (int k = 0; k < nn; ++k) nodeMarks_[m.nodes[k]] = read;   // none was written (no clash)
+            for (int k = 0; k < ne; ++k) edgeMarks_[m.edges[k]] = read;
+            for (NodeId n : writes_.nodes) nodeMarks_[n] = written;
+            for (EdgeId e : writes_.edges) edgeMarks_[e] = written;
             daughter_[i] = static_cast<std::uint32_t>(daughter);
             ++taken;
         }
@@ -114,13 +113,17 @@ public:
     }
 
 private:
+    // A little room ahead only: the marks are filled as they grow, and a
+    // whole generation's graph is large.
     static void grow(std::vector<std::uint32_t>& v, std::size_t n) {
-        if (v.size() < n) v.resize(n + n / 2, 0);
+        if (v.size() < n) v.resize(n + n / 8, 0);
     }
     static constexpr std::uint32_t kNotTaken = 0xffffffffu;
     std::vector<std::uint32_t> order_, daughter_;
     std::vector<long long> sums_;
-    std::vector<std::uint32_t> readNodes_, writtenNodes_, readEdges_, writtenEdges_;
+    // Per element, stamp * 2 if a taken match reads it in this step, stamp *
+    // 2 + 1 if one writes it (a match writes only elements it reads).
+    std::vector<std::uint32_t> nodeMarks_, edgeMarks_;
     std::uint32_t stamp_ = 0;
     WriteSet writes_;
 };
