@@ -213,9 +213,13 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 }
                 ++grp.applied;
                 retireIfSpent(grp);   // before the repair: a spent rule needs none
-                g.takeDirty(changed, edgesChanged, edgeLists);
+                const bool everything = IncrementalMatches::searchesEverything(g);
+                if (everything)
+                    g.forgetChanges();
+                else
+                    g.takeDirty(changed, edgesChanged, edgeLists);
                 try {
-                    sets.update(g, changed, edgesChanged, edgeLists, newEdgesFrom, newNodesFrom);
+                    sets.update(g, changed, edgesChanged, edgeLists, newEdgesFrom, newNodesFrom, everything);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
                     if (tracer) tracer->stepDone(step, g);

@@ -170,6 +170,11 @@ void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnl
     dirty_.clear();
 }
 
+void Graph::forgetChanges() {
+    for (NodeId n : dirty_) nodes_[n].dirty = 0;
+    dirty_.clear();
+}
+
 int Graph::degree(NodeId n) const {
     int d = 0;
     for (EdgeId e = firstOut(n); e != kNoId; e = nextOut(e)) ++d;

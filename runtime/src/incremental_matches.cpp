@@ -56,22 +56,25 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
     }
 }
 
-void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, const std::vector<std::uint8_t>& edgeLists,
-                                EdgeId newEdgesFrom, NodeId newNodesFrom) {
-    if (itself.empty() && edgesOnly.empty()) return;
-    int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
+bool IncrementalMatches::searchesEverything(const Graph& g) {
     // When the step changed at least half of the nodes (a parallel step
     // rewriting a whole generation), one full search is cheaper than an
     // anchored search from every changed node at every pattern node, which
     // finds each match once per anchor. Small graphs keep to repair (its
     // cost is small there), so the tests' small random grammars compare the
     // back ends' repairs.
-    const bool most = g.nodeCount() >= kFullSearchMinNodes && 2 * (itself.size() + edgesOnly.size()) >= g.nodeCount();
+    return g.nodeCount() >= kFullSearchMinNodes && 2 * g.changedNodeCount() >= g.nodeCount();
+}
+
+void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
+                                const std::vector<NodeId>& edgesOnly, const std::vector<std::uint8_t>& edgeLists,
+                                EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything) {
+    if (!everything && itself.empty() && edgesOnly.empty()) return;
+    int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     for (const std::size_t r : byRadius_) {
         if (retired_[r]) continue;
         MatchSet& set = sets_[r];
-        if (radius_[r] < 0 || most) {
+        if (radius_[r] < 0 || everything) {
             // Not local, or not worth it: find them all again.
             refill(r, g);
             continue;

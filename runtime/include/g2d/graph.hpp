@@ -194,6 +194,10 @@ public:
     // `edgeLists[i]` says which lists of `edgesOnly[i]` changed
     // (RepairArea::kOut | kIn).
     void takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists);
+    // How many nodes changed; forgetting them (for a step after which every
+    // match is searched again: a whole generation's lists would be large).
+    std::size_t changedNodeCount() const { return dirty_.size(); }
+    void forgetChanges();
 
     // Bytes held by the graph's own arrays (for the benchmarks).
     std::size_t memoryBytes() const;

@@ -47,9 +47,15 @@ public:
     // (Graph::takeDirty).
     // The step just applied added the edges from id `newEdgesFrom` on, and
     // the nodes from `newNodesFrom` on.
+    // With `everything`, every rule is searched in full instead (and the
+    // changes are not needed: see searchesEverything).
     void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly,
                 const std::vector<std::uint8_t>& edgeLists, EdgeId newEdgesFrom,
-                NodeId newNodesFrom);
+                NodeId newNodesFrom, bool everything = false);
+    // Whether the changes `g` has recorded are so many that the next update
+    // should search every rule in full (then they need not be listed:
+    // Graph::forgetChanges is enough).
+    static bool searchesEverything(const Graph& g);
     // Prefetches what the next update reads about the nodes of a match
     // about to be rewritten (their marks, their lists in the first rules'
     // sets), with the match's own records.
