@@ -35,7 +35,9 @@ AgeBuckets::Page& AgeBuckets::pageFor(std::size_t pageNo) {
 void AgeBuckets::insert(std::uint32_t id, long long key) {
     if (key < 0) throw std::logic_error("a negative age sum");
     const auto k = static_cast<std::uint64_t>(key);
-    Page& page = pageFor(static_cast<std::size_t>(k >> kPageBits));
+    const auto pageNo = static_cast<std::size_t>(k >> kPageBits);
+    // Most keys land on a page in use (keys of nearby steps are close).
+    Page& page = pageNo < pages_.size() && pages_[pageNo] ? *pages_[pageNo] : pageFor(pageNo);
     const std::size_t slot = k & (kPageKeys - 1);
     std::uint64_t& word = page.occupied[slot / 64];
     const std::uint64_t bit = std::uint64_t{1} << (slot % 64);
