@@ -9,8 +9,11 @@
 // full. A node that changed itself (or lies in the radius) has every match
 // binding it dropped and searched again. A node whose edges alone changed
 // (one was added or removed) is revisited only at the pattern nodes that read
-// incidences (RuleInfo::readsIncidence): a resource whose token moves does
-// not re-find every request pairing it with each process. Where such a
+// incidences (RuleInfo::readsIncidence), and among those only at the ones
+// reading the list that changed, outgoing or incoming
+// (RuleInfo::readDirections): a resource whose token moves does not re-find
+// every request pairing it with each process, and splitting a path's edge
+// s->e revisits s alone. Where such a
 // pattern node reads only the pattern's own edges, a match binding the node
 // there is dropped only if it binds a removed edge, and only matches binding
 // a new edge are searched from there (new edges have the highest ids, which
