@@ -266,11 +266,9 @@ private:
                                                            : r_.readsIncidence[static_cast<std::size_t>(p)];
     }
     bool readsIncidence(int p) const { return reads(p) != ir::IncidenceRead::None; }
-    // As MatchSet reads RuleInfo::readDirections.
+    // ir::Rule::readDirections (sema fills it for every rule it lowers).
     int readDirections(int p) const {
-        if (!readsIncidence(p)) return 0;
-        const int both = ir::kReadsOutEdges | ir::kReadsInEdges;
-        if (reads(p) == ir::IncidenceRead::AllEdges || r_.readDirections.size() != r_.nodes.size()) return both;
+        if (r_.readDirections.size() != r_.nodes.size()) return readsIncidence(p) ? ir::kReadsOutEdges | ir::kReadsInEdges : 0;
         return r_.readDirections[static_cast<std::size_t>(p)];
     }
 

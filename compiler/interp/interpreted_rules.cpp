@@ -5,6 +5,10 @@
 
 #include "g2d/placement.hpp"
 
+// The IR's edge-list bits are the runtime's (ir::Rule::readDirections is
+// handed over as is, and generated code writes the same numbers).
+static_assert(g2d::ir::kReadsOutEdges == g2d::rt::RepairArea::kOut && g2d::ir::kReadsInEdges == g2d::rt::RepairArea::kIn);
+
 namespace g2d::interp {
 
 using ir::PlanStep;

@@ -37,8 +37,7 @@ public:
     std::size_t peekLowest(std::uint32_t* groups, std::size_t count) const;
     void prefetchGroup(std::uint32_t group) const { __builtin_prefetch(&groups_[group]); }
     std::span<const std::uint32_t> groupIds(std::uint32_t group) const {
-        const Group& g = groups_[group];
-        return {g.spill == kNone ? g.inl : spills_[g.spill].data(), g.size};
+        return {idsOf(groups_[group]), groups_[group].size};
     }
 
 private:
@@ -60,6 +59,7 @@ private:
     };
     static constexpr std::uint32_t kNone = 0xffffffffu;
     std::uint32_t* idsOf(Group& g) { return g.spill == kNone ? g.inl : spills_[g.spill].data(); }
+    const std::uint32_t* idsOf(const Group& g) const { return g.spill == kNone ? g.inl : spills_[g.spill].data(); }
     struct Place {
         std::uint32_t group, pos;
     };
