@@ -102,8 +102,8 @@ void Graph::removeNode(NodeId n) {
     kindList.pop_back();
     rec.alive = false;
     clearAttrBlock(rec.kind, rec.slot);
-    if (rec.styled) dropStyleList(nodeStyleList_, n);
-    rec.styled = false;
+    if (rec.marks & kStyled) dropStyleList(nodeStyleList_, n);
+    rec.marks &= static_cast<std::uint8_t>(~kStyled);
     --liveNodes_;
 }
 
@@ -134,7 +134,7 @@ void Graph::initEdgeAttr(EdgeId e, int i, Value v) {
 }
 
 const std::vector<StyleOverride>& Graph::nodeStyle(NodeId n) const {
-    return nodes_[n].styled ? styleLists_[nodeStyleList_[n]] : kNoStyle;
+    return (nodes_[n].marks & kStyled) ? styleLists_[nodeStyleList_[n]] : kNoStyle;
 }
 
 const std::vector<StyleOverride>& Graph::edgeStyle(EdgeId e) const {
@@ -143,7 +143,7 @@ const std::vector<StyleOverride>& Graph::edgeStyle(EdgeId e) const {
 
 void Graph::setNodeStyle(NodeId n, const std::string& prop, Value v) {
     auto& list = styleListOf(nodeStyleList_, n, nodes_.size());
-    nodes_[n].styled = true;
+    nodes_[n].marks |= kStyled;
     setStyle(list, prop, std::move(v));
 }
 
@@ -158,20 +158,20 @@ void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnl
     edgesOnly.clear();
     edgeLists.clear();
     for (NodeId n : dirty_) {
-        const std::uint8_t d = nodes_[n].dirty;
+        const std::uint8_t d = nodes_[n].marks & kChanged;
         if (d & kChangedItself) {
             itself.push_back(n);
         } else {
             edgesOnly.push_back(n);
             edgeLists.push_back(static_cast<std::uint8_t>(d >> 1));
         }
-        nodes_[n].dirty = 0;
+        nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);
     }
     dirty_.clear();
 }
 
 void Graph::forgetChanges() {
-    for (NodeId n : dirty_) nodes_[n].dirty = 0;
+    for (NodeId n : dirty_) nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);
     dirty_.clear();
 }
 

@@ -208,8 +208,10 @@ private:
         long long age = 0;
         std::int16_t kind = -1;
         bool alive = true;
-        std::uint8_t styled : 1 = 0;
-        std::uint8_t dirty : 3 = 0;               // kChanged* bits (kept here: one cache line per node)
+        // kChanged* bits (kept here: one cache line per node), and kStyled.
+        // A byte, not bit fields: a record is then written without reading
+        // it back (a bit field's store is a read-modify-write).
+        std::uint8_t marks = 0;
         std::uint32_t slot = kNoId;
         std::uint32_t slotInKind = 0;            // its place in kindNodes_[kind]
         std::uint32_t edgeKinds = 0;             // edgeKindsAt
@@ -229,9 +231,10 @@ private:
 
     // Out and In as RepairArea::kOut and kIn, one bit up.
     static constexpr std::uint8_t kChangedItself = 1, kChangedOut = 2, kChangedIn = 4;
+    static constexpr std::uint8_t kChanged = kChangedItself | kChangedOut | kChangedIn, kStyled = 8;
     void touch(NodeId n, std::uint8_t what) {
-        if (!nodes_[n].dirty) dirty_.push_back(n);
-        nodes_[n].dirty |= what;
+        if (!(nodes_[n].marks & kChanged)) dirty_.push_back(n);
+        nodes_[n].marks |= what;
     }
     std::size_t attrIndex(int kind, std::uint32_t slot, int i) const {
         return static_cast<std::size_t>(slot) * defaults_[kind].size() + static_cast<std::size_t>(i);
@@ -266,16 +269,14 @@ private:
 
 NodeId Graph::addNode(int kind, vec2 pos, long long age) {
     const auto id = static_cast<NodeId>(nodes_.size());
-    NodeRec rec;
-    rec.kind = static_cast<std::int16_t>(kind);
-    rec.pos = pos;
-    rec.age = age;
-    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
+    const std::uint32_t slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
     auto& ofKind = kindNodes_[kind];
-    rec.slotInKind = static_cast<std::uint32_t>(ofKind.size());
-    rec.dirty = kChangedItself;
+    // Built in place: a record built aside and copied in is read back with
+    // wide loads over its narrow stores, which cannot be forwarded (a stall).
+    ::new (static_cast<void*>(nodes_.extendUnset(1)))
+        NodeRec{pos, age, static_cast<std::int16_t>(kind), true, kChangedItself, slot,
+                static_cast<std::uint32_t>(ofKind.size()), 0, kNoId, kNoId};
     ofKind.push_back(id);
-    nodes_.push_back(rec);
     dirty_.push_back(id);
     ++liveNodes_;
     return id;
@@ -284,13 +285,9 @@ NodeId Graph::addNode(int kind, vec2 pos, long long age) {
 EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
     if (!nodeAlive(src) || !nodeAlive(dst)) deadEndpoint();
     const auto id = static_cast<EdgeId>(edges_.size());
-    EdgeRec rec;
-    rec.kind = static_cast<std::int16_t>(kind);
-    rec.src = src;
-    rec.dst = dst;
-    rec.age = age;
-    rec.slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
-    edges_.push_back(rec);
+    const std::uint32_t slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
+    ::new (static_cast<void*>(edges_.extendUnset(1)))   // in place, as in addNode
+        EdgeRec{age, static_cast<std::int16_t>(kind), true, false, slot, src, dst, kNoId, kNoId, kNoId, kNoId};
     link(id);
     ++liveEdges_;
     touchEdge(id);

@@ -84,6 +84,7 @@ public:
     const T& back() const { return data_[size_ - 1]; }
 
     void push_back(const T& value) {
+        __builtin_prefetch(data_ + size_ + kWriteAhead, 1, 3);
         if (size_ == capacity_) {
             const T copy = value;   // `value` may live in this array
             reserve(size_ + 1);
@@ -95,6 +96,7 @@ public:
     }
     template <class... Args>
     T& emplace_back(Args&&... args) {
+        __builtin_prefetch(data_ + size_ + kWriteAhead, 1, 3);
         if (size_ == capacity_) {
             const T made{std::forward<Args>(args)...};   // the arguments may live in this array
             reserve(size_ + 1);
@@ -115,6 +117,7 @@ public:
     // Appends `n` elements left unset, for the caller to write at once
     // (no fill that would only be overwritten); returns the first.
     T* extendUnset(std::size_t n) {
+        __builtin_prefetch(data_ + size_ + kWriteAhead, 1, 3);
         reserve(size_ + n);
         T* first = data_ + size_;
         size_ += n;
@@ -152,6 +155,7 @@ public:
     static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
 
 private:
+    static constexpr std::size_t kWriteAhead = std::max<std::size_t>(1, 512 / sizeof(T));
     static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(4, 256 / sizeof(T));
     T* data_ = nullptr;
     std::size_t size_ = 0;
