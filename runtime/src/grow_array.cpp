@@ -1,14 +1,83 @@
 #include "g2d/grow_array.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdlib>
+#include <deque>
+#include <mutex>
+#include <system_error>
+#include <thread>
 #include <sys/mman.h>
 #include <unistd.h>
 
 namespace g2d::rt::grow_detail {
 
 namespace {
+
+// Faults in pages of mapped arrays ahead of their writes, on its own thread
+// (MADV_POPULATE_WRITE: the kernel clears and maps the pages; their contents,
+// all zero, are not written, so the array's own thread may write there at
+// the same time). At a million elements a run spends about a quarter of its
+// time in the kernel clearing fresh pages; this moves that to the other
+// core. Advice only: where the kernel lacks it, or no thread can start,
+// pages are faulted in by the writes as before.
+class Populator {
+public:
+    void post(void* from, std::size_t bytes) {
+        {
+            std::lock_guard lock(mutex_);
+            if (broken_) return;
+            queue_.emplace_back(from, bytes);
+            if (!started_) {
+                started_ = true;
+                try {
+                    std::thread([this] { run(); }).detach();
+                } catch (const std::system_error&) {
+                    broken_ = true;
+                    queue_.clear();
+                    return;
+                }
+            }
+        }
+        ready_.notify_one();
+    }
+
+private:
+    void run() {
+        std::unique_lock lock(mutex_);
+        while (true) {
+            ready_.wait(lock, [&] { return !queue_.empty(); });
+            const auto [from, bytes] = queue_.front();
+            queue_.pop_front();
+            lock.unlock();
+            // EINVAL: a kernel without it (before Linux 5.14); ENOMEM: the
+            // array moved (mremap) or went meanwhile. Either way, nothing to do.
+            const bool unsupported = madvise(from, bytes, MADV_POPULATE_WRITE) != 0 && errno == EINVAL;
+            lock.lock();
+            if (unsupported) {
+                broken_ = true;
+                queue_.clear();
+            }
+        }
+    }
+
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::deque<std::pair<void*, std::size_t>> queue_;
+    bool started_ = false, broken_ = false;
+};
+
+void populateAhead(void* from, std::size_t bytes) noexcept {
+    // Never destroyed: its detached thread may be inside madvise at exit.
+    static Populator* const populator = new Populator;
+    try {
+        populator->post(from, bytes);
+    } catch (...) {
+        // Out of memory for the queue: advice only.
+    }
+}
 
 // Mappings are placed on 2 MiB boundaries, and one is asked to be backed by
 // huge pages once the array in it is that large: a derivation of millions
@@ -84,11 +153,18 @@ void* grow(void* block, std::size_t& roomBytes, std::size_t newBytes, std::size_
     return p;
 }
 
-void adviseHuge(void* block, std::size_t roomBytes, std::size_t bytes) noexcept {
-    // Advice only: where the kernel has no huge pages, small ones serve. The
-    // whole mapping, so that it stays one region (mremap moves only one),
-    // and a mapping moved by mremap keeps it.
-    if (block && mapped(roomBytes) && bytes >= kHugePage) madvise(block, roomBytes, MADV_HUGEPAGE);
+std::size_t settle(void* block, std::size_t roomBytes, std::size_t neededBytes, std::size_t wantedBytes) noexcept {
+    if (!block || !mapped(roomBytes)) return wantedBytes;
+    const std::size_t end = std::min(roomBytes, (neededBytes + kChunkBytes - 1) / kChunkBytes * kChunkBytes);
+    if (end >= kHugePage) {
+        // Advice only: where the kernel has no huge pages, small ones serve.
+        // The whole mapping, so that it stays one region (mremap moves only
+        // one), and a mapping moved by mremap keeps it.
+        if (end - kChunkBytes < kHugePage) madvise(block, roomBytes, MADV_HUGEPAGE);
+        // Only arrays already a chunk long: a medium one would double.
+        if (end < roomBytes) populateAhead(static_cast<char*>(block) + end, std::min(kChunkBytes, roomBytes - end));
+    }
+    return std::max(end, neededBytes);
 }
 
 void release(void* block, std::size_t roomBytes) noexcept {

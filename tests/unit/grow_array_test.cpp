@@ -1,12 +1,17 @@
 // GrowArray: contents survive growth from a malloc'd block into a memory
-// mapping and across mremap-ed growth of the mapping; copies are deep;
-// resize, append, assign and pop_back behave as std::vector's.
+// mapping and across mremap-ed growth of the mapping; a mapped array's next
+// chunk is faulted in ahead; copies are deep; resize, append, assign and
+// pop_back behave as std::vector's.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <sys/mman.h>
+#include <thread>
+#include <unistd.h>
 #include <vector>
 
 #include "g2d/grow_array.hpp"
@@ -145,4 +150,44 @@ TEST_CASE("GrowArray resize, append, assign, pop_back, extendUnset and self push
     REQUIRE(arr[10'005] == 9'999);
     arr.clear();
     REQUIRE(arr.empty());
+}
+
+namespace {
+// Whether the page holding `p` is resident (mincore).
+bool resident(const void* p) {
+    const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const auto at = reinterpret_cast<std::uintptr_t>(p) & ~(page - 1);
+    unsigned char in = 0;
+    return mincore(reinterpret_cast<void*>(at), page, &in) == 0 && (in & 1) != 0;
+}
+}  // namespace
+
+TEST_CASE("A mapped GrowArray takes its room a chunk at a time and has the next chunk faulted in ahead",
+          "[grow_array]") {
+    if (g2d::rt::grow_detail::kMappedBytes == ~std::size_t{0}) return;   // sanitizer builds: all from malloc
+    const std::size_t chunk = g2d::rt::grow_detail::kChunkBytes;
+    GrowArray<Rec> arr;
+    // Past two chunks: the array is a chunk long, so the chunk after its
+    // room is asked for.
+    while (arr.size() * sizeof(Rec) < 2 * chunk + 100) arr.push_back(Rec{arr.size(), 7});
+    const std::size_t room = arr.capacity() * sizeof(Rec);
+    REQUIRE(room >= arr.size() * sizeof(Rec));
+    REQUIRE(room - arr.size() * sizeof(Rec) < chunk);   // a chunk at a time, not doubling
+    const char* next = reinterpret_cast<const char*>(arr.data()) + room;
+    // Not written by anyone: resident only if the helper thread faulted it in.
+    bool ahead = false;
+    for (int wait = 0; wait < 200 && !ahead; ++wait) {
+        ahead = resident(next) && resident(next + chunk - 1);
+        if (!ahead) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    REQUIRE(ahead);
+    // Faulting in never changes what is there.
+    std::size_t wrong = 0;
+    for (std::size_t k = 0; k < arr.size(); ++k) wrong += arr[k].a != k || arr[k].b != 7;
+    REQUIRE(wrong == 0);
+    // A small array's next room is not touched.
+    GrowArray<Rec> small;
+    while (small.size() * sizeof(Rec) < 200 << 10) small.push_back(Rec{1, 2});
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    REQUIRE_FALSE(resident(reinterpret_cast<const char*>(small.data()) + (1 << 20)));
 }

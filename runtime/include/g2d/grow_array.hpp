@@ -28,10 +28,15 @@ namespace grow_detail {
 // growing within one costs nothing, and a page takes memory only when first
 // written (no copy, no page touched twice).
 void* grow(void* block, std::size_t& roomBytes, std::size_t newBytes, std::size_t usedBytes);
-// Asks for huge pages for a mapped block once the array in it uses 2 MiB
-// or more (`bytes`): small arrays keep small pages, as a huge one would be
-// 2 MiB of memory to clear.
-void adviseHuge(void* block, std::size_t roomBytes, std::size_t bytes) noexcept;
+// The room an array needing `neededBytes` takes of its block next (at
+// least that; `wantedBytes` when the block is malloc's). A mapped block is
+// taken a 2 MiB chunk at a time: each time, the next chunk's pages are
+// faulted in by a helper thread (populateAhead), so that the kernel clears
+// them on the other core rather than in this thread's first writes. Also
+// asks for huge pages once the array takes 2 MiB or more: small arrays keep
+// small pages, as a huge one would be 2 MiB of memory to clear.
+std::size_t settle(void* block, std::size_t roomBytes, std::size_t neededBytes, std::size_t wantedBytes) noexcept;
+inline constexpr std::size_t kChunkBytes = std::size_t{2} << 20;
 void release(void* block, std::size_t roomBytes) noexcept;
 // Under AddressSanitizer every block comes from malloc, so that overruns are caught.
 #if defined(__SANITIZE_ADDRESS__)
@@ -149,8 +154,7 @@ public:
         }
         if (wanted * sizeof(T) > room_)
             data_ = static_cast<T*>(grow_detail::grow(data_, room_, wanted * sizeof(T), size_ * sizeof(T)));
-        capacity_ = wanted;
-        grow_detail::adviseHuge(data_, room_, capacity_ * sizeof(T));
+        capacity_ = grow_detail::settle(data_, room_, n * sizeof(T), wanted * sizeof(T)) / sizeof(T);
     }
     static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
 
@@ -159,7 +163,7 @@ private:
     static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(4, 256 / sizeof(T));
     T* data_ = nullptr;
     std::size_t size_ = 0;
-    std::size_t capacity_ = 0;   // elements: grows geometrically (and says when to advise huge pages)
+    std::size_t capacity_ = 0;   // elements: grows geometrically, or a chunk at a time in a mapping
     std::size_t room_ = 0;       // bytes the block has room for (a mapping's reservation)
 };
 
