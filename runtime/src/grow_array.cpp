@@ -156,12 +156,13 @@ void* grow(void* block, std::size_t& roomBytes, std::size_t newBytes, std::size_
 std::size_t settle(void* block, std::size_t roomBytes, std::size_t neededBytes, std::size_t wantedBytes) noexcept {
     if (!block || !mapped(roomBytes)) return wantedBytes;
     const std::size_t end = std::min(roomBytes, (neededBytes + kChunkBytes - 1) / kChunkBytes * kChunkBytes);
-    if (end >= kHugePage) {
+    // Only for arrays using a chunk already: a medium array would get a
+    // whole huge page at its first fault, and its chunk ahead would double it.
+    if (neededBytes >= kHugePage) {
         // Advice only: where the kernel has no huge pages, small ones serve.
         // The whole mapping, so that it stays one region (mremap moves only
         // one), and a mapping moved by mremap keeps it.
-        if (end - kChunkBytes < kHugePage) madvise(block, roomBytes, MADV_HUGEPAGE);
-        // Only arrays already a chunk long: a medium one would double.
+        madvise(block, roomBytes, MADV_HUGEPAGE);
         if (end < roomBytes) populateAhead(static_cast<char*>(block) + end, std::min(kChunkBytes, roomBytes - end));
     }
     return std::max(end, neededBytes);

@@ -66,7 +66,7 @@ bool hugePageAdvised(const void* p) {
 }
 }  // namespace
 
-TEST_CASE("GrowArray asks for huge pages for blocks of 2 MiB or more", "[grow_array]") {
+TEST_CASE("GrowArray asks for huge pages for arrays of 2 MiB or more", "[grow_array]") {
     if (g2d::rt::grow_detail::kMappedBytes == ~std::size_t{0}) return;   // sanitizer builds: all from malloc
     // 56-byte records: their capacities never fill the first reservation
     // (kReservedBytes) exactly, so the mapping is advised while part of it
@@ -80,7 +80,7 @@ TEST_CASE("GrowArray asks for huge pages for blocks of 2 MiB or more", "[grow_ar
     for (std::uint64_t i = 0; i < count; ++i) {
         const auto before = arr.capacity();
         arr.push_back(Wide{{i, 0, 0, 0, 0, 0, i}});
-        if (arr.capacity() != before && arr.capacity() * sizeof(Wide) >= (std::size_t{2} << 20)) {
+        if (arr.capacity() != before && arr.size() * sizeof(Wide) >= (std::size_t{2} << 20)) {
             ++large;   // it grew: checked after each growth
             advised += hugePageAdvised(arr.data());
             REQUIRE(reinterpret_cast<std::uintptr_t>(arr.data()) % (std::size_t{2} << 20) == 0);
@@ -185,9 +185,11 @@ TEST_CASE("A mapped GrowArray takes its room a chunk at a time and has the next 
     std::size_t wrong = 0;
     for (std::size_t k = 0; k < arr.size(); ++k) wrong += arr[k].a != k || arr[k].b != 7;
     REQUIRE(wrong == 0);
-    // A small array's next room is not touched.
-    GrowArray<Rec> small;
-    while (small.size() * sizeof(Rec) < 200 << 10) small.push_back(Rec{1, 2});
+    // A medium array (mapped, under a chunk) keeps small pages, and its
+    // room past what it wrote is not touched.
+    GrowArray<Rec> medium;
+    while (medium.size() * sizeof(Rec) < 200 << 10) medium.push_back(Rec{1, 2});
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    REQUIRE_FALSE(resident(reinterpret_cast<const char*>(small.data()) + (1 << 20)));
+    REQUIRE_FALSE(hugePageAdvised(medium.data()));
+    REQUIRE_FALSE(resident(reinterpret_cast<const char*>(medium.data()) + (1 << 20)));
 }
