@@ -40,10 +40,15 @@ IncidentRange::iterator& IncidentRange::iterator::operator++() {
 Graph::Graph(std::vector<KindInfo> kinds)
     : kinds_(std::move(kinds)), defaults_(kinds_.size()), pool_(kinds_.size()), kindNodes_(kinds_.size()) {
     if (kinds_.size() > kMaxKinds) throw std::length_error("a grammar may declare at most 32767 kinds");
-    // The two columns every graph grows: a page each from the start, not a
-    // chain of small reallocations (other arrays start small, to share pages).
-    nodes_.reserve(4096 / sizeof(NodeRec));
-    edges_.reserve(4096 / sizeof(EdgeRec));
+    // The two columns every graph grows: each in its own mapping from the
+    // start (grow_array.hpp), so that they never copy themselves, and a
+    // page is first touched only when a record reaches it (a chain of
+    // reallocations copied each into fresh pages). Other arrays start small,
+    // to share pages.
+    // (Under AddressSanitizer every block is malloc's: a page each then.)
+    const std::size_t first = grow_detail::kMappedBytes == ~std::size_t{0} ? 4096 : grow_detail::kMappedBytes;
+    nodes_.reserve(first / sizeof(NodeRec) + 1);
+    edges_.reserve(first / sizeof(EdgeRec) + 1);
 }
 
 void Graph::setKindDefaults(int kind, std::vector<Value> defaults) { defaults_[kind] = std::move(defaults); }
