@@ -233,7 +233,8 @@ private:
             if (attrs) out += in + "graph_.setNodeSlot(an" + si + ", store_" + str(n.kind) + ".add(arec" + si + "));\n";
             for (const auto& s : n.styles)
                 out += in + "graph_.setNodeStyle(an" + si + ", " + cppString(s.prop) + ", " +
-                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ");\n";
+                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ", " +
+                       str(static_cast<long long>(n.styles.size())) + ");\n";
         }
         for (std::size_t i = 0; i < ax.edges.size(); ++i) {
             const auto& e = ax.edges[i];
@@ -246,7 +247,8 @@ private:
             if (attrs) out += in + "graph_.setEdgeSlot(ae" + si + ", store_" + str(e.kind) + ".add(erec" + si + "));\n";
             for (const auto& s : e.styles)
                 out += in + "graph_.setEdgeStyle(ae" + si + ", " + cppString(s.prop) + ", " +
-                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ");\n";
+                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ", " +
+                       str(static_cast<long long>(e.styles.size())) + ");\n";
         }
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";

@@ -463,7 +463,8 @@ private:
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a)
                 commit += c + "G.setNodeStyle(h" + si + ", " + cppString(dn.styles[a].prop) + ", " +
-                          styleValue(dn.styles[a].value.type, "ns" + si + "_" + str(static_cast<int>(a))) + ");\n";
+                          styleValue(dn.styles[a].value.type, "ns" + si + "_" + str(static_cast<int>(a))) + ", " +
+                          str(static_cast<int>(dn.styles.size())) + ");\n";
         }
         for (std::size_t i = 0; i < d.edges.size(); ++i) {
             const auto& de = d.edges[i];
@@ -486,7 +487,8 @@ private:
             }
             for (std::size_t a = 0; a < de.styles.size(); ++a)
                 commit += c + "G.setEdgeStyle(k" + si + ", " + cppString(de.styles[a].prop) + ", " +
-                          styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
+                          styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ", " +
+                          str(static_cast<int>(de.styles.size())) + ");\n";
         }
         // Kept in a typed buffer until commit (no allocation once warm).
         const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));

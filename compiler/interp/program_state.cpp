@@ -48,7 +48,7 @@ rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
         std::vector<rt::Value> attrs = st.kindDefaults[n.kind];
         for (const auto& a : n.assigns) attrs[a.attr] = evaluate(a.value, f);
         const rt::NodeId id = g.addNode(n.kind, pos, 0, std::move(attrs));
-        for (const auto& s : n.styles) g.setNodeStyle(id, s.prop, evaluate(s.value, f));
+        for (const auto& s : n.styles) g.setNodeStyle(id, s.prop, evaluate(s.value, f), n.styles.size());
         ids.push_back(id);
     }
     for (const auto& e : prog.axiom.edges) {
@@ -56,7 +56,7 @@ rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
         std::vector<rt::Value> attrs = st.kindDefaults[e.kind];
         for (const auto& a : e.assigns) attrs[a.attr] = evaluate(a.value, f);
         const rt::EdgeId id = g.addEdge(e.kind, ids[e.src], ids[e.dst], 0, std::move(attrs));
-        for (const auto& s : e.styles) g.setEdgeStyle(id, s.prop, evaluate(s.value, f));
+        for (const auto& s : e.styles) g.setEdgeStyle(id, s.prop, evaluate(s.value, f), e.styles.size());
     }
     return g;
 }

@@ -146,16 +146,16 @@ const std::vector<StyleOverride>& Graph::edgeStyle(EdgeId e) const {
     return edges_[e].styled ? styleLists_[edgeStyleList_[e]] : kNoStyle;
 }
 
-void Graph::setNodeStyle(NodeId n, const std::string& prop, Value v) {
+void Graph::setNodeStyle(NodeId n, const std::string& prop, Value v, std::size_t expected) {
     auto& list = styleListOf(nodeStyleList_, n, nodes_.size());
     nodes_[n].marks |= kStyled;
-    setStyle(list, prop, std::move(v));
+    setStyle(list, prop, std::move(v), expected);
 }
 
-void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v) {
+void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v, std::size_t expected) {
     auto& list = styleListOf(edgeStyleList_, e, edges_.size());
     edges_[e].styled = true;
-    setStyle(list, prop, std::move(v));
+    setStyle(list, prop, std::move(v), expected);
 }
 
 void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists) {
@@ -231,12 +231,13 @@ void Graph::dropStyleList(GrowArray<std::uint32_t>& lists, std::uint32_t id) {
     list = kNoId;
 }
 
-void Graph::setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v) {
+void Graph::setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v, std::size_t expected) {
     for (auto& s : style)
         if (s.prop == prop) { s.value = std::move(v); return; }
-    // Room for a few at once: styled elements mostly get several (stroke,
-    // width, fill), and growing 1, 2, 4 was an allocation each.
-    if (style.capacity() == 0) style.reserve(4);
+    // Room for what the element is getting at once: growing 1, 2, 4 was an
+    // allocation each, and room for four where one is set (most restyles)
+    // was 300 bytes of fresh memory an element, a page fault every dozen.
+    if (style.capacity() == 0) style.reserve(std::max<std::size_t>(expected, 1));
     style.push_back(StyleOverride{prop, std::move(v)});
 }
 

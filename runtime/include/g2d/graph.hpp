@@ -139,7 +139,9 @@ public:
     // keep them in typed arrays); kNoId until set.
     std::uint32_t nodeSlot(NodeId n) const { return nodes_[n].slot; }
     void setNodeSlot(NodeId n, std::uint32_t slot) { nodes_[n].slot = slot; }
-    void setNodeStyle(NodeId n, const std::string& prop, Value v);
+    // `expected`: how many style properties the element is getting now in
+    // all (an element's first makes room for that many at once).
+    void setNodeStyle(NodeId n, const std::string& prop, Value v, std::size_t expected = 1);
 
     int edgeKind(EdgeId e) const { return edges_[e].kind; }
     NodeId source(EdgeId e) const { return edges_[e].src; }
@@ -154,7 +156,7 @@ public:
     const std::vector<StyleOverride>& edgeStyle(EdgeId e) const;
     std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
     void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
-    void setEdgeStyle(EdgeId e, const std::string& prop, Value v);
+    void setEdgeStyle(EdgeId e, const std::string& prop, Value v, std::size_t expected = 1);
 
     // Live nodes of one kind (deterministic order), or of every kind (by id).
     std::span<const NodeId> nodesOfKind(int kind) const { return {kindNodes_[kind].data(), kindNodes_[kind].size()}; }
@@ -245,7 +247,7 @@ private:
     inline void unlink(EdgeId e);
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
     [[noreturn]] static void deadEndpoint();
-    static void setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v);
+    static void setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v, std::size_t expected);
 
     std::vector<KindInfo> kinds_;
     std::vector<std::vector<Value>> defaults_;   // per kind
