@@ -53,7 +53,9 @@ private:
             queue_.pop_front();
             lock.unlock();
             // EINVAL: a kernel without it (before Linux 5.14); ENOMEM: the
-            // array moved (mremap) or went meanwhile. Either way, nothing to do.
+            // array moved (mremap) or went meanwhile. Either way, nothing to
+            // do. (Should a new mapping have taken the old place meanwhile,
+            // up to a chunk of it is faulted in early: memory, never data.)
             const bool unsupported = madvise(from, bytes, MADV_POPULATE_WRITE) != 0 && errno == EINVAL;
             lock.lock();
             if (unsupported) {
