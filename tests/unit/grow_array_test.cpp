@@ -153,6 +153,17 @@ TEST_CASE("GrowArray resize, append, assign, pop_back, extendUnset and self push
 }
 
 namespace {
+// Whether this kernel can fault pages in without writing them (Linux 5.14
+// on): without it GrowArray leaves the faults to the writes.
+bool populateSupported() {
+    const std::size_t bytes = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) return false;
+    const bool ok = madvise(p, bytes, MADV_POPULATE_WRITE) == 0;
+    munmap(p, bytes);
+    return ok;
+}
+
 // Whether the page holding `p` is resident (mincore).
 bool resident(const void* p) {
     const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
@@ -175,12 +186,16 @@ TEST_CASE("A mapped GrowArray takes its room a chunk at a time and has the next 
     REQUIRE(room - arr.size() * sizeof(Rec) < chunk);   // a chunk at a time, not doubling
     const char* next = reinterpret_cast<const char*>(arr.data()) + room;
     // Not written by anyone: resident only if the helper thread faulted it in.
-    bool ahead = false;
-    for (int wait = 0; wait < 200 && !ahead; ++wait) {
-        ahead = resident(next) && resident(next + chunk - 1);
-        if (!ahead) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (populateSupported()) {
+        bool ahead = false;
+        for (int wait = 0; wait < 200 && !ahead; ++wait) {
+            ahead = resident(next) && resident(next + chunk - 1);
+            if (!ahead) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        REQUIRE(ahead);
+    } else {
+        WARN("this kernel has no MADV_POPULATE_WRITE: nothing is faulted in ahead");
     }
-    REQUIRE(ahead);
     // Faulting in never changes what is there.
     std::size_t wrong = 0;
     for (std::size_t k = 0; k < arr.size(); ++k) wrong += arr[k].a != k || arr[k].b != 7;
