@@ -45,10 +45,8 @@ Graph::Graph(std::vector<KindInfo> kinds)
     // page is first touched only when a record reaches it (a chain of
     // reallocations copied each into fresh pages). Other arrays start small,
     // to share pages.
-    // (Under AddressSanitizer every block is malloc's: a page each then.)
-    const std::size_t first = grow_detail::kMappedBytes == ~std::size_t{0} ? 4096 : grow_detail::kMappedBytes;
-    nodes_.reserve(first / sizeof(NodeRec) + 1);
-    edges_.reserve(first / sizeof(EdgeRec) + 1);
+    nodes_.reserve(grow_detail::kOwnMappingBytes / sizeof(NodeRec) + 1);
+    edges_.reserve(grow_detail::kOwnMappingBytes / sizeof(EdgeRec) + 1);
 }
 
 void Graph::setKindDefaults(int kind, std::vector<Value> defaults) { defaults_[kind] = std::move(defaults); }

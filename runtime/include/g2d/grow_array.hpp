@@ -45,6 +45,9 @@ inline constexpr std::size_t kMappedBytes = ~std::size_t{0};
 inline constexpr std::size_t kMappedBytes = std::size_t{64} << 10;
 #endif
 inline constexpr std::size_t kReservedBytes = std::size_t{64} << 20;
+// Room that puts an array in its own mapping at once (a page where every
+// block is malloc's), for columns known to grow large.
+inline constexpr std::size_t kOwnMappingBytes = kMappedBytes == ~std::size_t{0} ? 4096 : kMappedBytes;
 }  // namespace grow_detail
 
 template <class T>
