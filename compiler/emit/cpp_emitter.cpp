@@ -154,6 +154,8 @@ private:
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
             out += (k ? ", " : "") + std::string("KindInfo{") + (prog_.kinds[k].cls == ir::ElemClass::Edge ? "true" : "false") +
                    ", " + (prog_.kinds[k].directed ? "true" : "false") + "}";
+        out += "}, std::vector<std::string>{";
+        for (std::size_t i = 0; i < prog_.styleProps.size(); ++i) out += (i ? ", " : "") + cppString(prog_.styleProps[i]);
         out += "}) {\n";
         for (const auto& p : prog_.params) {
             out += "        specs_.push_back(ParamSpec{" + cLiteral(p.name) + ", " + cLiteral(ir::typeName(p.type, prog_)) + ", " +
@@ -215,7 +217,7 @@ private:
                 out += in + "default_" + str(static_cast<long long>(k)) + ".a" + str(static_cast<long long>(a)) + " = " + v + ";\n";
             }
         }
-        out += in + "graph_ = Graph(graph_.kinds());\n";
+        out += in + "graph_ = Graph(graph_.kinds(), graph_.styleProps());\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
             if (!prog_.kinds[k].attrs.empty()) out += in + "store_" + str(static_cast<long long>(k)) + ".clear();\n";
         // The axiom: nodes in order (position, attributes, styles), then edges.
@@ -232,9 +234,8 @@ private:
             out += in + "const NodeId an" + si + " = graph_.addNode(" + str(n.kind) + ", apos" + si + ", 0);\n" + in + "(void)an" + si + ";\n";
             if (attrs) out += in + "graph_.setNodeSlot(an" + si + ", store_" + str(n.kind) + ".add(arec" + si + "));\n";
             for (const auto& s : n.styles)
-                out += in + "graph_.setNodeStyle(an" + si + ", " + cppString(s.prop) + ", " +
-                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ", " +
-                       str(static_cast<long long>(n.styles.size())) + ");\n";
+                out += in + "graph_.setNodeStyle(an" + si + ", " + cppStyleProp(s) + ", " +
+                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ");\n";
         }
         for (std::size_t i = 0; i < ax.edges.size(); ++i) {
             const auto& e = ax.edges[i];
@@ -246,9 +247,8 @@ private:
             out += in + "const EdgeId ae" + si + " = graph_.addEdge(" + str(e.kind) + ", an" + str(e.src) + ", an" + str(e.dst) + ", 0);\n" + in + "(void)ae" + si + ";\n";
             if (attrs) out += in + "graph_.setEdgeSlot(ae" + si + ", store_" + str(e.kind) + ".add(erec" + si + "));\n";
             for (const auto& s : e.styles)
-                out += in + "graph_.setEdgeStyle(ae" + si + ", " + cppString(s.prop) + ", " +
-                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ", " +
-                       str(static_cast<long long>(e.styles.size())) + ");\n";
+                out += in + "graph_.setEdgeStyle(ae" + si + ", " + cppStyleProp(s) + ", " +
+                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ");\n";
         }
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";
@@ -408,14 +408,15 @@ private:
             }
             out += "    }\n\n";
         }
-        out += "    static void overrides(DrawItem& it, const std::vector<StyleOverride>& own) {\n"
+        out += "    void overrides(DrawItem& it, StyleList own) const {\n"
                "        for (const auto& o : own) {\n"
                "            Value v = o.value;\n"
                "            if (const auto* e = std::get_if<EnumVal>(&v)) v = std::string(enum_tables[e->enumId][e->index]);\n"
+               "            const std::string& name = graph_.stylePropName(o.prop);\n"
                "            bool replaced = false;\n"
                "            for (auto& p : it.props)\n"
-               "                if (p.prop == o.prop) { p.value = v; replaced = true; }\n"
-               "            if (!replaced) it.props.push_back(StyleOverride{o.prop, v});\n"
+               "                if (p.prop == name) { p.value = v; replaced = true; }\n"
+               "            if (!replaced) it.props.push_back(StyleOverride{name, v});\n"
                "        }\n    }\n\n";
         out += "    std::vector<DrawItem> drawItems() override {\n        std::vector<DrawItem> items;\n        try {\n";
         out += "            for (EdgeId e = 0; e < graph_.edgeCapacity(); ++e) {\n                if (!graph_.edgeAlive(e)) continue;\n"

@@ -29,6 +29,11 @@ std::string cppType(const ir::Type& t) {
     return "void";
 }
 
+std::string cppStyleProp(const ir::StyleAssign& s) {
+    // Property names are identifiers: safe inside a comment.
+    return "StyleProp(" + std::to_string(s.propId) + " /* " + s.prop + " */)";
+}
+
 std::string cppString(const std::string& s) {
     std::string out = "std::string(\"";
     for (unsigned char c : s) {

@@ -23,6 +23,9 @@ private:
 std::string cppType(const ir::Type& t);
 std::string cppLiteral(const ir::Value& v, const ir::Type& t);
 std::string cppString(const std::string& s);
+// A style property by its number (the graph numbers ir::Program::styleProps
+// in order), with its name in a comment.
+std::string cppStyleProp(const ir::StyleAssign& s);
 
 // How an expression reaches what it reads; set per context.
 struct ExprContext {

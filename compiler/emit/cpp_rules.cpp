@@ -462,9 +462,8 @@ private:
                 if (!dn.assigns.empty()) commit += c + "G.touchNode(h" + si + ");\n";
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a)
-                commit += c + "G.setNodeStyle(h" + si + ", " + cppString(dn.styles[a].prop) + ", " +
-                          styleValue(dn.styles[a].value.type, "ns" + si + "_" + str(static_cast<int>(a))) + ", " +
-                          str(static_cast<int>(dn.styles.size())) + ");\n";
+                commit += c + "G.setNodeStyle(h" + si + ", " + cppStyleProp(dn.styles[a]) + ", " +
+                          styleValue(dn.styles[a].value.type, "ns" + si + "_" + str(static_cast<int>(a))) + ");\n";
         }
         for (std::size_t i = 0; i < d.edges.size(); ++i) {
             const auto& de = d.edges[i];
@@ -486,9 +485,8 @@ private:
                 }
             }
             for (std::size_t a = 0; a < de.styles.size(); ++a)
-                commit += c + "G.setEdgeStyle(k" + si + ", " + cppString(de.styles[a].prop) + ", " +
-                          styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ", " +
-                          str(static_cast<int>(de.styles.size())) + ");\n";
+                commit += c + "G.setEdgeStyle(k" + si + ", " + cppStyleProp(de.styles[a]) + ", " +
+                          styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
         }
         // Kept in a typed buffer until commit (no allocation once warm).
         const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));

@@ -10,14 +10,15 @@ rt::Value printable(rt::Value v, const ir::Program& prog) {
     return v;
 }
 
-void resolve(rt::DrawItem& item, const ir::Kind& kind, const std::vector<rt::StyleOverride>& own, EvalFrame& f,
+void resolve(rt::DrawItem& item, const ir::Kind& kind, rt::StyleList own, const rt::Graph& g, EvalFrame& f,
              const ir::Program& prog) {
     for (const auto& p : kind.style) item.props.push_back({p.name, printable(evaluate(p.value, f), prog)});
     for (const auto& o : own) {
+        const std::string& name = g.stylePropName(o.prop);
         bool replaced = false;
         for (auto& p : item.props)
-            if (p.prop == o.prop) { p.value = printable(o.value, prog); replaced = true; }
-        if (!replaced) item.props.push_back({o.prop, printable(o.value, prog)});
+            if (p.prop == name) { p.value = printable(o.value, prog); replaced = true; }
+        if (!replaced) item.props.push_back({name, printable(o.value, prog)});
     }
 }
 
@@ -37,7 +38,7 @@ std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) 
         item.b = g.pos(g.target(e));
         f.selfIsEdge = true;
         f.self = e;
-        resolve(item, prog.kinds[g.edgeKind(e)], g.edgeStyle(e), f, prog);
+        resolve(item, prog.kinds[g.edgeKind(e)], g.edgeStyle(e), g, f, prog);
         items.push_back(std::move(item));
     }
     for (rt::NodeId n = 0; n < g.nodeCapacity(); ++n) {
@@ -47,7 +48,7 @@ std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) 
         item.a = g.pos(n);
         f.selfIsEdge = false;
         f.self = n;
-        resolve(item, prog.kinds[g.nodeKind(n)], g.nodeStyle(n), f, prog);
+        resolve(item, prog.kinds[g.nodeKind(n)], g.nodeStyle(n), g, f, prog);
         items.push_back(std::move(item));
     }
     return items;

@@ -251,7 +251,7 @@ void InterpretedRules::evaluateValues(const std::vector<ir::AttrAssign>& attrs,
     v.attrs.clear();
     v.styles.clear();
     for (const auto& a : attrs) v.attrs.emplace_back(a.attr, evaluate(a.value, f));
-    for (const auto& s : styles) v.styles.emplace_back(s.prop, evaluate(s.value, f));
+    for (const auto& s : styles) v.styles.emplace_back(static_cast<rt::StyleProp>(s.propId), evaluate(s.value, f));
 }
 
 void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
@@ -363,7 +363,7 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
                 if (p.nodePos[i]) g.setPos(hostOf[i], *p.nodePos[i]);
                 for (auto& [attr, v] : values.attrs) g.setNodeAttr(hostOf[i], attr, std::move(v));
             }
-            for (auto& [prop, v] : values.styles) g.setNodeStyle(hostOf[i], prop, std::move(v), values.styles.size());
+            for (auto& [prop, v] : values.styles) g.setNodeStyle(hostOf[i], prop, std::move(v));
         }
         for (std::size_t i = 0; i < d.edges.size(); ++i) {
             const auto& de = d.edges[i];
@@ -376,7 +376,7 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
                 h = g.addEdge(de.kind, hostOf[de.src], hostOf[de.dst], step);
                 for (auto& [attr, v] : values.attrs) g.initEdgeAttr(h, attr, std::move(v));
             }
-            for (auto& [prop, v] : values.styles) g.setEdgeStyle(h, prop, std::move(v), values.styles.size());
+            for (auto& [prop, v] : values.styles) g.setEdgeStyle(h, prop, std::move(v));
         }
     }
     pendingCount_ = 0;

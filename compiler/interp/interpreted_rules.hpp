@@ -30,7 +30,7 @@ public:
 private:
     struct Values {
         std::vector<std::pair<int, rt::Value>> attrs;
-        std::vector<std::pair<std::string, rt::Value>> styles;
+        std::vector<std::pair<rt::StyleProp, rt::Value>> styles;
     };
     // One prepared application; kept in a pool so that its vectors are reused.
     struct Prepared {

@@ -38,7 +38,7 @@ std::vector<rt::KindInfo> kindInfos(const ir::Program& prog) {
 
 rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
     const ir::Program& prog = *st.prog;
-    rt::Graph g(kindInfos(prog));
+    rt::Graph g(kindInfos(prog), prog.styleProps);
     for (std::size_t k = 0; k < st.kindDefaults.size(); ++k) g.setKindDefaults(static_cast<int>(k), st.kindDefaults[k]);
     std::vector<rt::NodeId> ids;
     for (const auto& n : prog.axiom.nodes) {
@@ -48,7 +48,7 @@ rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
         std::vector<rt::Value> attrs = st.kindDefaults[n.kind];
         for (const auto& a : n.assigns) attrs[a.attr] = evaluate(a.value, f);
         const rt::NodeId id = g.addNode(n.kind, pos, 0, std::move(attrs));
-        for (const auto& s : n.styles) g.setNodeStyle(id, s.prop, evaluate(s.value, f), n.styles.size());
+        for (const auto& s : n.styles) g.setNodeStyle(id, static_cast<rt::StyleProp>(s.propId), evaluate(s.value, f));
         ids.push_back(id);
     }
     for (const auto& e : prog.axiom.edges) {
@@ -56,7 +56,7 @@ rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
         std::vector<rt::Value> attrs = st.kindDefaults[e.kind];
         for (const auto& a : e.assigns) attrs[a.attr] = evaluate(a.value, f);
         const rt::EdgeId id = g.addEdge(e.kind, ids[e.src], ids[e.dst], 0, std::move(attrs));
-        for (const auto& s : e.styles) g.setEdgeStyle(id, s.prop, evaluate(s.value, f), e.styles.size());
+        for (const auto& s : e.styles) g.setEdgeStyle(id, static_cast<rt::StyleProp>(s.propId), evaluate(s.value, f));
     }
     return g;
 }

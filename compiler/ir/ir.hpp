@@ -167,6 +167,7 @@ struct AttrAssign {
 
 struct StyleAssign {
     std::string prop;
+    int propId = -1;   // index in Program::styleProps
     Expr value;
 };
 
@@ -358,6 +359,9 @@ struct Program {
     std::map<long long, PriorityConfig> priorities;
     std::vector<std::string> svgDefs;
     std::vector<Rule> rules;
+    // Every style property a per-element assignment sets, in order of first
+    // use: the runtime numbers them in this order (rt::StyleStore).
+    std::vector<std::string> styleProps;
 };
 
 std::string typeName(const Type& t, const Program& p);

@@ -80,7 +80,11 @@ void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<a
             auto v = ec.check(*a.value, env);
             if (!v) continue;
             checkStyleValue(g, a.name.name, *v);
-            stylesOut.push_back(ir::StyleAssign{a.name.name, std::move(*v)});
+            auto& props = g.prog.styleProps;
+            const auto known = std::find(props.begin(), props.end(), a.name.name);
+            const int id = static_cast<int>(known - props.begin());
+            if (known == props.end()) props.push_back(a.name.name);
+            stylesOut.push_back(ir::StyleAssign{a.name.name, id, std::move(*v)});
             continue;
         }
         if (kind < 0) continue;

@@ -5,10 +5,6 @@
 
 namespace g2d::rt {
 
-namespace {
-const std::vector<StyleOverride> kNoStyle;
-}
-
 IncidentRange::iterator IncidentRange::begin() const {
     return iterator(g_, n_, g_->firstOut(n_), false);
 }
@@ -37,8 +33,9 @@ IncidentRange::iterator& IncidentRange::iterator::operator++() {
     return *this;
 }
 
-Graph::Graph(std::vector<KindInfo> kinds)
-    : kinds_(std::move(kinds)), defaults_(kinds_.size()), pool_(kinds_.size()), kindNodes_(kinds_.size()) {
+Graph::Graph(std::vector<KindInfo> kinds, std::vector<std::string> styleProps)
+    : kinds_(std::move(kinds)), defaults_(kinds_.size()), pool_(kinds_.size()), kindNodes_(kinds_.size()),
+      styles_(std::move(styleProps)) {
     if (kinds_.size() > kMaxKinds) throw std::length_error("a grammar may declare at most 32767 kinds");
     // The two columns every graph grows: each in its own mapping from the
     // start (grow_array.hpp), so that they never copy themselves, and a
@@ -87,7 +84,7 @@ void Graph::deadEndpoint() { throw std::logic_error("edge endpoint is not a live
 
 void Graph::dropEdgeExtras(EdgeRec& rec, EdgeId e) {
     clearAttrBlock(rec.kind, rec.slot);
-    if (rec.styled) dropStyleList(edgeStyleList_, e);
+    if (rec.styled) styles_.drop(edgeStyleList_[e]);
     rec.styled = false;
 }
 
@@ -105,7 +102,7 @@ void Graph::removeNode(NodeId n) {
     kindList.pop_back();
     rec.alive = false;
     clearAttrBlock(rec.kind, rec.slot);
-    if (rec.marks & kStyled) dropStyleList(nodeStyleList_, n);
+    if (rec.marks & kStyled) styles_.drop(nodeStyleList_[n]);
     rec.marks &= static_cast<std::uint8_t>(~kStyled);
     --liveNodes_;
 }
@@ -136,24 +133,22 @@ void Graph::initEdgeAttr(EdgeId e, int i, Value v) {
     pool_[edges_[e].kind][attrIndex(edges_[e].kind, edges_[e].slot, i)] = std::move(v);
 }
 
-const std::vector<StyleOverride>& Graph::nodeStyle(NodeId n) const {
-    return (nodes_[n].marks & kStyled) ? styleLists_[nodeStyleList_[n]] : kNoStyle;
+StyleList Graph::nodeStyle(NodeId n) const {
+    return styles_.list((nodes_[n].marks & kStyled) ? nodeStyleList_[n] : StyleStore::kNone);
 }
 
-const std::vector<StyleOverride>& Graph::edgeStyle(EdgeId e) const {
-    return edges_[e].styled ? styleLists_[edgeStyleList_[e]] : kNoStyle;
+StyleList Graph::edgeStyle(EdgeId e) const {
+    return styles_.list(edges_[e].styled ? edgeStyleList_[e] : StyleStore::kNone);
 }
 
-void Graph::setNodeStyle(NodeId n, const std::string& prop, Value v, std::size_t expected) {
-    auto& list = styleListOf(nodeStyleList_, n, nodes_.size());
+void Graph::setNodeStyle(NodeId n, StyleProp prop, Value v) {
     nodes_[n].marks |= kStyled;
-    setStyle(list, prop, std::move(v), expected);
+    styles_.set(styleHead(nodeStyleList_, n, nodes_.size()), prop, std::move(v));
 }
 
-void Graph::setEdgeStyle(EdgeId e, const std::string& prop, Value v, std::size_t expected) {
-    auto& list = styleListOf(edgeStyleList_, e, edges_.size());
+void Graph::setEdgeStyle(EdgeId e, StyleProp prop, Value v) {
     edges_[e].styled = true;
-    setStyle(list, prop, std::move(v), expected);
+    styles_.set(styleHead(edgeStyleList_, e, edges_.size()), prop, std::move(v));
 }
 
 void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists) {
@@ -202,41 +197,13 @@ std::size_t Graph::memoryBytes() const {
                         dirty_.capacity() * sizeof(NodeId);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
-    bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity() + freeStyleLists_.capacity()) * sizeof(std::uint32_t);
-    for (const auto& l : styleLists_) bytes += sizeof l + l.capacity() * sizeof(StyleOverride);
+    bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity()) * sizeof(std::uint32_t) + styles_.memoryBytes();
     return bytes;
 }
 
-std::vector<StyleOverride>& Graph::styleListOf(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity) {
-    if (id >= lists.size()) lists.resize(std::max<std::size_t>(capacity, id + 1) + capacity / 2, kNoId);
-    std::uint32_t& list = lists[id];
-    if (list == kNoId) {
-        if (!freeStyleLists_.empty()) {
-            list = freeStyleLists_.back();
-            freeStyleLists_.pop_back();
-        } else {
-            list = static_cast<std::uint32_t>(styleLists_.size());
-            styleLists_.emplace_back();
-        }
-    }
-    return styleLists_[list];
-}
-
-void Graph::dropStyleList(GrowArray<std::uint32_t>& lists, std::uint32_t id) {
-    std::uint32_t& list = lists[id];
-    styleLists_[list].clear();   // keeps its capacity for the next styled element
-    freeStyleLists_.push_back(list);
-    list = kNoId;
-}
-
-void Graph::setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v, std::size_t expected) {
-    for (auto& s : style)
-        if (s.prop == prop) { s.value = std::move(v); return; }
-    // Room for what the element is getting at once: growing 1, 2, 4 was an
-    // allocation each, and room for four where one is set (most restyles)
-    // was 300 bytes of fresh memory an element, a page fault every dozen.
-    if (style.capacity() == 0) style.reserve(std::max<std::size_t>(expected, 1));
-    style.push_back(StyleOverride{prop, std::move(v)});
+std::uint32_t& Graph::styleHead(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity) {
+    if (id >= lists.size()) lists.resize(std::max<std::size_t>(capacity, id + 1) + capacity / 2, StyleStore::kNone);
+    return lists[id];
 }
 
 }  // namespace g2d::rt

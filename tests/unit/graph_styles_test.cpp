@@ -1,8 +1,11 @@
 // Graph style overrides: per element, replaced by property, gone with the
-// element, and a removed element's list reused without leaking its entries.
+// element, and a removed element's entries reused without leaking into the
+// next element's list.
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "g2d/graph.hpp"
 
@@ -11,6 +14,13 @@ using namespace g2d::rt;
 namespace {
 Graph twoKinds() { return Graph({KindInfo{false, false}, KindInfo{true, true}}); }
 std::string text(const Value& v) { return std::get<std::string>(v); }
+
+// An element's overrides as (name, value) pairs, in their order.
+std::vector<std::pair<std::string, Value>> listed(const Graph& g, StyleList list) {
+    std::vector<std::pair<std::string, Value>> out;
+    for (const auto& s : list) out.emplace_back(g.stylePropName(s.prop), s.value);
+    return out;
+}
 }  // namespace
 
 TEST_CASE("style overrides belong to their element and go with it", "[graph][style]") {
@@ -21,15 +31,18 @@ TEST_CASE("style overrides belong to their element and go with it", "[graph][sty
     g.setNodeStyle(a, "r", 0.5);
     g.setNodeStyle(a, "fill", std::string("blue"));   // replaces, keeps the order of first setting
     g.setEdgeStyle(e, "stroke", std::string("green"));
-    REQUIRE(g.nodeStyle(a).size() == 2);
-    CHECK(g.nodeStyle(a)[0].prop == "fill");
-    CHECK(text(g.nodeStyle(a)[0].value) == "blue");
-    CHECK(std::get<double>(g.nodeStyle(a)[1].value) == 0.5);
+    auto la = listed(g, g.nodeStyle(a));
+    REQUIRE(la.size() == 2);
+    CHECK(g.nodeStyle(a).size() == 2);
+    CHECK(la[0].first == "fill");
+    CHECK(text(la[0].second) == "blue");
+    CHECK(la[1].first == "r");
+    CHECK(std::get<double>(la[1].second) == 0.5);
     CHECK(g.nodeStyle(b).empty());
     REQUIRE(g.edgeStyle(e).size() == 1);
 
-    // Removing a drops its style and its edge's; the lists are reused by the
-    // next styled elements, which see only their own entries.
+    // Removing a drops its style and its edge's; the entries are reused by
+    // the next styled elements, which see only their own.
     g.removeNode(a);
     CHECK(g.nodeStyle(a).empty());
     CHECK(g.edgeStyle(e).empty());
@@ -37,9 +50,53 @@ TEST_CASE("style overrides belong to their element and go with it", "[graph][sty
     const EdgeId f = g.addEdge(1, b, c, 1);
     g.setNodeStyle(c, "stroke", std::string("black"));
     g.setEdgeStyle(f, "stroke_width", 0.1);
-    REQUIRE(g.nodeStyle(c).size() == 1);
-    CHECK(g.nodeStyle(c)[0].prop == "stroke");
-    REQUIRE(g.edgeStyle(f).size() == 1);
-    CHECK(g.edgeStyle(f)[0].prop == "stroke_width");
+    auto lc = listed(g, g.nodeStyle(c));
+    REQUIRE(lc.size() == 1);
+    CHECK(lc[0].first == "stroke");
+    CHECK(text(lc[0].second) == "black");
+    auto lf = listed(g, g.edgeStyle(f));
+    REQUIRE(lf.size() == 1);
+    CHECK(lf[0].first == "stroke_width");
     CHECK(g.nodeStyle(b).empty());
+}
+
+TEST_CASE("style properties are numbered in the program's order, new names after", "[graph][style]") {
+    Graph g({KindInfo{false, false}}, {"tag", "fill", "d"});
+    CHECK(g.styleProp("tag") == 0);
+    CHECK(g.styleProp("d") == 2);
+    CHECK(g.styleProp("stroke") == 3);
+    CHECK(g.styleProp("stroke") == 3);
+    CHECK(g.stylePropName(1) == "fill");
+    const NodeId n = g.addNode(0, {0, 0}, 0);
+    g.setNodeStyle(n, StyleProp{2}, std::string("M 0 0"));
+    g.setNodeStyle(n, "d", std::string("M 1 1"));   // the same property, by name
+    auto l = listed(g, g.nodeStyle(n));
+    REQUIRE(l.size() == 1);
+    CHECK(l[0].first == "d");
+    CHECK(text(l[0].second) == "M 1 1");
+}
+
+TEST_CASE("a removed element's style entries are reused, not grown", "[graph][style]") {
+    Graph g = twoKinds();
+    // Many elements restyled and removed in turn: the pool stays at the
+    // most ever alive at once (three entries here).
+    NodeId prev = g.addNode(0, {0, 0}, 0);
+    g.setNodeStyle(prev, "fill", std::string("a"));
+    g.setNodeStyle(prev, "r", 1.0);
+    const std::size_t warm = g.memoryBytes();
+    for (int i = 1; i <= 1000; ++i) {
+        const NodeId n = g.addNode(0, {0, 0}, i);
+        g.setNodeStyle(n, "fill", std::string(100, 'x'));   // a long string, released with its element
+        g.setNodeStyle(n, "r", static_cast<double>(i));
+        g.removeNode(prev);
+        prev = n;
+    }
+    auto l = listed(g, g.nodeStyle(prev));
+    REQUIRE(l.size() == 2);
+    CHECK(std::get<double>(l[1].second) == 1000.0);
+    // Only per-node columns grew (heads, the kind index, the change list:
+    // about 20 bytes a node), not the pool, which growing per element would
+    // add two entries (over 90 bytes) a node.
+    CHECK(sizeof(StyleEntry) * 2 > 90);
+    CHECK(g.memoryBytes() - warm < 1000 * 32);
 }

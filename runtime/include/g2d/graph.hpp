@@ -10,7 +10,8 @@
 // Per-kind node indexes make a search's first step O(1) per candidate.
 // Attributes live in per-kind pools (an element's `slot` indexes its kind's
 // pool); a compiled grammar keeps them in its own typed arrays instead and
-// uses the slot for those. Style overrides are rare and live in pooled lists.
+// uses the slot for those. Style overrides are rare and live in a pooled
+// store (style_store.hpp), by interned property.
 //
 // Element classes are explicit (nodes, edges) so that faces can be added as
 // a third class with their own index and incidences.
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "g2d/grow_array.hpp"
+#include "g2d/style_store.hpp"
 #include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"
 
@@ -36,6 +38,7 @@ struct KindInfo {
     bool directed = false;
 };
 
+// A style property by name, as drawing resolves it for the writers.
 struct StyleOverride {
     std::string prop;
     Value value;
@@ -101,7 +104,9 @@ private:
 
 class Graph {
 public:
-    explicit Graph(std::vector<KindInfo> kinds);
+    // `styleProps`: the program's style properties, numbered in this order
+    // (ir::Program::styleProps), so that its code can set them by number.
+    explicit Graph(std::vector<KindInfo> kinds, std::vector<std::string> styleProps = {});
 
     // Attributes a new element of `kind` starts with when none are given
     // (the interpreter's defaults; compiled grammars keep none here).
@@ -134,14 +139,13 @@ public:
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
     void setNodeAttr(NodeId n, int i, Value v);
     // Valid until the next style is set on any element (the lists are pooled).
-    const std::vector<StyleOverride>& nodeStyle(NodeId n) const;
+    StyleList nodeStyle(NodeId n) const;
     // A back end's own handle for the element's attributes (compiled grammars
     // keep them in typed arrays); kNoId until set.
     std::uint32_t nodeSlot(NodeId n) const { return nodes_[n].slot; }
     void setNodeSlot(NodeId n, std::uint32_t slot) { nodes_[n].slot = slot; }
-    // `expected`: how many style properties the element is getting now in
-    // all (an element's first makes room for that many at once).
-    void setNodeStyle(NodeId n, const std::string& prop, Value v, std::size_t expected = 1);
+    void setNodeStyle(NodeId n, StyleProp prop, Value v);
+    void setNodeStyle(NodeId n, std::string_view prop, Value v) { setNodeStyle(n, styleProp(prop), std::move(v)); }
 
     int edgeKind(EdgeId e) const { return edges_[e].kind; }
     NodeId source(EdgeId e) const { return edges_[e].src; }
@@ -153,10 +157,16 @@ public:
     // new edge by its id (the step's new edges have the highest), so its ends
     // need no further mark.
     void initEdgeAttr(EdgeId e, int i, Value v);
-    const std::vector<StyleOverride>& edgeStyle(EdgeId e) const;
+    StyleList edgeStyle(EdgeId e) const;
     std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
     void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
-    void setEdgeStyle(EdgeId e, const std::string& prop, Value v, std::size_t expected = 1);
+    void setEdgeStyle(EdgeId e, StyleProp prop, Value v);
+    void setEdgeStyle(EdgeId e, std::string_view prop, Value v) { setEdgeStyle(e, styleProp(prop), std::move(v)); }
+
+    // Style property numbers (a new name is numbered after the others).
+    StyleProp styleProp(std::string_view name) { return styles_.prop(name); }
+    const std::string& stylePropName(StyleProp p) const { return styles_.name(p); }
+    const std::vector<std::string>& styleProps() const { return styles_.names(); }
 
     // Live nodes of one kind (deterministic order), or of every kind (by id).
     std::span<const NodeId> nodesOfKind(int kind) const { return {kindNodes_[kind].data(), kindNodes_[kind].size()}; }
@@ -247,7 +257,6 @@ private:
     inline void unlink(EdgeId e);
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
     [[noreturn]] static void deadEndpoint();
-    static void setStyle(std::vector<StyleOverride>& style, const std::string& prop, Value v, std::size_t expected);
 
     std::vector<KindInfo> kinds_;
     std::vector<std::vector<Value>> defaults_;   // per kind
@@ -256,15 +265,11 @@ private:
     GrowArray<NodeRec> nodes_;
     GrowArray<EdgeRec> edges_;
     std::vector<GrowArray<NodeId>> kindNodes_;
-    // Style overrides: an element's list (by index, kNoId for none; sized
-    // when the first element of its class gets one). Lists of removed
-    // elements are emptied and reused, so that restyling grammars allocate
-    // nothing per element once warm.
+    // Style overrides: each element's chain in styles_ (StyleStore::kNone
+    // for none; sized when the first element of its class gets one).
+    StyleStore styles_;
     GrowArray<std::uint32_t> nodeStyleList_, edgeStyleList_;
-    std::vector<std::vector<StyleOverride>> styleLists_;
-    std::vector<std::uint32_t> freeStyleLists_;
-    std::vector<StyleOverride>& styleListOf(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity);
-    void dropStyleList(GrowArray<std::uint32_t>& lists, std::uint32_t id);
+    static std::uint32_t& styleHead(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity);
     std::size_t liveNodes_ = 0, liveEdges_ = 0;
     std::vector<NodeId> dirty_;
 };

@@ -1,0 +1,69 @@
+#include "g2d/style_store.hpp"
+
+#include <stdexcept>
+
+namespace g2d::rt {
+
+std::size_t StyleList::size() const {
+    std::size_t n = 0;
+    for (auto it = begin(); it != end(); ++it) ++n;
+    return n;
+}
+
+StyleStore::StyleStore(std::vector<std::string> props) : names_(std::move(props)) {
+    if (names_.size() > 0xffff) throw std::length_error("more than 65535 style properties");
+}
+
+StyleProp StyleStore::prop(std::string_view name) {
+    for (std::size_t i = 0; i < names_.size(); ++i)
+        if (names_[i] == name) return static_cast<StyleProp>(i);
+    if (names_.size() >= 0xffff) throw std::length_error("more than 65535 style properties");
+    names_.emplace_back(name);
+    return static_cast<StyleProp>(names_.size() - 1);
+}
+
+void StyleStore::set(std::uint32_t& head, StyleProp p, Value&& v) {
+    std::uint32_t last = kNone;
+    for (std::uint32_t i = head; i != kNone; i = at(i).next) {
+        if (at(i).prop == p) {
+            at(i).value = std::move(v);
+            return;
+        }
+        last = i;
+    }
+    std::uint32_t fresh = free_;
+    if (fresh != kNone) {
+        free_ = at(fresh).next;
+    } else {
+        if (used_ == kNone) throw std::length_error("more than 4294967294 style overrides");
+        fresh = used_++;
+        if ((fresh >> kBlockBits) == blocks_.size())
+            blocks_.push_back(std::make_unique<StyleEntry[]>(std::size_t{1} << kBlockBits));
+    }
+    StyleEntry& e = at(fresh);
+    e.value = std::move(v);
+    e.next = kNone;
+    e.prop = p;
+    (last == kNone ? head : at(last).next) = fresh;
+}
+
+void StyleStore::drop(std::uint32_t& head) {
+    if (head == kNone) return;
+    std::uint32_t last = head;
+    while (true) {
+        // A long string (an SVG path) is not kept alive by a dead element.
+        at(last).value = Value{};
+        if (at(last).next == kNone) break;
+        last = at(last).next;
+    }
+    at(last).next = free_;
+    free_ = head;
+    head = kNone;
+}
+
+std::size_t StyleStore::memoryBytes() const {
+    return blocks_.size() * ((std::size_t{1} << kBlockBits) * sizeof(StyleEntry) + sizeof(blocks_[0])) +
+           names_.capacity() * sizeof(std::string);
+}
+
+}  // namespace g2d::rt
