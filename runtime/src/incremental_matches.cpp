@@ -92,7 +92,7 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
     }
 }
 
-void IncrementalMatches::prefetch(const Graph& g, Match m, int nodes, int edges) const {
+void IncrementalMatches::prefetchMatch(const Graph& g, Match m, int nodes, int edges) const {
     for (int i = 0; i < nodes; ++i) {
         const NodeId n = m.nodes[i];
         g.prefetchNode(n);
