@@ -148,8 +148,6 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
 
     DerivationResult result;
     std::vector<std::size_t> order;
-    std::vector<NodeId> changed, edgesChanged;
-    std::vector<std::uint8_t> edgeLists;
     ParallelStep parallel;
     PickLookahead lookahead;
     std::optional<DeadlineWatch> deadline;
@@ -168,7 +166,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             for (std::size_t r : grp.rules) sets.retire(r);
     };
     for (const auto& grp : groups) retireIfSpent(grp);
-    g.takeDirty(changed, edgesChanged, edgeLists);
+    g.forgetChanges();
     static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
@@ -213,19 +211,20 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 }
                 ++grp.applied;
                 retireIfSpent(grp);   // before the repair: a spent rule needs none
+                // The update reads the step's changes in place; they are
+                // forgotten after it (before a full search, which reads
+                // none: a generation's marks are still in the caches now).
                 const bool everything = IncrementalMatches::searchesEverything(g);
-                if (everything)
-                    g.forgetChanges();
-                else
-                    g.takeDirty(changed, edgesChanged, edgeLists);
+                if (everything) g.forgetChanges();
                 try {
-                    sets.update(g, changed, edgesChanged, edgeLists, newEdgesFrom, newNodesFrom, everything);
+                    sets.update(g, newEdgesFrom, newNodesFrom, everything);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
                     if (tracer) tracer->stepDone(step, g);
                     if (observer) observer(step, g);
                     throw timeLimit(limits, step);
                 }
+                g.forgetChanges();
                 if (verify) sets.verify(g, step);
                 applied = true;
                 break;

@@ -151,23 +151,6 @@ void Graph::setEdgeStyle(EdgeId e, StyleProp prop, Value v) {
     styles_.set(styleHead(edgeStyleList_, e, edges_.size()), prop, std::move(v));
 }
 
-void Graph::takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists) {
-    itself.clear();
-    edgesOnly.clear();
-    edgeLists.clear();
-    for (NodeId n : dirty_) {
-        const std::uint8_t d = nodes_[n].marks & kChanged;
-        if (d & kChangedItself) {
-            itself.push_back(n);
-        } else {
-            edgesOnly.push_back(n);
-            edgeLists.push_back(static_cast<std::uint8_t>(d >> 1));
-        }
-        nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);
-    }
-    dirty_.clear();
-}
-
 void Graph::forgetChanges() {
     for (NodeId n : dirty_) nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);
     dirty_.clear();

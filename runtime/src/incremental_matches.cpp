@@ -19,9 +19,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
 }
 
-void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, const std::vector<std::uint8_t>& edgeLists,
-                                int radius) {
+void IncrementalMatches::region(const Graph& g, int radius) {
     if (seen_.size() < g.nodeCapacity()) seen_.resize(g.nodeCapacity() + g.nodeCapacity() / 2, 0);
     if (++mark_ >= 0x1fffffffu) {  // about to wrap: forget every old mark
         std::fill(seen_.begin(), seen_.end(), 0);
@@ -29,14 +27,19 @@ void IncrementalMatches::region(const Graph& g, const std::vector<NodeId>& itsel
     }
     const std::uint32_t full = mark_ * 8 + 1, partial = mark_ * 8;
     area_.clear();
-    for (NodeId n : itself) {
-        seen_[n] = full;
-        area_.push_back(n);
-    }
-    for (std::size_t i = 0; i < edgesOnly.size(); ++i) {
-        seen_[edgesOnly[i]] = partial + 2u * edgeLists[i];
-        area_.push_back(edgesOnly[i]);
-    }
+    // The nodes that changed themselves first, then those whose edges alone
+    // did, each in the order they changed.
+    const std::span<const NodeId> changed = g.changedNodes();
+    for (NodeId n : changed)
+        if (g.changedItself(n)) {
+            seen_[n] = full;
+            area_.push_back(n);
+        }
+    for (NodeId n : changed)
+        if (!g.changedItself(n)) {
+            seen_[n] = partial + 2u * g.changedLists(n);
+            area_.push_back(n);
+        }
     // Nodes reached within the radius are revisited fully (a negative
     // condition's nodes may be there).
     auto reach = [&](NodeId o) {
@@ -66,10 +69,8 @@ bool IncrementalMatches::searchesEverything(const Graph& g) {
     return g.nodeCount() >= kFullSearchMinNodes && 2 * g.changedNodeCount() >= g.nodeCount();
 }
 
-void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itself,
-                                const std::vector<NodeId>& edgesOnly, const std::vector<std::uint8_t>& edgeLists,
-                                EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything) {
-    if (!everything && itself.empty() && edgesOnly.empty()) return;
+void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything) {
+    if (!everything && g.changedNodes().empty()) return;
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     for (const std::size_t r : byRadius_) {
         if (retired_[r]) continue;
@@ -80,7 +81,7 @@ void IncrementalMatches::update(const Graph& g, const std::vector<NodeId>& itsel
             continue;
         }
         if (radius_[r] != areaRadius) {
-            region(g, itself, edgesOnly, edgeLists, radius_[r]);
+            region(g, radius_[r]);
             areaRadius = radius_[r];
         }
         const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom, newNodesFrom};

@@ -192,22 +192,25 @@ public:
 
     const std::vector<KindInfo>& kinds() const { return kinds_; }
 
-    // Change tracking for incremental matching, since the last takeDirty():
-    // nodes created, deleted or changed themselves (position, attributes),
-    // and nodes only whose incident edges were added or removed, with which
-    // of their edge lists (outgoing, incoming) changed. An edge whose
-    // attributes or ends change makes its ends count as changed themselves
-    // (incremental matching tells an edge the step added by its id, but
-    // keeps no other mark per edge).
+    // Change tracking for incremental matching, since the last
+    // forgetChanges(): nodes created, deleted or changed themselves
+    // (position, attributes), and nodes only whose incident edges were added
+    // or removed, with which of their edge lists (outgoing, incoming)
+    // changed. An edge whose attributes or ends change makes its ends count
+    // as changed themselves (incremental matching tells an edge the step
+    // added by its id, but keeps no other mark per edge).
     void touchNode(NodeId n) { touch(n, kChangedItself); }
     void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedOut); touch(edges_[e].dst, kChangedIn); }
     void touchEdgeItself(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
-    // Moves the changed nodes into `itself` and `edgesOnly` (cleared first);
-    // `edgeLists[i]` says which lists of `edgesOnly[i]` changed
-    // (RepairArea::kOut | kIn).
-    void takeDirty(std::vector<NodeId>& itself, std::vector<NodeId>& edgesOnly, std::vector<std::uint8_t>& edgeLists);
-    // How many nodes changed; forgetting them (for a step after which every
-    // match is searched again: a whole generation's lists would be large).
+    // The changed nodes (each once, in the order they first changed); for
+    // each, whether it changed itself, or else which of its edge lists did
+    // (RepairArea::kOut | kIn). Read in place by incremental matching: a
+    // step's few changes are not copied out.
+    std::span<const NodeId> changedNodes() const { return {dirty_.data(), dirty_.size()}; }
+    bool changedItself(NodeId n) const { return (nodes_[n].marks & kChangedItself) != 0; }
+    std::uint8_t changedLists(NodeId n) const {
+        return static_cast<std::uint8_t>((nodes_[n].marks & (kChangedOut | kChangedIn)) >> 1);
+    }
     std::size_t changedNodeCount() const { return dirty_.size(); }
     void forgetChanges();
 

@@ -45,19 +45,15 @@ public:
     // Stops keeping `rule`'s matches (it will not be applied again): its set
     // is emptied and no longer repaired or verified.
     void retire(std::size_t rule);
-    // Repairs every rule's set after the nodes in `itself` changed, and those
-    // in `edgesOnly` saw only edges change, in their lists `edgeLists`
-    // (Graph::takeDirty).
+    // Repairs every rule's set after the changes `g` recorded
+    // (Graph::changedNodes; the caller forgets them after).
     // The step just applied added the edges from id `newEdgesFrom` on, and
     // the nodes from `newNodesFrom` on.
     // With `everything`, every rule is searched in full instead (and the
-    // changes are not needed: see searchesEverything).
-    void update(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly,
-                const std::vector<std::uint8_t>& edgeLists, EdgeId newEdgesFrom,
-                NodeId newNodesFrom, bool everything = false);
+    // changes are not read: see searchesEverything).
+    void update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything = false);
     // Whether the changes `g` has recorded are so many that the next update
-    // should search every rule in full (then they need not be listed:
-    // Graph::forgetChanges is enough).
+    // should search every rule in full.
     static bool searchesEverything(const Graph& g);
     // Prefetches what the next update reads about the nodes of a match
     // about to be rewritten (their marks, their lists in the first rules'
@@ -77,8 +73,7 @@ private:
     void prefetchMatch(const Graph& g, Match m, int nodes, int edges) const;
     // The changed nodes and those within `radius` edges of them, in area_,
     // marked in seen_ as RepairArea reads them.
-    void region(const Graph& g, const std::vector<NodeId>& itself, const std::vector<NodeId>& edgesOnly,
-                const std::vector<std::uint8_t>& edgeLists, int radius);
+    void region(const Graph& g, int radius);
     bool inArea(NodeId n) const { return (seen_[n] >> 3) == mark_; }
     // Empties `rule`'s set and fills it by a full search.
     void refill(std::size_t rule, const Graph& g);
