@@ -77,26 +77,43 @@ TEST_CASE("style properties are numbered in the program's order, new names after
 }
 
 TEST_CASE("a removed element's style entries are reused, not grown", "[graph][style]") {
-    Graph g = twoKinds();
     // Many elements restyled and removed in turn: the pool stays at the
-    // most ever alive at once (three entries here).
-    NodeId prev = g.addNode(0, {0, 0}, 0);
-    g.setNodeStyle(prev, "fill", std::string("a"));
-    g.setNodeStyle(prev, "r", 1.0);
-    const std::size_t warm = g.memoryBytes();
+    // most ever alive at once (one block), where a pool growing per element
+    // would take 2,000 entries (eight blocks).
+    StyleStore store;
+    const StyleProp fill = store.prop("fill"), r = store.prop("r");
+    std::uint32_t prev = StyleStore::kNone;
+    store.set(prev, fill, std::string("a"));
+    store.set(prev, r, 1.0);
+    const std::size_t warm = store.memoryBytes();
     for (int i = 1; i <= 1000; ++i) {
-        const NodeId n = g.addNode(0, {0, 0}, i);
-        g.setNodeStyle(n, "fill", std::string(100, 'x'));   // a long string, released with its element
-        g.setNodeStyle(n, "r", static_cast<double>(i));
-        g.removeNode(prev);
-        prev = n;
+        std::uint32_t next = StyleStore::kNone;
+        store.set(next, fill, std::string(100, 'x'));   // a long string, released with its element
+        store.set(next, r, static_cast<double>(i));
+        store.drop(prev);
+        CHECK(prev == StyleStore::kNone);
+        prev = next;
     }
-    auto l = listed(g, g.nodeStyle(prev));
-    REQUIRE(l.size() == 2);
-    CHECK(std::get<double>(l[1].second) == 1000.0);
-    // Only per-node columns grew (heads, the kind index, the change list:
-    // about 20 bytes a node), not the pool, which growing per element would
-    // add two entries (over 90 bytes) a node.
-    CHECK(sizeof(StyleEntry) * 2 > 90);
-    CHECK(g.memoryBytes() - warm < 1000 * 32);
+    CHECK(store.memoryBytes() == warm);
+    std::vector<std::pair<StyleProp, Value>> last;
+    for (const auto& e : store.list(prev)) last.emplace_back(e.prop, e.value);
+    REQUIRE(last.size() == 2);
+    CHECK(last[0].first == fill);
+    CHECK(std::get<std::string>(last[0].second) == std::string(100, 'x'));
+    CHECK(std::get<double>(last[1].second) == 1000.0);
+
+    // The same through a graph: the survivor's list is its own.
+    Graph g = twoKinds();
+    NodeId before = g.addNode(0, {0, 0}, 0);
+    g.setNodeStyle(before, "fill", std::string("a"));
+    for (int i = 1; i <= 100; ++i) {
+        const NodeId n = g.addNode(0, {0, 0}, i);
+        g.setNodeStyle(n, "r", static_cast<double>(i));
+        g.removeNode(before);
+        before = n;
+    }
+    auto l = listed(g, g.nodeStyle(before));
+    REQUIRE(l.size() == 1);
+    CHECK(l[0].first == "r");
+    CHECK(std::get<double>(l[0].second) == 100.0);
 }
