@@ -25,8 +25,10 @@ struct Globals {
     std::vector<FileId> paramFile, constFile;
     int constsDeclared = 0;                     // consts visible so far (declaration order)
     int functionsDeclared = 0;                  // functions visible so far (no recursion)
-    std::vector<int> functionDepth;
-    bool tooManyKinds = false;                  // reported once             // per function: calls nested in it, itself included
+    std::vector<int> functionDepth;             // per function: calls nested in it, itself included
+    bool tooManyKinds = false;                  // reported once
+    std::map<std::string, int> styleProps;      // style property -> its number (ir::Program::styleProps)
+    bool tooManyStyleProps = false;             // reported once
     // Values and functions declared anywhere, for "used before its declaration".
     std::map<std::string, Span> laterValues, laterFunctions;
     std::string definingConst;                  // the constant whose value is being checked

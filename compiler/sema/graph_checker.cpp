@@ -17,6 +17,9 @@ using ir::TypeKind;
 
 namespace {
 
+// The runtime numbers style properties in 16 bits (rt::StyleProp).
+constexpr std::size_t kMaxStyleProps = 65535;
+
 // Looks up a kind by name, requiring the given class; reports otherwise.
 int resolveKind(Globals& g, const ast::Ident& name, ElemClass cls) {
     auto it = g.kinds.find(name.name);
@@ -80,11 +83,20 @@ void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<a
             auto v = ec.check(*a.value, env);
             if (!v) continue;
             checkStyleValue(g, a.name.name, *v);
-            auto& props = g.prog.styleProps;
-            const auto known = std::find(props.begin(), props.end(), a.name.name);
-            const int id = static_cast<int>(known - props.begin());
-            if (known == props.end()) props.push_back(a.name.name);
-            stylesOut.push_back(ir::StyleAssign{a.name.name, id, std::move(*v)});
+            // Numbered for the runtime, which keeps a number in 16 bits.
+            auto [known, added] = g.styleProps.emplace(a.name.name, static_cast<int>(g.prog.styleProps.size()));
+            if (added) {
+                if (g.prog.styleProps.size() >= kMaxStyleProps) {
+                    if (!g.tooManyStyleProps)
+                        g.diags.error(a.name.span, "too many style properties: a program may set at most " +
+                                                       std::to_string(kMaxStyleProps) + " different ones");
+                    g.tooManyStyleProps = true;
+                    g.styleProps.erase(known);
+                    continue;
+                }
+                g.prog.styleProps.push_back(a.name.name);
+            }
+            stylesOut.push_back(ir::StyleAssign{a.name.name, known->second, std::move(*v)});
             continue;
         }
         if (kind < 0) continue;

@@ -72,6 +72,18 @@ expect_code 1 "$g2d" check many_kinds.g2d
 [ "$(grep -c error: err.txt)" = 1 ] && grep -q '^many_kinds.g2d:32768:6: error: too many kinds: a grammar may declare at most 32767 node and edge kinds$' err.txt \
   || fail "too many kinds: $(head -c 300 err.txt)"
 
+# More style properties than the runtime numbers (65 535): 70 axiom nodes
+# of 1 000 each, one a line; the 65 536th is n65's 536th
+python3 - <<'PY'
+lines = ["node P;", "axiom {"]
+for n in range(70):
+    lines.append(f"  n{n}: P {{ " + ", ".join(f"style.p{n * 1000 + i} = 1" for i in range(1000)) + " };")
+open("many_styles.g2d", "w").write("\n".join(lines + ["}"]) + "\n")
+PY
+expect_code 1 "$g2d" check many_styles.g2d
+[ "$(grep -c error: err.txt)" = 1 ] && grep -q '^many_styles.g2d:68:9648: error: too many style properties: a program may set at most 65535 different ones$' err.txt \
+  || fail "too many style properties: $(head -c 300 err.txt)"
+
 # Imports: a self-import, a cycle, a missing file, a folder, a symbolic-link loop
 printf 'import "self.g2d";\nnode P;\naxiom { a: P; }\n' > self.g2d
 expect_code 1 "$g2d" check self.g2d
