@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "g2d/style_store.hpp"
 #include "sema/builtins.hpp"
 #include "sema/const_fold.hpp"
 #include "sema/decl_checker.hpp"
@@ -16,9 +17,6 @@ using ir::Type;
 using ir::TypeKind;
 
 namespace {
-
-// The runtime numbers style properties in 16 bits (rt::StyleProp).
-constexpr std::size_t kMaxStyleProps = 65535;
 
 // Looks up a kind by name, requiring the given class; reports otherwise.
 int resolveKind(Globals& g, const ast::Ident& name, ElemClass cls) {
@@ -86,10 +84,10 @@ void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<a
             // Numbered for the runtime, which keeps a number in 16 bits.
             auto [known, added] = g.styleProps.emplace(a.name.name, static_cast<int>(g.prog.styleProps.size()));
             if (added) {
-                if (g.prog.styleProps.size() >= kMaxStyleProps) {
+                if (g.prog.styleProps.size() >= rt::kMaxStyleProps) {
                     if (!g.tooManyStyleProps)
                         g.diags.error(a.name.span, "too many style properties: a program may set at most " +
-                                                       std::to_string(kMaxStyleProps) + " different ones");
+                                                       std::to_string(rt::kMaxStyleProps) + " different ones");
                     g.tooManyStyleProps = true;
                     g.styleProps.erase(known);
                     continue;

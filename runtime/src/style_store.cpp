@@ -11,13 +11,13 @@ std::size_t StyleList::size() const {
 }
 
 StyleStore::StyleStore(std::vector<std::string> props) : names_(std::move(props)) {
-    if (names_.size() > 0xffff) throw std::length_error("more than 65535 style properties");
+    if (names_.size() > kMaxStyleProps) throw std::length_error("more than 65535 style properties");
 }
 
 StyleProp StyleStore::prop(std::string_view name) {
     for (std::size_t i = 0; i < names_.size(); ++i)
         if (names_[i] == name) return static_cast<StyleProp>(i);
-    if (names_.size() >= 0xffff) throw std::length_error("more than 65535 style properties");
+    if (names_.size() >= kMaxStyleProps) throw std::length_error("more than 65535 style properties");
     names_.emplace_back(name);
     return static_cast<StyleProp>(names_.size() - 1);
 }

@@ -22,6 +22,8 @@
 namespace g2d::rt {
 
 using StyleProp = std::uint16_t;
+// How many different properties one graph numbers (sema rejects more).
+inline constexpr std::size_t kMaxStyleProps = 65535;
 
 struct StyleEntry {
     Value value;
