@@ -1,5 +1,6 @@
 #include "emit/cpp_expr.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <climits>
@@ -14,6 +15,18 @@ using ir::TypeKind;
 int Places::add(const Span& s) {
     spans_.push_back(s);
     return static_cast<int>(spans_.size() - 1);
+}
+
+std::string ConstantValues::add(const std::string& valueExpr) {
+    auto it = std::find(exprs_.begin(), exprs_.end(), valueExpr);
+    if (it == exprs_.end()) it = exprs_.insert(exprs_.end(), valueExpr);
+    return "kValue" + std::to_string(it - exprs_.begin());
+}
+
+std::string ConstantValues::definitions() const {
+    std::string out;
+    for (std::size_t i = 0; i < exprs_.size(); ++i) out += "const Value kValue" + std::to_string(i) + exprs_[i] + ";\n";
+    return out.empty() ? out : out + "\n";
 }
 
 std::string cppType(const ir::Type& t) {

@@ -20,6 +20,22 @@ private:
     std::vector<Span> spans_;
 };
 
+// Literal style values, each built once when the program starts (a
+// `const Value` at namespace scope) rather than per rewrite: a daughter that
+// sets `style.tag = "none"` on twenty elements copies one constant twenty
+// times, with no string built, kept and converted per element.
+class ConstantValues {
+public:
+    // The C++ name of the constant holding `valueExpr` (a Value's
+    // initialiser), shared by equal ones.
+    std::string add(const std::string& valueExpr);
+    // Their definitions, in order.
+    std::string definitions() const;
+
+private:
+    std::vector<std::string> exprs_;
+};
+
 std::string cppType(const ir::Type& t);
 std::string cppLiteral(const ir::Value& v, const ir::Type& t);
 std::string cppString(const std::string& s);

@@ -12,8 +12,10 @@ std::string str(int i) { return std::to_string(i); }
 
 class RuleEmitter {
 public:
-    RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places)
-        : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen), places_(places) {}
+    RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places,
+                ConstantValues& constants)
+        : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen), places_(places),
+          constants_(constants) {}
 
     std::string emit() {
         std::string out;
@@ -349,9 +351,24 @@ private:
         return out + "    }\n\n";
     }
 
-    std::string styleValue(const ir::Type& t, const std::string& v) const {
-        if (t.kind == ir::TypeKind::Enum) return "Value{EnumVal{" + str(t.enumId) + ", " + v + "}}";
-        return "Value{" + v + "}";
+    // A style value as a Value's initialiser, and as a Value.
+    static std::string styleInit(const ir::Type& t, const std::string& v) {
+        if (t.kind == ir::TypeKind::Enum) return "{EnumVal{" + str(t.enumId) + ", " + v + "}}";
+        return "{" + v + "}";
+    }
+    static std::string styleValue(const ir::Type& t, const std::string& v) { return "Value" + styleInit(t, v); }
+    // What a commit writes for attribute assignment `a` (the `index`th of
+    // an element whose kept values are named `prefix`_i): a literal as it
+    // is, anything else as prepare kept it.
+    static std::string assigned(const ir::AttrAssign& a, const std::string& prefix, std::size_t index) {
+        if (a.value.op == ir::ExprOp::Literal) return cppLiteral(a.value.value, a.value.type);
+        return prefix + "_" + str(static_cast<int>(index));
+    }
+    // What a commit passes for style assignment `s` whose value, unless it
+    // is a literal (a shared constant), prepare kept as `kept`.
+    std::string styleArg(const ir::StyleAssign& s, const std::string& kept) {
+        if (s.value.op == ir::ExprOp::Literal) return constants_.add(styleInit(s.value.type, cppLiteral(s.value.value, s.value.type)));
+        return styleValue(s.value.type, kept);
     }
 
     std::string prepare(int di) {
@@ -394,12 +411,14 @@ private:
                 kept.emplace_back("vec2", "pos" + si);
             }
             for (std::size_t a = 0; a < dn.assigns.size(); ++a) {
+                if (dn.assigns[a].value.op == ir::ExprOp::Literal) continue;   // written as it is (assigned)
                 const std::string v = gen_.gen(dn.assigns[a].value, ctx, out, in);
                 const std::string name = "nv" + si + "_" + str(static_cast<int>(a));
                 out += in + "const auto " + name + " = " + v + ";\n";
                 kept.emplace_back(cppType(dn.assigns[a].value.type), name);
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a) {
+                if (dn.styles[a].value.op == ir::ExprOp::Literal) continue;   // a constant (styleArg)
                 const std::string v = gen_.gen(dn.styles[a].value, ctx, out, in);
                 const std::string name = "ns" + si + "_" + str(static_cast<int>(a));
                 out += in + "const auto " + name + " = " + v + ";\n";
@@ -410,12 +429,14 @@ private:
             const auto& de = d.edges[i];
             const std::string si = str(static_cast<int>(i));
             for (std::size_t a = 0; a < de.assigns.size(); ++a) {
+                if (de.assigns[a].value.op == ir::ExprOp::Literal) continue;   // written as it is (assigned)
                 const std::string v = gen_.gen(de.assigns[a].value, ctx, out, in);
                 const std::string name = "ev" + si + "_" + str(static_cast<int>(a));
                 out += in + "const auto " + name + " = " + v + ";\n";
                 kept.emplace_back(cppType(de.assigns[a].value.type), name);
             }
             for (std::size_t a = 0; a < de.styles.size(); ++a) {
+                if (de.styles[a].value.op == ir::ExprOp::Literal) continue;   // a constant (styleArg)
                 const std::string v = gen_.gen(de.styles[a].value, ctx, out, in);
                 const std::string name = "es" + si + "_" + str(static_cast<int>(a));
                 out += in + "const auto " + name + " = " + v + ";\n";
@@ -439,7 +460,7 @@ private:
             if (!prog_.kinds[dn.kind].attrs.empty()) {
                 commit += c + "{\n" + c + "    Kind" + str(dn.kind) + " rec = default_" + str(dn.kind) + ";\n";
                 for (std::size_t a = 0; a < dn.assigns.size(); ++a)
-                    commit += c + "    rec.a" + str(dn.assigns[a].attr) + " = nv" + si + "_" + str(static_cast<int>(a)) + ";\n";
+                    commit += c + "    rec.a" + str(dn.assigns[a].attr) + " = " + assigned(dn.assigns[a], "nv" + si, a) + ";\n";
                 commit += c + "    G.setNodeSlot(h" + si + ", store_" + str(dn.kind) + ".add(rec));\n" + c + "}\n";
             }
         }
@@ -456,14 +477,14 @@ private:
             if (dn.motherNode >= 0) {
                 if (dn.position) commit += c + "G.setPos(h" + si + ", pos" + si + ");\n";
                 for (std::size_t a = 0; a < dn.assigns.size(); ++a)
-                    commit += c + gen_.attrAccess(dn.kind, "h" + si, false, dn.assigns[a].attr, "G") + " = nv" + si + "_" +
-                              str(static_cast<int>(a)) + ";\n";
+                    commit += c + gen_.attrAccess(dn.kind, "h" + si, false, dn.assigns[a].attr, "G") + " = " +
+                              assigned(dn.assigns[a], "nv" + si, a) + ";\n";
                 // Typed attributes change outside the graph: tell it, for incremental matching.
                 if (!dn.assigns.empty()) commit += c + "G.touchNode(h" + si + ");\n";
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a)
                 commit += c + "G.setNodeStyle(h" + si + ", " + cppStyleProp(dn.styles[a]) + ", " +
-                          styleValue(dn.styles[a].value.type, "ns" + si + "_" + str(static_cast<int>(a))) + ");\n";
+                          styleArg(dn.styles[a], "ns" + si + "_" + str(static_cast<int>(a))) + ");\n";
         }
         for (std::size_t i = 0; i < d.edges.size(); ++i) {
             const auto& de = d.edges[i];
@@ -472,21 +493,21 @@ private:
             if (de.motherEdge >= 0) {
                 commit += c + "const EdgeId k" + si + " = m.edges[" + str(de.motherEdge) + "];\n" + c + "(void)k" + si + ";\n";
                 for (std::size_t a = 0; a < de.assigns.size(); ++a)
-                    commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = ev" + si + "_" +
-                              str(static_cast<int>(a)) + ";\n";
+                    commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = " +
+                              assigned(de.assigns[a], "ev" + si, a) + ";\n";
                 if (!de.assigns.empty()) commit += c + "G.touchEdgeItself(k" + si + ");\n";
             } else {
                 commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step);\n" + c + "(void)k" + si + ";\n";
                 if (!prog_.kinds[de.kind].attrs.empty()) {
                     commit += c + "{\n" + c + "    Kind" + str(de.kind) + " rec = default_" + str(de.kind) + ";\n";
                     for (std::size_t a = 0; a < de.assigns.size(); ++a)
-                        commit += c + "    rec.a" + str(de.assigns[a].attr) + " = ev" + si + "_" + str(static_cast<int>(a)) + ";\n";
+                        commit += c + "    rec.a" + str(de.assigns[a].attr) + " = " + assigned(de.assigns[a], "ev" + si, a) + ";\n";
                     commit += c + "    G.setEdgeSlot(k" + si + ", store_" + str(de.kind) + ".add(rec));\n" + c + "}\n";
                 }
             }
             for (std::size_t a = 0; a < de.styles.size(); ++a)
                 commit += c + "G.setEdgeStyle(k" + si + ", " + cppStyleProp(de.styles[a]) + ", " +
-                          styleValue(de.styles[a].value.type, "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
+                          styleArg(de.styles[a], "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
         }
         // Kept in a typed buffer until commit (no allocation once warm).
         const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));
@@ -559,13 +580,14 @@ private:
     int firstDaughter_;
     ExprGen& gen_;
     Places& places_;
+    ConstantValues& constants_;
 };
 
 }  // namespace
 
 std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
-                     Places& places) {
-    return RuleEmitter(prog, rule, ruleIndex, firstDaughter, gen, places).emit();
+                     Places& places, ConstantValues& constants) {
+    return RuleEmitter(prog, rule, ruleIndex, firstDaughter, gen, places, constants).emit();
 }
 
 }  // namespace g2d::emit

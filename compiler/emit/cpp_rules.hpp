@@ -10,6 +10,6 @@ namespace g2d::emit {
 // `firstDaughter` numbers the rule's first daughter among all rules' daughters
 // (the key of its pending rewrites).
 std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
-                     Places& places);
+                     Places& places, ConstantValues& constants);
 
 }  // namespace g2d::emit

@@ -50,4 +50,33 @@ expect_code 2 ./div --timeout -3
 expect_code 2 ./div --frobnicate
 expect_code 0 ./div --help
 
+# A literal style value is one constant in the generated code, copied by
+# every element it is set on; computed ones are evaluated per rewrite. The
+# compiled program draws the same bytes as the interpreter.
+cat > lit.g2d <<'G'
+node P { style { tag = "circle"; } }
+edge L { style { stroke = "black"; } }
+axiom { a: P at (0, 0); }
+rule R {
+    match { a: P; }
+    produce {
+        a;
+        b: P at a.pos + (1, 0) { style.tag = "none", style.r = 0.5 };
+        c: P at a.pos + (0, 1) { style.tag = "none", style.r = a.pos.x + 0.5 };
+        a -[L { style.stroke = "none", style.stroke_width = 0.5 }]- b;
+    }
+}
+G
+expect_code 0 "$g2d" emit-cpp lit.g2d -o lit.cpp
+[ "$(grep -c '^const Value kValue[0-9]*{std::string("none", 4)};$' lit.cpp)" = 1 ] || fail "the literal \"none\" is not one constant: $(grep -n 'none' lit.cpp)"
+[ "$(grep -c '^const Value kValue[0-9]*{0.5};$' lit.cpp)" = 1 ] || fail "the literal 0.5 is not one constant: $(grep -n '0\.5' lit.cpp)"
+grep -q 'std::string("none", 4)' <(grep -v '^const Value' lit.cpp) && fail "\"none\" is still built per rewrite"
+[ "$(grep -c 'Style(h[0-9]*, StyleProp([0-9]* /\* tag \*/), kValue' lit.cpp)" = 2 ] || fail "tag not set from the constant: $(grep -n 'StyleProp' lit.cpp)"
+grep -q 'StyleProp([0-9]* /\* r \*/), Value{ns' lit.cpp || fail "a computed style is not kept per rewrite: $(grep -n 'StyleProp' lit.cpp)"
+expect_code 0 "$g2d" build lit.g2d -o lit
+expect_code 0 ./lit --steps 3 -o lc.svg --json lc.json
+expect_code 0 "$g2d" run lit.g2d --steps 3 -o li.svg --json li.json
+cmp -s lc.svg li.svg && cmp -s lc.json li.json || fail "literal styles: compiled and interpreted outputs differ"
+grep -q 'stroke-width="0.5"' lc.svg || fail "the edge's literal stroke width is missing: $(cat lc.svg)"
+
 finish

@@ -144,7 +144,9 @@ public:
     // keep them in typed arrays); kNoId until set.
     std::uint32_t nodeSlot(NodeId n) const { return nodes_[n].slot; }
     void setNodeSlot(NodeId n, std::uint32_t slot) { nodes_[n].slot = slot; }
-    void setNodeStyle(NodeId n, StyleProp prop, Value v);
+    void setNodeStyle(NodeId n, StyleProp prop, Value&& v);
+    // A copy of `v` (generated code keeps a literal style value as one constant).
+    void setNodeStyle(NodeId n, StyleProp prop, const Value& v);
     void setNodeStyle(NodeId n, std::string_view prop, Value v) { setNodeStyle(n, styleProp(prop), std::move(v)); }
 
     int edgeKind(EdgeId e) const { return edges_[e].kind; }
@@ -160,7 +162,8 @@ public:
     StyleList edgeStyle(EdgeId e) const;
     std::uint32_t edgeSlot(EdgeId e) const { return edges_[e].slot; }
     void setEdgeSlot(EdgeId e, std::uint32_t slot) { edges_[e].slot = slot; }
-    void setEdgeStyle(EdgeId e, StyleProp prop, Value v);
+    void setEdgeStyle(EdgeId e, StyleProp prop, Value&& v);
+    void setEdgeStyle(EdgeId e, StyleProp prop, const Value& v);
     void setEdgeStyle(EdgeId e, std::string_view prop, Value v) { setEdgeStyle(e, styleProp(prop), std::move(v)); }
 
     // Style property numbers (a new name is numbered after the others).
