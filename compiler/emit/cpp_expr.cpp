@@ -25,8 +25,8 @@ std::string ConstantValues::add(const std::string& valueExpr) {
 
 std::string ConstantValues::definitions() const {
     std::string out;
-    for (std::size_t i = 0; i < exprs_.size(); ++i) out += "const Value kValue" + std::to_string(i) + exprs_[i] + ";\n";
-    return out.empty() ? out : out + "\n";
+    for (std::size_t i = 0; i < exprs_.size(); ++i) out += "    const Value kValue" + std::to_string(i) + exprs_[i] + ";\n";
+    return out;
 }
 
 std::string cppType(const ir::Type& t) {

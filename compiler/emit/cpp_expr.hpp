@@ -20,16 +20,16 @@ private:
     std::vector<Span> spans_;
 };
 
-// Literal style values, each built once when the program starts (a
-// `const Value` at namespace scope) rather than per rewrite: a daughter that
-// sets `style.tag = "none"` on twenty elements copies one constant twenty
-// times, with no string built, kept and converted per element.
+// Literal style values, each built once with the grammar (a `const Value`
+// member) rather than per rewrite: a daughter that sets `style.tag = "none"`
+// on twenty elements copies one constant twenty times, with no string
+// built, kept and converted per element.
 class ConstantValues {
 public:
     // The C++ name of the constant holding `valueExpr` (a Value's
     // initialiser), shared by equal ones.
     std::string add(const std::string& valueExpr);
-    // Their definitions, in order.
+    // Their declarations as members of the grammar's class, in order.
     std::string definitions() const;
 
 private:

@@ -50,7 +50,7 @@ expect_code 2 ./div --timeout -3
 expect_code 2 ./div --frobnicate
 expect_code 0 ./div --help
 
-# A literal style value is one constant in the generated code, copied by
+# A literal style value is one constant of the generated grammar, copied by
 # every element it is set on; computed ones are evaluated per rewrite. The
 # compiled program draws the same bytes as the interpreter.
 cat > lit.g2d <<'G'
@@ -68,9 +68,9 @@ rule R {
 }
 G
 expect_code 0 "$g2d" emit-cpp lit.g2d -o lit.cpp
-[ "$(grep -c '^const Value kValue[0-9]*{std::string("none", 4)};$' lit.cpp)" = 1 ] || fail "the literal \"none\" is not one constant: $(grep -n 'none' lit.cpp)"
-[ "$(grep -c '^const Value kValue[0-9]*{0.5};$' lit.cpp)" = 1 ] || fail "the literal 0.5 is not one constant: $(grep -n '0\.5' lit.cpp)"
-grep -q 'std::string("none", 4)' <(grep -v '^const Value' lit.cpp) && fail "\"none\" is still built per rewrite"
+[ "$(grep -c '^ *const Value kValue[0-9]*{std::string("none", 4)};$' lit.cpp)" = 1 ] || fail "the literal \"none\" is not one constant: $(grep -n 'none' lit.cpp)"
+[ "$(grep -c '^ *const Value kValue[0-9]*{0.5};$' lit.cpp)" = 1 ] || fail "the literal 0.5 is not one constant: $(grep -n '0\.5' lit.cpp)"
+grep -q 'std::string("none", 4)' <(grep -v '^ *const Value' lit.cpp) && fail "\"none\" is still built per rewrite"
 [ "$(grep -c 'Style(h[0-9]*, StyleProp([0-9]* /\* tag \*/), kValue' lit.cpp)" = 2 ] || fail "tag not set from the constant: $(grep -n 'StyleProp' lit.cpp)"
 grep -q 'StyleProp([0-9]* /\* r \*/), Value{ns' lit.cpp || fail "a computed style is not kept per rewrite: $(grep -n 'StyleProp' lit.cpp)"
 expect_code 0 "$g2d" build lit.g2d -o lit
