@@ -46,7 +46,10 @@ Graph::Graph(std::vector<KindInfo> kinds, std::vector<std::string> styleProps)
     edges_.reserve(grow_detail::kOwnMappingBytes / sizeof(EdgeRec) + 1);
 }
 
-void Graph::setKindDefaults(int kind, std::vector<Value> defaults) { defaults_[kind] = std::move(defaults); }
+void Graph::setKindDefaults(int kind, std::vector<Value> defaults) {
+    anyPooled_ = anyPooled_ || !defaults.empty();
+    defaults_[kind] = std::move(defaults);
+}
 
 std::uint32_t Graph::newAttrBlock(int kind, std::vector<Value>* attrs) {
     const auto& defaults = defaults_[kind];

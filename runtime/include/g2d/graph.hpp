@@ -266,6 +266,11 @@ private:
 
     std::vector<KindInfo> kinds_;
     std::vector<std::vector<Value>> defaults_;   // per kind
+    // Whether any kind keeps its attributes in pool_ (never, for compiled
+    // grammars: their typed arrays hold them), so that adding and removing
+    // elements need not look up their kind's defaults.
+    bool anyPooled_ = false;
+    bool pooled(int kind) const { return anyPooled_ && !defaults_[kind].empty(); }
     std::vector<std::vector<Value>> pool_;       // per kind: blocks of defaults_[kind].size()
     // The columns that grow with the graph never copy themselves (grow_array.hpp).
     GrowArray<NodeRec> nodes_;
@@ -282,7 +287,7 @@ private:
 
 NodeId Graph::addNode(int kind, vec2 pos, long long age) {
     const auto id = static_cast<NodeId>(nodes_.size());
-    const std::uint32_t slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
+    const std::uint32_t slot = pooled(kind) ? newAttrBlock(kind, nullptr) : kNoId;
     auto& ofKind = kindNodes_[kind];
     // Built in place: a record built aside and copied in is read back with
     // wide loads over its narrow stores, which cannot be forwarded (a stall).
@@ -298,7 +303,7 @@ NodeId Graph::addNode(int kind, vec2 pos, long long age) {
 EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
     if (!nodeAlive(src) || !nodeAlive(dst)) deadEndpoint();
     const auto id = static_cast<EdgeId>(edges_.size());
-    const std::uint32_t slot = defaults_[kind].empty() ? kNoId : newAttrBlock(kind, nullptr);
+    const std::uint32_t slot = pooled(kind) ? newAttrBlock(kind, nullptr) : kNoId;
     ::new (static_cast<void*>(edges_.extendUnset(1)))   // in place, as in addNode
         EdgeRec{age, static_cast<std::int16_t>(kind), true, false, slot, src, dst, kNoId, kNoId, kNoId, kNoId};
     link(id);
@@ -308,17 +313,25 @@ EdgeId Graph::addEdge(int kind, NodeId src, NodeId dst, long long age) {
 }
 
 void Graph::link(EdgeId e) {
+    // The ends and kind as locals: stores through the records could alias
+    // them, and the compiler would read them again after each.
     auto& rec = edges_[e];
-    nodes_[rec.src].edgeKinds |= edgeKindBit(rec.kind);
-    nodes_[rec.dst].edgeKinds |= edgeKindBit(rec.kind);
+    const NodeId src = rec.src, dst = rec.dst;
+    const std::uint32_t bit = edgeKindBit(rec.kind);
+    NodeRec& s = nodes_[src];
+    NodeRec& d = nodes_[dst];
+    s.edgeKinds |= bit;
+    d.edgeKinds |= bit;
+    const EdgeId nextOut = s.firstOut;
     rec.prevOut = kNoId;
-    rec.nextOut = nodes_[rec.src].firstOut;
-    if (rec.nextOut != kNoId) edges_[rec.nextOut].prevOut = e;
-    nodes_[rec.src].firstOut = e;
+    rec.nextOut = nextOut;
+    if (nextOut != kNoId) edges_[nextOut].prevOut = e;
+    s.firstOut = e;
+    const EdgeId nextIn = d.firstIn;
     rec.prevIn = kNoId;
-    rec.nextIn = nodes_[rec.dst].firstIn;
-    if (rec.nextIn != kNoId) edges_[rec.nextIn].prevIn = e;
-    nodes_[rec.dst].firstIn = e;
+    rec.nextIn = nextIn;
+    if (nextIn != kNoId) edges_[nextIn].prevIn = e;
+    d.firstIn = e;
 }
 
 void Graph::unlink(EdgeId e) {
@@ -336,7 +349,7 @@ void Graph::removeEdge(EdgeId e) {
     unlink(e);
     rec.alive = false;
     // (A compiled grammar's slot indexes its own arrays: nothing to drop here.)
-    if (rec.styled || (rec.slot != kNoId && !defaults_[rec.kind].empty())) dropEdgeExtras(rec, e);
+    if (rec.styled || (rec.slot != kNoId && pooled(rec.kind))) dropEdgeExtras(rec, e);
     --liveEdges_;
 }
 
