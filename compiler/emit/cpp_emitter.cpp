@@ -39,12 +39,6 @@ std::string paramType(const ir::Type& t) {
     }
 }
 
-// A Value holding `v` of type `t` (enums as EnumVal).
-std::string valueOf(const ir::Type& t, const std::string& v) {
-    if (t.kind == ir::TypeKind::Enum) return "Value{EnumVal{" + str(t.enumId) + ", " + v + "}}";
-    return "Value{" + v + "}";
-}
-
 // Reads a parameter value from the driver's Value.
 std::string fromValue(const ir::Type& t, const std::string& v) {
     if (t.kind == ir::TypeKind::Enum) return "std::get<EnumVal>(" + v + ").index";

@@ -42,6 +42,13 @@ std::string cppType(const ir::Type& t) {
     return "void";
 }
 
+std::string valueInit(const ir::Type& t, const std::string& v) {
+    if (t.kind == TypeKind::Enum) return "{EnumVal{" + std::to_string(t.enumId) + ", " + v + "}}";
+    return "{" + v + "}";
+}
+
+std::string valueOf(const ir::Type& t, const std::string& v) { return "Value" + valueInit(t, v); }
+
 std::string cppStyleProp(const ir::StyleAssign& s) {
     // Property names are identifiers: safe inside a comment.
     return "StyleProp(" + std::to_string(s.propId) + " /* " + s.prop + " */)";

@@ -42,6 +42,10 @@ std::string cppString(const std::string& s);
 // A style property by its number (the graph numbers ir::Program::styleProps
 // in order), with its name in a comment.
 std::string cppStyleProp(const ir::StyleAssign& s);
+// A runtime Value holding C++ expression `v` of type `t` (enums as
+// EnumVal): its brace initialiser, and the Value itself.
+std::string valueInit(const ir::Type& t, const std::string& v);
+std::string valueOf(const ir::Type& t, const std::string& v);
 
 // How an expression reaches what it reads; set per context.
 struct ExprContext {

@@ -351,12 +351,6 @@ private:
         return out + "    }\n\n";
     }
 
-    // A style value as a Value's initialiser, and as a Value.
-    static std::string styleInit(const ir::Type& t, const std::string& v) {
-        if (t.kind == ir::TypeKind::Enum) return "{EnumVal{" + str(t.enumId) + ", " + v + "}}";
-        return "{" + v + "}";
-    }
-    static std::string styleValue(const ir::Type& t, const std::string& v) { return "Value" + styleInit(t, v); }
     // What a commit writes for attribute assignment `a` (the `index`th of
     // an element whose kept values are named `prefix`_i): a literal as it
     // is, anything else as prepare kept it.
@@ -367,8 +361,8 @@ private:
     // What a commit passes for style assignment `s` whose value, unless it
     // is a literal (a shared constant), prepare kept as `kept`.
     std::string styleArg(const ir::StyleAssign& s, const std::string& kept) {
-        if (s.value.op == ir::ExprOp::Literal) return constants_.add(styleInit(s.value.type, cppLiteral(s.value.value, s.value.type)));
-        return styleValue(s.value.type, kept);
+        if (s.value.op == ir::ExprOp::Literal) return constants_.add(valueInit(s.value.type, cppLiteral(s.value.value, s.value.type)));
+        return valueOf(s.value.type, kept);
     }
 
     std::string prepare(int di) {

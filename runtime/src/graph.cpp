@@ -65,7 +65,7 @@ std::uint32_t Graph::newAttrBlock(int kind, std::vector<Value>* attrs) {
 
 void Graph::clearAttrBlock(int kind, std::uint32_t slot) {
     // Ids are never reused, so neither are blocks; only free what values own.
-    if (slot == kNoId || defaults_[kind].empty()) return;
+    if (slot == kNoId || !pooled(kind)) return;
     for (std::size_t i = 0; i < defaults_[kind].size(); ++i) pool_[kind][attrIndex(kind, slot, static_cast<int>(i))] = Value{};
 }
 

@@ -1,6 +1,7 @@
 #include "g2d/style_store.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace g2d::rt {
 
@@ -10,14 +11,20 @@ std::size_t StyleList::size() const {
     return n;
 }
 
+namespace {
+[[noreturn]] void tooMany() {
+    throw std::length_error("more than " + std::to_string(kMaxStyleProps) + " style properties");
+}
+}  // namespace
+
 StyleStore::StyleStore(std::vector<std::string> props) : names_(std::move(props)) {
-    if (names_.size() > kMaxStyleProps) throw std::length_error("more than 65535 style properties");
+    if (names_.size() > kMaxStyleProps) tooMany();
 }
 
 StyleProp StyleStore::prop(std::string_view name) {
     for (std::size_t i = 0; i < names_.size(); ++i)
         if (names_[i] == name) return static_cast<StyleProp>(i);
-    if (names_.size() >= kMaxStyleProps) throw std::length_error("more than 65535 style properties");
+    if (names_.size() >= kMaxStyleProps) tooMany();
     names_.emplace_back(name);
     return static_cast<StyleProp>(names_.size() - 1);
 }
