@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "g2d/prefetch.hpp"
+
 namespace g2d::rt {
 
 IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(rules) {
@@ -97,7 +99,7 @@ void IncrementalMatches::prefetchMatch(const Graph& g, Match m, int nodes, int e
     for (int i = 0; i < nodes; ++i) {
         const NodeId n = m.nodes[i];
         g.prefetchNode(n);
-        if (n < seen_.size()) __builtin_prefetch(&seen_[n]);
+        if (n < seen_.size()) prefetchLine(&seen_[n]);
         for (std::size_t r = 0; r < sets_.size() && r < 4; ++r)
             if (!retired_[r]) sets_[r].prefetchHeads(n);
     }

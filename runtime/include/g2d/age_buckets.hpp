@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "g2d/grow_array.hpp"
+#include "g2d/prefetch.hpp"
 
 namespace g2d::rt {
 
@@ -35,7 +36,7 @@ public:
     // Looks only at the lowest page, from where lowest() last found the
     // lowest key (a guess, if keys were added below it since).
     std::size_t peekLowest(std::uint32_t* groups, std::size_t count) const;
-    void prefetchGroup(std::uint32_t group) const { __builtin_prefetch(&groups_[group]); }
+    void prefetchGroup(std::uint32_t group) const { prefetchLine(&groups_[group]); }
     std::span<const std::uint32_t> groupIds(std::uint32_t group) const {
         return {idsOf(groups_[group]), groups_[group].size};
     }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "g2d/grow_array.hpp"
+#include "g2d/prefetch.hpp"
 #include "g2d/style_store.hpp"
 #include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"
@@ -124,8 +125,8 @@ public:
     bool nodeAlive(NodeId n) const { return n < nodes_.size() && nodes_[n].alive; }
     // Asks the processor to load an element's record now, so that the loads
     // of a match's scattered records overlap instead of waiting in turn.
-    void prefetchNode(NodeId n) const { __builtin_prefetch(&nodes_[n]); }
-    void prefetchEdge(EdgeId e) const { __builtin_prefetch(&edges_[e]); }
+    void prefetchNode(NodeId n) const { prefetchLine(&nodes_[n]); }
+    void prefetchEdge(EdgeId e) const { prefetchLine(&edges_[e]); }
     bool edgeAlive(EdgeId e) const { return e < edges_.size() && edges_[e].alive; }
     std::size_t nodeCount() const { return liveNodes_; }
     std::size_t edgeCount() const { return liveEdges_; }

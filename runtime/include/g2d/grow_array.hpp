@@ -17,6 +17,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "g2d/prefetch.hpp"
+
 namespace g2d::rt {
 
 namespace grow_detail {
@@ -92,7 +94,7 @@ public:
     const T& back() const { return data_[size_ - 1]; }
 
     void push_back(const T& value) {
-        __builtin_prefetch(data_ + size_ + kWriteAhead, 1, 3);
+        prefetchLineForWrite(data_ + size_ + kWriteAhead);
         if (size_ == capacity_) {
             const T copy = value;   // `value` may live in this array
             reserve(size_ + 1);
@@ -104,7 +106,7 @@ public:
     }
     template <class... Args>
     T& emplace_back(Args&&... args) {
-        __builtin_prefetch(data_ + size_ + kWriteAhead, 1, 3);
+        prefetchLineForWrite(data_ + size_ + kWriteAhead);
         if (size_ == capacity_) {
             const T made{std::forward<Args>(args)...};   // the arguments may live in this array
             reserve(size_ + 1);
@@ -125,7 +127,7 @@ public:
     // Appends `n` elements left unset, for the caller to write at once
     // (no fill that would only be overwritten); returns the first.
     T* extendUnset(std::size_t n) {
-        __builtin_prefetch(data_ + size_ + kWriteAhead, 1, 3);
+        prefetchLineForWrite(data_ + size_ + kWriteAhead);
         reserve(size_ + n);
         T* first = data_ + size_;
         size_ += n;

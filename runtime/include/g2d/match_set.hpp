@@ -17,6 +17,7 @@
 #include "g2d/age_buckets.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/grow_array.hpp"
+#include "g2d/prefetch.hpp"
 #include "g2d/rng.hpp"
 
 namespace g2d::rt {
@@ -100,7 +101,7 @@ public:
     }
     // Asks for node `n`'s list heads ahead of a repair (IncrementalMatches::prefetch).
     void prefetchHeads(NodeId n) const {
-        if (2 * std::size_t{n} < heads_.size()) __builtin_prefetch(&heads_[2 * std::size_t{n}]);
+        if (2 * std::size_t{n} < heads_.size()) prefetchLine(&heads_[2 * std::size_t{n}]);
     }
     // Whether pattern node `node` reads its host's edges (any, or all).
     bool readsIncidence(int node) const { return reads_[static_cast<std::size_t>(node)] != 0; }
@@ -123,7 +124,7 @@ public:
     // For prefetching a likely later pick (PickLookahead): asks for the
     // cache line holding the set's i-th match id, or that match's record.
     void prefetchPosition(std::size_t i) const {
-        if (i < live_.size()) __builtin_prefetch(&live_[i]);
+        if (i < live_.size()) prefetchLine(&live_[i]);
     }
     void prefetchRecordAt(std::size_t i) const {
         if (i < live_.size()) prefetchRecord(live_[i]);
@@ -132,8 +133,8 @@ public:
     // and the matches in them, by their ids.
     const AgeBuckets& ageGroups() const { return ageBuckets_; }
     void prefetchRecord(std::uint32_t id) const {
-        __builtin_prefetch(data(id));
-        __builtin_prefetch(data(id) + stride_ - 1);   // a record may span two lines
+        prefetchLine(data(id));
+        prefetchLine(data(id) + stride_ - 1);   // a record may span two lines
     }
     Match matchOf(std::uint32_t id) const { return view(id); }
     std::uint32_t idOf(Match m) const { return static_cast<std::uint32_t>((m.nodes - rec_.data()) / static_cast<std::ptrdiff_t>(stride_)); }
