@@ -362,7 +362,29 @@ private:
             }
         out += "            default: break;\n            }\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
         out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";
+        out += emitPrefetchData(perRule);
         return out;
+    }
+
+    // The attribute records of a likely later pick's elements (the pick
+    // lookahead asks once their graph records, which hold their slots, are
+    // cached): a rewrite reads or writes them first thing.
+    template <class PerRule>
+    std::string emitPrefetchData(const PerRule& perRule) {
+        std::string out = "    void prefetchData(std::size_t rule, Match m, const Graph& g) const override {\n";
+        out += perRule("        ", [&](std::size_t r) {
+            std::string t;
+            const auto& rule = prog_.rules[r];
+            auto ask = [&](int kind, const char* slot, const char* ids, std::size_t i) {
+                if (kind < 0 || prog_.kinds[static_cast<std::size_t>(kind)].attrs.empty()) return;
+                t += "            store_" + str(static_cast<long long>(kind)) + ".prefetch(g." + slot + "(m." + ids + "[" +
+                     str(static_cast<long long>(i)) + "]));\n";
+            };
+            for (std::size_t i = 0; i < rule.nodes.size(); ++i) ask(rule.nodes[i].kind, "nodeSlot", "nodes", i);
+            for (std::size_t i = 0; i < rule.edges.size(); ++i) ask(rule.edges[i].kind, "edgeSlot", "edges", i);
+            return t;
+        });
+        return out + "        (void)m; (void)g;\n    }\n\n";
     }
 
     std::string emitAttribute() {

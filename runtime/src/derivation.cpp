@@ -198,7 +198,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                         if (!lookahead.guessed(m)) sets.prefetch(g, m, set.nodes(), set.edges());
                         const std::size_t d = pickDaughter(info.weights, rng);
-                        lookahead.ahead(r, info, set, m, rng, sets, g);
+                        lookahead.ahead(r, info, set, m, rng, sets, rules, g);
                         if (tracer) tracer->applying(r, d, m, g);
                         rules.prepare(r, d, m, g, rng, step);
                         rules.commit(g, step);

@@ -14,17 +14,17 @@ bool PickLookahead::guessed(Match picked) {
 }
 
 void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
-                          const IncrementalMatches& sets, const Graph& g) {
+                          const IncrementalMatches& sets, const RuleSet& rules, const Graph& g) {
     // A small set's records stay cached anyway: guessing would only cost.
     if (set.size() < kMinMatches) return;
     if (info.pick == Pick::Oldest) {
-        aheadOldest(info, set, picked, rng, sets, g);
+        aheadOldest(rule, info, set, picked, rng, sets, rules, g);
         return;
     }
     // The size the set has at the next picks depends on what those steps
     // add and remove. Most grammars alternate between a few growths (Koch's
     // split adds three matches, or at the last level removes one), so the
-    // guesses take the last two distinct growths seen, in every order.
+    // guesses take the last two distinct growths seen, in every mix.
     const auto size = static_cast<long long>(set.size());
     if (rule == rule_) {
         const long long growth = size - static_cast<long long>(lastSize_);
@@ -37,8 +37,8 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
     }
     rule_ = rule;
     lastSize_ = set.size();
-    // The raw draws of the next three picks, if they pick from this rule
-    // again and nothing else draws (derivation.hpp lists a step's draws).
+    // The raw draws of the next picks, if they pick from this rule again
+    // and nothing else draws (derivation.hpp lists a step's draws).
     Rng future = rng;
     std::uint64_t raw[kAhead];
     for (auto& r : raw) {
@@ -46,29 +46,33 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
         if (info.weights.size() > 1) future.unit();
     }
     const long long a = growth_[0], b = growth_[1];
-    auto position = [&](int ahead, long long sizeThen) -> std::size_t {
+    // The place of the pick `ahead` steps on, had `withB` of the steps
+    // between grown by b and the others by a.
+    auto position = [&](int ahead, int withB) -> std::size_t {
+        const long long sizeThen = size + (ahead - withB) * a + withB * b;
         if (sizeThen <= 1) return 0;
         return static_cast<std::size_t>(Rng::belowFrom(raw[ahead - 1], static_cast<std::uint64_t>(sizeThen)));
     };
-    // Three steps ahead: the slots between the smallest and largest guess.
-    set.prefetchPosition(position(3, size + 3 * std::min(a, b)));
-    set.prefetchPosition(position(3, size + 3 * std::max(a, b)));
-    // Two ahead: the records.
-    set.prefetchRecordAt(position(2, size + 2 * a));
-    if (b != a) {
-        set.prefetchRecordAt(position(2, size + a + b));
-        set.prefetchRecordAt(position(2, size + 2 * b));
-    }
-    // One ahead: the elements, of the likelier guess only (the last
-    // growth): asking for both was slower at Koch level 10 (1.04 s against
-    // 0.90 s, fastest of 5), as if the prefetches then queued behind each
-    // other. Both records were asked for a step ago.
-    for (int i = 0; i < (b != a ? 2 : 1); ++i) {
-        const std::size_t at = position(1, size + growth_[i]);
+    const int mixes = b != a ? 1 : 0;   // 0: one growth, one guess per step
+    // Four ahead: the slots.
+    for (int k = 0; k <= 4 * mixes; ++k) set.prefetchPosition(position(4, k));
+    // Three ahead: the records (their slots were asked for a step ago).
+    for (int k = 0; k <= 3 * mixes; ++k) set.prefetchRecordAt(position(3, k));
+    // Two ahead: the elements (the record was asked for a step ago), for
+    // every guess: for the likeliest only, a third of Koch level 10's
+    // rewrites (random picks) still waited for their attribute record, and
+    // 40 % of the reads of the next pick's edge here missed the caches
+    // (timed by rdtscp); for every guess, 5 % and 10 %.
+    for (int k = 0; k <= 2 * mixes; ++k)
+        if (const std::size_t at = position(2, k); at < set.size()) sets.prefetch(g, set.at(at), set.nodes(), set.edges());
+    // One ahead: what the rewrite reads beyond the elements (asked for a
+    // step ago).
+    for (int k = 0; k <= mixes; ++k) {
+        const std::size_t at = position(1, k);
         if (at >= set.size()) continue;
         const Match next = set.at(at);
-        if (i == 0) sets.prefetch(g, next, set.nodes(), set.edges());
-        guessed_[i] = next.nodes;
+        if (g.nodeCapacity() >= IncrementalMatches::kPrefetchMinNodes) rules.prefetchData(rule, next, g);
+        guessed_[k] = next.nodes;
     }
 }
 
@@ -77,8 +81,8 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
 // new matches are younger. So the picks ahead come from the lowest groups
 // in turn, starting with the one holding this step's pick, less that pick.
 // A group's header is read only once an earlier step asked for it.
-void PickLookahead::aheadOldest(const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
-                                const IncrementalMatches& sets, const Graph& g) {
+void PickLookahead::aheadOldest(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
+                                const IncrementalMatches& sets, const RuleSet& rules, const Graph& g) {
     const AgeBuckets& ages = set.ageGroups();
     std::uint32_t groups[kAhead + 1];
     const std::size_t count = ages.peekLowest(groups, kAhead + 1);
@@ -117,10 +121,12 @@ void PickLookahead::aheadOldest(const RuleInfo& info, const MatchSet& set, Match
         const std::size_t at = left > 1 ? static_cast<std::size_t>(future.below(left)) : 0;
         if (info.weights.size() > 1) future.unit();
         const std::uint32_t id = take(at);
-        if (j == 1) {
+        if (j == 1) {   // its elements were asked for a step ago
             const Match next = set.matchOf(id);
-            sets.prefetch(g, next, set.nodes(), set.edges());
+            if (g.nodeCapacity() >= IncrementalMatches::kPrefetchMinNodes) rules.prefetchData(rule, next, g);
             guessed_[0] = next.nodes;
+        } else if (j == 2) {   // its record was asked for a step ago
+            sets.prefetch(g, set.matchOf(id), set.nodes(), set.edges());
         } else {
             set.prefetchRecord(id);
         }

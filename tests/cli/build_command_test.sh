@@ -79,4 +79,12 @@ expect_code 0 "$g2d" run lit.g2d --steps 3 -o li.svg --json li.json
 cmp -s lc.svg li.svg && cmp -s lc.json li.json || fail "literal styles: compiled and interpreted outputs differ"
 grep -q 'stroke-width="0.5"' lc.svg || fail "the edge's literal stroke width is missing: $(cat lc.svg)"
 
+# The pick lookahead asks for a likely next rewrite's attribute records: the
+# generated grammar names, per rule, those of its matched elements (Koch's
+# split reads its edge's `lod`; its nodes have no attributes).
+expect_code 0 "$g2d" emit-cpp "$koch" -o koch.cpp
+grep -A4 'void prefetchData(std::size_t rule, Match m, const Graph& g) const override' koch.cpp \
+  | grep -q '^ *store_[0-9]*\.prefetch(g\.edgeSlot(m\.edges\[0\]));$' || fail "no attribute prefetch for Koch's edge: $(grep -n -A6 'prefetchData' koch.cpp)"
+grep -q 'prefetch(g\.nodeSlot' koch.cpp && fail "a prefetch for a node kind without attributes"
+
 finish

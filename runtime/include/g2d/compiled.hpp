@@ -20,6 +20,7 @@
 #include "g2d/json_writer.hpp"
 #include "g2d/ops.hpp"
 #include "g2d/placement.hpp"
+#include "g2d/prefetch.hpp"
 #include "g2d/rng.hpp"
 #include "g2d/run_driver.hpp"
 #include "g2d/svg_writer.hpp"
@@ -79,6 +80,9 @@ public:
     }
     T& operator[](std::uint32_t slot) { return items_[slot]; }
     const T& operator[](std::uint32_t slot) const { return items_[slot]; }
+    void prefetch(std::uint32_t slot) const {
+        if (slot < items_.size()) prefetchLine(&items_[slot]);
+    }
     void clear() { items_.clear(); }
 
 private:

@@ -147,6 +147,13 @@ public:
                          long long step) = 0;
     // Applies every prepared application, in order, and forgets them.
     virtual void commit(Graph& g, long long step) = 0;
+    // Asks for the cache lines a rewrite of `m` reads beyond the graph's
+    // records (generated code: the matched elements' attribute records), for
+    // a likely later pick (PickLookahead). Reads the elements' records, which
+    // should be cached by then. Nothing by default.
+    virtual void prefetchData(std::size_t rule, Match m, const Graph& g) const {
+        (void)rule, (void)m, (void)g;
+    }
 };
 
 // A runaway guard: a derivation stops with an error past this many nodes +

@@ -9,10 +9,12 @@
 // between: the generator's next outputs are fixed, and the set's size
 // changes by one of a few amounts a step (random picks: the guesses take
 // the last two distinct growths); oldest picks come from the lowest age
-// groups in turn. So each step, for the picks one, two and three steps
-// ahead, this asks for the set's slot (three ahead), the match's record (two
-// ahead: its slot is cached by now) and the match's elements (one ahead:
-// its record is cached by now), while the current step runs.
+// groups in turn. So each step, for the picks one to four steps ahead, this
+// asks for the set's slot (four ahead), the match's record (three ahead: its
+// slot is cached by now), the match's elements (two ahead: its record is
+// cached by now) and the data its rewrite reads beyond them (one ahead, from
+// the rule set: a compiled grammar's attribute records, whose places the
+// elements' records hold), while the current step runs.
 //
 // Only a copy of the generator is advanced, so a wrong guess (another rule
 // applies, a daughter draws numbers, the size changes otherwise) costs a
@@ -33,7 +35,7 @@ public:
     // Called once a step has drawn `picked` (and its daughter) from `rule`'s
     // `set`, before the step is applied; `rng` is the generator then.
     void ahead(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
-               const IncrementalMatches& sets, const Graph& g);
+               const IncrementalMatches& sets, const RuleSet& rules, const Graph& g);
     // How often a step's pick had been guessed one step ahead, and how
     // often a guess was the record then drawn (for --stats and tests).
     long long guesses() const { return guesses_; }
@@ -46,9 +48,9 @@ public:
     static constexpr std::size_t kMinMatches = 32768;
 
 private:
-    static constexpr int kAhead = 3;   // steps
-    void aheadOldest(const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
-                     const IncrementalMatches& sets, const Graph& g);
+    static constexpr int kAhead = 4;   // steps
+    void aheadOldest(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
+                     const IncrementalMatches& sets, const RuleSet& rules, const Graph& g);
     static constexpr std::size_t kNone = ~std::size_t{0};
     std::size_t rule_ = kNone;      // the rule the last step picked from
     std::size_t lastSize_ = 0;      // its set's size then
