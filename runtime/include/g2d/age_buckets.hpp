@@ -36,7 +36,11 @@ public:
     // Looks only at the lowest page, from where lowest() last found the
     // lowest key (a guess, if keys were added below it since).
     std::size_t peekLowest(std::uint32_t* groups, std::size_t count) const;
-    void prefetchGroup(std::uint32_t group) const { prefetchLine(&groups_[group]); }
+    void prefetchGroup(std::uint32_t group) const { prefetchRecordLines(&groups_[group], sizeof(Group)); }
+    // Where erase() finds `id` (for an id a later step will pick).
+    void prefetchPlace(std::uint32_t id) const {
+        if (id < placeOf_.size()) prefetchLine(&placeOf_[id]);
+    }
     std::span<const std::uint32_t> groupIds(std::uint32_t group) const {
         return {idsOf(groups_[group]), groups_[group].size};
     }

@@ -81,7 +81,7 @@ public:
     T& operator[](std::uint32_t slot) { return items_[slot]; }
     const T& operator[](std::uint32_t slot) const { return items_[slot]; }
     void prefetch(std::uint32_t slot) const {
-        if (slot < items_.size()) prefetchLine(&items_[slot]);
+        if (slot < items_.size()) prefetchRecordLines(&items_[slot], sizeof(T));
     }
     void clear() { items_.clear(); }
 

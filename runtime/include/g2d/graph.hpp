@@ -125,8 +125,9 @@ public:
     bool nodeAlive(NodeId n) const { return n < nodes_.size() && nodes_[n].alive; }
     // Asks the processor to load an element's record now, so that the loads
     // of a match's scattered records overlap instead of waiting in turn.
-    void prefetchNode(NodeId n) const { prefetchLine(&nodes_[n]); }
-    void prefetchEdge(EdgeId e) const { prefetchLine(&edges_[e]); }
+    // (Half the records straddle two cache lines: 48 and 40 bytes.)
+    void prefetchNode(NodeId n) const { prefetchRecordLines(&nodes_[n], sizeof(NodeRec)); }
+    void prefetchEdge(EdgeId e) const { prefetchRecordLines(&edges_[e], sizeof(EdgeRec)); }
     bool edgeAlive(EdgeId e) const { return e < edges_.size() && edges_[e].alive; }
     std::size_t nodeCount() const { return liveNodes_; }
     std::size_t edgeCount() const { return liveEdges_; }

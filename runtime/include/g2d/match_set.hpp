@@ -133,8 +133,7 @@ public:
     // and the matches in them, by their ids.
     const AgeBuckets& ageGroups() const { return ageBuckets_; }
     void prefetchRecord(std::uint32_t id) const {
-        prefetchLine(data(id));
-        prefetchLine(data(id) + stride_ - 1);   // a record may span two lines
+        prefetchRecordLines(data(id), std::size_t{stride_} * sizeof(std::uint32_t));
     }
     Match matchOf(std::uint32_t id) const { return view(id); }
     std::uint32_t idOf(Match m) const { return static_cast<std::uint32_t>((m.nodes - rec_.data()) / static_cast<std::ptrdiff_t>(stride_)); }
