@@ -4,6 +4,14 @@
 
 namespace g2d::rt {
 
+namespace {
+// What the rewrite of a likely next pick reads beyond its elements, in the
+// graphs where IncrementalMatches::prefetch asks for the elements too.
+void askData(const RuleSet& rules, std::size_t rule, Match next, const Graph& g) {
+    if (g.nodeCapacity() >= IncrementalMatches::kPrefetchMinNodes) rules.prefetchData(rule, next, g);
+}
+}  // namespace
+
 bool PickLookahead::guessed(Match picked) {
     if (!guessed_[0] && !guessed_[1]) return false;
     ++guesses_;
@@ -71,7 +79,7 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
         const std::size_t at = position(1, k);
         if (at >= set.size()) continue;
         const Match next = set.at(at);
-        if (g.nodeCapacity() >= IncrementalMatches::kPrefetchMinNodes) rules.prefetchData(rule, next, g);
+        askData(rules, rule, next, g);
         guessed_[k] = next.nodes;
     }
 }
@@ -123,7 +131,7 @@ void PickLookahead::aheadOldest(std::size_t rule, const RuleInfo& info, const Ma
         const std::uint32_t id = take(at);
         if (j == 1) {   // its elements were asked for a step ago
             const Match next = set.matchOf(id);
-            if (g.nodeCapacity() >= IncrementalMatches::kPrefetchMinNodes) rules.prefetchData(rule, next, g);
+            askData(rules, rule, next, g);
             guessed_[0] = next.nodes;
         } else if (j == 2) {   // its record was asked for a step ago
             sets.prefetch(g, set.matchOf(id), set.nodes(), set.edges());
