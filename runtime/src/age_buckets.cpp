@@ -15,14 +15,13 @@ AgeBuckets::Page& AgeBuckets::pageFor(std::size_t pageNo) {
     }
     auto& page = pages_[pageNo];
     if (!page) {
-        if (!spare_.empty()) {
+        if (!spare_.empty()) {   // emptied: every size and bit is 0 again
             page = std::move(spare_.back());
             spare_.pop_back();
+            page->lowWord = kPageWords;
         } else {
             page = std::make_unique<Page>();
         }
-        std::fill(std::begin(page->occupied), std::end(page->occupied), 0);
-        page->keys = 0;
         if (!queued_[pageNo]) {
             queued_[pageNo] = true;
             pageHeap_.push_back(pageNo);
@@ -38,70 +37,67 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
     const auto pageNo = static_cast<std::size_t>(k >> kPageBits);
     // Most keys land on a page in use (keys of nearby steps are close).
     Page& page = pageNo < pages_.size() && pages_[pageNo] ? *pages_[pageNo] : pageFor(pageNo);
-    const std::size_t slot = k & (kPageKeys - 1);
-    std::uint64_t& word = page.occupied[slot / 64];
-    const std::uint64_t bit = std::uint64_t{1} << (slot % 64);
-    std::uint32_t g;
-    if (word & bit) {
-        g = page.groupOf[slot];
-    } else {
-        if (!freeGroups_.empty()) {
-            g = freeGroups_.back();
-            freeGroups_.pop_back();
-        } else {
-            g = static_cast<std::uint32_t>(groups_.size());
-            groups_.emplace_back();
-        }
-        groups_[g].key = key;
-        page.groupOf[slot] = g;
-        word |= bit;
+    const std::size_t at = k & (kPageKeys - 1);
+    Slot& slot = page.slots[at];
+    if (slot.size == 0) {   // a new key
+        const std::size_t word = at / 64;
+        page.occupied[word] |= std::uint64_t{1} << (at % 64);
+        page.lowWord = std::min(page.lowWord, static_cast<std::uint32_t>(word));
         ++page.keys;
     }
     if (id >= placeOf_.size()) placeOf_.resize(std::max<std::size_t>(id + 1, placeOf_.size() * 2));
-    Group& group = groups_[g];
-    placeOf_[id] = Place{g, group.size};
-    if (group.spill != kNone) {
-        spills_[group.spill].push_back(id);
-    } else if (group.size < 2) {
-        group.inl[group.size] = id;
-    } else {  // a third id: move to a spill list
-        if (freeSpills_.empty()) {
-            freeSpills_.push_back(static_cast<std::uint32_t>(spills_.size()));
-            spills_.emplace_back();
-        }
-        group.spill = freeSpills_.back();
-        freeSpills_.pop_back();
-        auto& list = spills_[group.spill];
-        list.assign(group.inl, group.inl + 2);
-        list.push_back(id);
+    const std::uint32_t size = slot.size & kSizeMask;
+    placeOf_[id] = Place{k, size};
+    if (slot.size & kSpilled) {
+        spills_[slot.ids[0]].push_back(id);
+        ++slot.size;
+    } else if (size < kInline) {
+        slot.ids[size] = id;
+        ++slot.size;
+    } else {
+        spill(slot, id);
     }
-    ++group.size;
     ++count_;
+}
+
+// A fourth id: the group's ids move to a pooled list, in their order.
+void AgeBuckets::spill(Slot& slot, std::uint32_t id) {
+    if (freeSpills_.empty()) {
+        freeSpills_.push_back(static_cast<std::uint32_t>(spills_.size()));
+        spills_.emplace_back();
+    }
+    const std::uint32_t list = freeSpills_.back();
+    freeSpills_.pop_back();
+    auto& ids = spills_[list];
+    ids.assign(slot.ids, slot.ids + kInline);
+    ids.push_back(id);
+    slot.ids[0] = list;
+    slot.size = (kInline + 1) | kSpilled;
 }
 
 void AgeBuckets::erase(std::uint32_t id) {
     const Place place = placeOf_[id];
-    Group& group = groups_[place.group];
-    std::uint32_t* ids = idsOf(group);
-    const std::uint32_t moved = ids[group.size - 1];
+    Page& page = *pages_[place.key >> kPageBits];
+    Slot& slot = page.slots[place.key & (kPageKeys - 1)];
+    std::uint32_t* ids = idsOf(slot);
+    const std::uint32_t last = (slot.size & kSizeMask) - 1;
+    const std::uint32_t moved = ids[last];
     ids[place.pos] = moved;
     placeOf_[moved].pos = place.pos;
-    if (group.spill != kNone) spills_[group.spill].pop_back();
-    if (--group.size == 0) {
-        if (group.spill != kNone) freeSpills_.push_back(group.spill);
-        group.spill = kNone;
-        releaseGroup(place.group);
+    if (slot.size & kSpilled) {
+        spills_[slot.ids[0]].pop_back();
+        if (last == 0) freeSpills_.push_back(slot.ids[0]);
     }
+    slot.size = last == 0 ? 0 : slot.size - 1;
+    if (last == 0) release(place.key);
     --count_;
 }
 
-void AgeBuckets::releaseGroup(std::uint32_t group) {
-    const auto k = static_cast<std::uint64_t>(groups_[group].key);
-    const std::size_t pageNo = static_cast<std::size_t>(k >> kPageBits);
+void AgeBuckets::release(std::uint64_t key) {
+    const std::size_t pageNo = static_cast<std::size_t>(key >> kPageBits);
     Page& page = *pages_[pageNo];
-    const std::size_t slot = k & (kPageKeys - 1);
-    page.occupied[slot / 64] &= ~(std::uint64_t{1} << (slot % 64));
-    freeGroups_.push_back(group);
+    const std::size_t at = key & (kPageKeys - 1);
+    page.occupied[at / 64] &= ~(std::uint64_t{1} << (at % 64));
     if (--page.keys == 0) spare_.push_back(std::move(pages_[pageNo]));  // its heap entry goes lazily
 }
 
@@ -111,22 +107,22 @@ std::span<const std::uint32_t> AgeBuckets::lowest() {
         std::pop_heap(pageHeap_.begin(), pageHeap_.end(), std::greater<>());
         pageHeap_.pop_back();
     }
-    const Page& page = *pages_[pageHeap_.front()];
-    std::size_t w = 0;
+    Page& page = *pages_[pageHeap_.front()];
+    std::uint32_t w = page.lowWord;
     while (page.occupied[w] == 0) ++w;
-    lowestWord_ = w;
-    const std::size_t slot = w * 64 + static_cast<std::size_t>(std::countr_zero(page.occupied[w]));
-    Group& group = groups_[page.groupOf[slot]];
-    return {idsOf(group), group.size};
+    page.lowWord = w;
+    const Slot& slot = page.slots[w * 64 + static_cast<std::size_t>(std::countr_zero(page.occupied[w]))];
+    return {idsOf(slot), slot.size & kSizeMask};
 }
 
-std::size_t AgeBuckets::peekLowest(std::uint32_t* groups, std::size_t count) const {
+std::size_t AgeBuckets::peekLowest(std::uint64_t* keys, std::size_t count) const {
     if (pageHeap_.empty() || !pages_[pageHeap_.front()]) return 0;
-    const Page& page = *pages_[pageHeap_.front()];
+    const std::uint64_t pageNo = pageHeap_.front();
+    const Page& page = *pages_[pageNo];
     std::size_t found = 0;
-    for (std::size_t w = lowestWord_; w < kPageWords && found < count; ++w)
+    for (std::size_t w = page.lowWord; w < kPageWords && found < count; ++w)
         for (std::uint64_t bits = page.occupied[w]; bits != 0 && found < count; bits &= bits - 1)
-            groups[found++] = page.groupOf[w * 64 + static_cast<std::size_t>(std::countr_zero(bits))];
+            keys[found++] = (pageNo << kPageBits) + w * 64 + static_cast<std::uint64_t>(std::countr_zero(bits));
     return found;
 }
 
@@ -134,8 +130,7 @@ void AgeBuckets::clear() { *this = AgeBuckets(); }
 
 std::size_t AgeBuckets::memoryBytes() const {
     std::size_t bytes = pages_.capacity() * sizeof(void*) + spare_.capacity() * sizeof(void*) + pageHeap_.capacity() * 8 +
-                        queued_.capacity() / 8 + groups_.capacity() * sizeof(Group) + freeGroups_.capacity() * 4 +
-                        placeOf_.capacity() * sizeof(Place);
+                        queued_.capacity() / 8 + placeOf_.capacity() * sizeof(Place);
     for (const auto& p : pages_)
         if (p) bytes += sizeof(Page);
     bytes += spare_.size() * sizeof(Page);

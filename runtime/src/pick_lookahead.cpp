@@ -92,7 +92,7 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
 void PickLookahead::aheadOldest(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
                                 const IncrementalMatches& sets, const RuleSet& rules, const Graph& g) {
     const AgeBuckets& ages = set.ageGroups();
-    std::uint32_t groups[kAhead + 1];
+    std::uint64_t groups[kAhead + 1];   // their keys
     const std::size_t count = ages.peekLowest(groups, kAhead + 1);
     if (count == 0) return;
     for (std::size_t i = 1; i < count; ++i) ages.prefetchGroup(groups[i]);

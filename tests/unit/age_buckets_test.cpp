@@ -73,6 +73,18 @@ void exercise(std::uint64_t seed, long long keySpread, int operations) {
         if (!model.groups.empty()) {
             const auto low = buckets.lowest();
             REQUIRE(std::vector<std::uint32_t>(low.begin(), low.end()) == model.groups.begin()->second);
+            // The lookahead's view: the lowest keys of the lowest page, in order.
+            std::uint64_t keys[4];
+            const std::size_t found = buckets.peekLowest(keys, 4);
+            REQUIRE(found >= 1);
+            auto group = model.groups.begin();
+            for (std::size_t i = 0; i < found; ++i, ++group) {
+                REQUIRE(keys[i] == static_cast<std::uint64_t>(group->first));
+                const auto ids = buckets.groupIds(keys[i]);
+                REQUIRE(std::vector<std::uint32_t>(ids.begin(), ids.end()) == group->second);
+            }
+            // Fewer than asked only when the next key is on another page (1024 keys each).
+            if (found < 4 && group != model.groups.end()) REQUIRE(group->first / 1024 != model.groups.begin()->first / 1024);
         }
     }
 }

@@ -1,12 +1,13 @@
 #pragma once
 // Ids grouped by a non-negative integer key (a match's sum of creation
 // steps), giving the group with the lowest key. Keys of matches made in
-// nearby steps are close together, so the key space is paged: a page maps
-// 1024 consecutive keys to their groups directly and marks the occupied ones
-// in a bitmap; a small min-heap orders the pages in use. Insert and erase are
-// O(1) (no hashing, no probing); finding the lowest key is O(1) plus
+// nearby steps are close together, so the key space is paged: a page holds
+// the groups of 1024 consecutive keys in place (a 16-byte slot per key, with
+// up to three ids inline) and marks the occupied ones in a bitmap; a small
+// min-heap orders the pages in use. Insert and erase are O(1) (no hashing,
+// no probing) and read one slot; finding the lowest key is O(1) plus
 // O(log pages) when a page empties. Nothing is allocated per id once warm:
-// emptied groups, their spilled id lists and pages are kept for reuse.
+// spilled id lists and emptied pages are kept for reuse.
 //
 // The order of the ids inside a group depends only on the sequence of
 // inserts and erases of that key (appended; an erased id's place is taken by
@@ -31,58 +32,60 @@ public:
     void clear();
     std::size_t memoryBytes() const;
 
-    // For prefetching (PickLookahead): up to `count` groups with the lowest
-    // keys, lowest first, as handles for the calls below; returns how many.
-    // Looks only at the lowest page, from where lowest() last found the
-    // lowest key (a guess, if keys were added below it since).
-    std::size_t peekLowest(std::uint32_t* groups, std::size_t count) const;
-    void prefetchGroup(std::uint32_t group) const { prefetchRecordLines(&groups_[group], sizeof(Group)); }
+    // For prefetching (PickLookahead): up to `count` occupied keys, lowest
+    // first, as handles for the calls below; returns how many. Looks only at
+    // the lowest page (none if it has just emptied).
+    std::size_t peekLowest(std::uint64_t* keys, std::size_t count) const;
+    void prefetchGroup(std::uint64_t key) const { prefetchLine(&slotOf(key)); }
     // Where erase() finds `id` (for an id a later step will pick).
     void prefetchPlace(std::uint32_t id) const {
         if (id < placeOf_.size()) prefetchLine(&placeOf_[id]);
     }
-    std::span<const std::uint32_t> groupIds(std::uint32_t group) const {
-        return {idsOf(groups_[group]), groups_[group].size};
+    std::span<const std::uint32_t> groupIds(std::uint64_t key) const {
+        const Slot& slot = slotOf(key);
+        return {idsOf(slot), slot.size & kSizeMask};
     }
 
 private:
     static constexpr int kPageBits = 10;
     static constexpr std::size_t kPageKeys = std::size_t{1} << kPageBits;
     static constexpr std::size_t kPageWords = kPageKeys / 64;
+    // A key's group, in its page: 16 bytes, four to a cache line. Most
+    // matches have a sum of their own or share it with one or two others
+    // (Koch level 10: 94 % of inserts find at most two ids there); a fourth
+    // id moves the group to a pooled list (ids[0] then names it) until the
+    // group empties. An empty slot has size 0.
+    struct alignas(16) Slot {
+        std::uint32_t size = 0;              // ids, plus kSpilled once spilled
+        std::uint32_t ids[3] = {0, 0, 0};
+    };
+    static constexpr std::uint32_t kSpilled = 0x80000000u;
+    static constexpr std::uint32_t kSizeMask = ~kSpilled;
+    static constexpr std::uint32_t kInline = 3;
     struct Page {
-        std::uint32_t groupOf[kPageKeys];    // valid where `occupied` is set
-        std::uint64_t occupied[kPageWords];
+        Slot slots[kPageKeys];
+        std::uint64_t occupied[kPageWords];  // the keys whose slot is not empty
         std::uint32_t keys = 0;              // occupied keys
+        std::uint32_t lowWord = kPageWords;  // no occupied word lies below it
     };
-    // Up to two ids inline (most matches have a sum of their own, or share it
-    // with one other); more spill into a pooled vector, kept for reuse.
-    struct Group {
-        long long key = 0;
-        std::uint32_t size = 0;
-        std::uint32_t spill = kNone;         // index into spills_, or kNone
-        std::uint32_t inl[2] = {0, 0};
-    };
-    static constexpr std::uint32_t kNone = 0xffffffffu;
-    std::uint32_t* idsOf(Group& g) { return g.spill == kNone ? g.inl : spills_[g.spill].data(); }
-    const std::uint32_t* idsOf(const Group& g) const { return g.spill == kNone ? g.inl : spills_[g.spill].data(); }
     struct Place {
-        std::uint32_t group, pos;
+        std::uint64_t key;
+        std::uint32_t pos;
     };
+    std::uint32_t* idsOf(Slot& s) { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
+    const std::uint32_t* idsOf(const Slot& s) const { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
+    const Slot& slotOf(std::uint64_t key) const { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
     Page& pageFor(std::size_t pageNo);
-    void releaseGroup(std::uint32_t group);
+    void spill(Slot& slot, std::uint32_t id);
+    void release(std::uint64_t key);
 
     std::vector<std::unique_ptr<Page>> pages_;   // by key >> kPageBits
-    std::vector<std::unique_ptr<Page>> spare_;
+    std::vector<std::unique_ptr<Page>> spare_;   // emptied pages: every size and bit 0
     std::vector<std::uint64_t> pageHeap_;        // min-heap of page numbers (may hold emptied ones)
     std::vector<bool> queued_;                   // per page number: in pageHeap_
-    GrowArray<Group> groups_;
-    std::vector<std::uint32_t> freeGroups_;
     std::vector<std::vector<std::uint32_t>> spills_;
     std::vector<std::uint32_t> freeSpills_;
-    GrowArray<Place> placeOf_;                   // per id: its group and its place there
-    // The lowest page's first occupied word when lowest() last looked (where
-    // peekLowest starts: ids leave the groups from the lowest key up).
-    std::size_t lowestWord_ = 0;
+    GrowArray<Place> placeOf_;                   // per id: its key and its place in the group
     std::size_t count_ = 0;
 };
 
