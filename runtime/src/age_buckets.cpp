@@ -15,13 +15,17 @@ AgeBuckets::Page& AgeBuckets::pageFor(std::size_t pageNo) {
     }
     auto& page = pages_[pageNo];
     if (!page) {
-        if (!spare_.empty()) {   // emptied: every size and bit is 0 again
+        if (!spare_.empty()) {   // emptied: every bit is 0 again
             page = std::move(spare_.back());
             spare_.pop_back();
-            page->lowWord = kPageWords;
         } else {
-            page = std::make_unique<Page>();
+            // Slots are written when their key arrives: not clearing 16 KiB
+            // leaves a small run's untouched slots unfaulted.
+            page.reset(new Page);
+            std::fill(std::begin(page->occupied), std::end(page->occupied), 0);
         }
+        page->keys = 0;
+        page->lowWord = kPageWords;
         if (!queued_[pageNo]) {
             queued_[pageNo] = true;
             pageHeap_.push_back(pageNo);
@@ -39,11 +43,13 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
     Page& page = pageNo < pages_.size() && pages_[pageNo] ? *pages_[pageNo] : pageFor(pageNo);
     const std::size_t at = k & (kPageKeys - 1);
     Slot& slot = page.slots[at];
-    if (slot.size == 0) {   // a new key
-        const std::size_t word = at / 64;
-        page.occupied[word] |= std::uint64_t{1} << (at % 64);
-        page.lowWord = std::min(page.lowWord, static_cast<std::uint32_t>(word));
+    std::uint64_t& word = page.occupied[at / 64];
+    const std::uint64_t bit = std::uint64_t{1} << (at % 64);
+    if ((word & bit) == 0) {   // a new key: its slot holds nothing yet
+        word |= bit;
+        page.lowWord = std::min(page.lowWord, static_cast<std::uint32_t>(at / 64));
         ++page.keys;
+        slot.size = 0;
     }
     if (id >= placeOf_.size()) placeOf_.resize(std::max<std::size_t>(id + 1, placeOf_.size() * 2));
     const std::uint32_t size = slot.size & kSizeMask;
@@ -88,7 +94,7 @@ void AgeBuckets::erase(std::uint32_t id) {
         spills_[slot.ids[0]].pop_back();
         if (last == 0) freeSpills_.push_back(slot.ids[0]);
     }
-    slot.size = last == 0 ? 0 : slot.size - 1;
+    --slot.size;
     if (last == 0) release(place.key);
     --count_;
 }

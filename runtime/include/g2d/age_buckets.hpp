@@ -54,19 +54,19 @@ private:
     // matches have a sum of their own or share it with one or two others
     // (Koch level 10: 94 % of inserts find at most two ids there); a fourth
     // id moves the group to a pooled list (ids[0] then names it) until the
-    // group empties. An empty slot has size 0.
+    // group empties. Only slots whose bit is set in `occupied` hold a group.
     struct alignas(16) Slot {
-        std::uint32_t size = 0;              // ids, plus kSpilled once spilled
-        std::uint32_t ids[3] = {0, 0, 0};
+        std::uint32_t size;                  // ids, plus kSpilled once spilled
+        std::uint32_t ids[3];
     };
     static constexpr std::uint32_t kSpilled = 0x80000000u;
     static constexpr std::uint32_t kSizeMask = ~kSpilled;
     static constexpr std::uint32_t kInline = 3;
     struct Page {
         Slot slots[kPageKeys];
-        std::uint64_t occupied[kPageWords];  // the keys whose slot is not empty
-        std::uint32_t keys = 0;              // occupied keys
-        std::uint32_t lowWord = kPageWords;  // no occupied word lies below it
+        std::uint64_t occupied[kPageWords];  // the keys with a group
+        std::uint32_t keys;                  // occupied keys
+        std::uint32_t lowWord;               // no occupied word lies below it
     };
     struct Place {
         std::uint64_t key;
@@ -80,7 +80,7 @@ private:
     void release(std::uint64_t key);
 
     std::vector<std::unique_ptr<Page>> pages_;   // by key >> kPageBits
-    std::vector<std::unique_ptr<Page>> spare_;   // emptied pages: every size and bit 0
+    std::vector<std::unique_ptr<Page>> spare_;   // emptied pages: every bit 0
     std::vector<std::uint64_t> pageHeap_;        // min-heap of page numbers (may hold emptied ones)
     std::vector<bool> queued_;                   // per page number: in pageHeap_
     std::vector<std::vector<std::uint32_t>> spills_;
