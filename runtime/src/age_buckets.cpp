@@ -83,8 +83,7 @@ void AgeBuckets::spill(Slot& slot, std::uint32_t id) {
 
 void AgeBuckets::erase(std::uint32_t id) {
     const Place place = placeOf_[id];
-    Page& page = *pages_[place.key >> kPageBits];
-    Slot& slot = page.slots[place.key & (kPageKeys - 1)];
+    Slot& slot = slotOf(place.key);
     std::uint32_t* ids = idsOf(slot);
     const std::uint32_t last = (slot.size & kSizeMask) - 1;
     const std::uint32_t moved = ids[last];

@@ -88,7 +88,7 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
 // among them when they tie; a leaver's place goes to the group's last);
 // new matches are younger. So the picks ahead come from the lowest groups
 // in turn, starting with the one holding this step's pick, less that pick.
-// A group's header is read only once an earlier step asked for it.
+// A group's slot is read only once an earlier step asked for it.
 void PickLookahead::aheadOldest(std::size_t rule, const RuleInfo& info, const MatchSet& set, Match picked, const Rng& rng,
                                 const IncrementalMatches& sets, const RuleSet& rules, const Graph& g) {
     const AgeBuckets& ages = set.ageGroups();
@@ -122,7 +122,7 @@ void PickLookahead::aheadOldest(std::size_t rule, const RuleInfo& info, const Ma
     std::size_t group = 0;
     for (int j = 1; j <= kAhead; ++j) {
         while (left == 0) {
-            // The last header is only being asked for now.
+            // The last group's slot is only being asked for now.
             if (++group + 1 >= count) return;
             enter(group);
         }

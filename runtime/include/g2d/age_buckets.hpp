@@ -74,6 +74,7 @@ private:
     };
     std::uint32_t* idsOf(Slot& s) { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
     const std::uint32_t* idsOf(const Slot& s) const { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
+    Slot& slotOf(std::uint64_t key) { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
     const Slot& slotOf(std::uint64_t key) const { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
     Page& pageFor(std::size_t pageNo);
     void spill(Slot& slot, std::uint32_t id);
