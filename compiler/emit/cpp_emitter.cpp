@@ -19,6 +19,13 @@ std::string cLiteral(const std::string& s) {
     return lit.substr(12, lit.rfind("\", ") - 12 + 1);   // "..."
 }
 
+// `std::vector<int>{a, b}` (typed, so that an empty list stays a vector).
+std::string intList(const std::vector<int>& v) {
+    std::string out = "std::vector<int>{";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + str(v[i]);
+    return out + "}";
+}
+
 std::string incidenceName(ir::IncidenceRead r) {
     switch (r) {
     case ir::IncidenceRead::None: return "Incidence::None";
@@ -263,6 +270,13 @@ private:
             out += in + "    info.nodeKinds = {";
             for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);
             out += "};\n";
+            out += in + "    info.kindsKnown = true;\n";
+            out += in + "    info.readKinds = " + intList(r.readKinds) + ";\n";
+            out += in + "    info.readsDegrees = " + (r.readsDegrees ? "true" : "false") + ";\n";
+            for (const auto& d : r.daughters) {
+                out += in + "    info.changedKinds.push_back(" + intList(d.changedKinds) + ");\n";
+                out += in + "    info.deletesNodes.push_back(" + (d.deletedNodes.empty() ? "0" : "1") + ");\n";
+            }
             for (const auto& d : r.daughters) {
                 if (d.weight) {
                     out += in + "    info.weights.push_back(" + cppLiteral(ir::Value{*d.weight}, ir::kFloatType) + ");\n";

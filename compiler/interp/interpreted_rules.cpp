@@ -56,6 +56,13 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         for (bool nothing : r.newHostAddsNothing) info.newHostAddsNothing.push_back(nothing ? 1 : 0);
         for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
         info.edgeCount = static_cast<int>(r.edges.size());
+        info.kindsKnown = true;
+        info.readKinds = r.readKinds;
+        info.readsDegrees = r.readsDegrees;
+        for (const auto& d : r.daughters) {
+            info.changedKinds.push_back(d.changedKinds);
+            info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
+        }
         infos_.push_back(std::move(info));
         std::size_t nacNodes = 0, nacEdges = 0;
         for (const auto& n : r.nacs) {

@@ -276,6 +276,12 @@ struct Daughter {
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     bool autoPlacement = false;        // some new node is placed automatically
+    // The kinds of the elements applying this daughter removes, adds or
+    // changes (an attribute, a position, the kind, an edge's ends; not a
+    // style, which no condition reads). Sorted. Removing a node also removes
+    // its edges, of any kind: a rule reading degrees sees that through
+    // deletedNodes.
+    std::vector<int> changedKinds;
     Span span;
 };
 
@@ -336,6 +342,13 @@ struct Rule {
     // where that test cannot skip anything (no pattern edges, or a grammar of
     // one edge kind: every node with an edge has it).
     std::vector<std::vector<int>> neededEdgeKinds;
+    // The kinds (node and edge kinds share Program::kinds' numbering) whose
+    // elements a change of can change this rule's matches: those of its
+    // pattern and its negative conditions (a wildcard node: every node kind;
+    // an edge without a kind: every edge kind), and every edge kind where a
+    // condition reads a degree (readsDegrees). Sorted.
+    std::vector<int> readKinds;
+    bool readsDegrees = false;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

@@ -7,6 +7,7 @@
 #include "sema/builtins.hpp"
 #include "sema/const_fold.hpp"
 #include "sema/decl_checker.hpp"
+#include "sema/kind_effects.hpp"
 #include "sema/search_plan.hpp"
 
 namespace g2d::sema {
@@ -222,6 +223,7 @@ public:
         match();
         plan();
         items();
+        describeKindEffects(rule_, g_.prog.kinds);
         warnUnusedLets();
         // Advice about a rule is noise while the rule has errors.
         if (g_.diags.errorCount() == errorsBefore)

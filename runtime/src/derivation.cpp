@@ -191,6 +191,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 MatchSet& set = sets.of(r);
                 if (set.empty()) continue;
                 const RuleInfo& info = rules.info(r);
+                std::size_t daughter = IncrementalMatches::kAnyDaughter;
                 try {
                     if (info.parallel) {
                         result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
@@ -198,6 +199,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                         if (!lookahead.guessed(m)) sets.prefetch(g, m, set.nodes(), set.edges());
                         const std::size_t d = pickDaughter(info.weights, rng);
+                        daughter = d;
                         lookahead.ahead(r, info, set, m, rng, sets, rules, g);
                         if (tracer) tracer->applying(r, d, m, g);
                         rules.prepare(r, d, m, g, rng, step);
@@ -217,7 +219,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                 const bool everything = IncrementalMatches::searchesEverything(g);
                 if (everything) g.forgetChanges();
                 try {
-                    sets.update(g, newEdgesFrom, newNodesFrom, everything);
+                    sets.update(g, newEdgesFrom, newNodesFrom, everything, r, daughter);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
                     if (tracer) tracer->stepDone(step, g);
@@ -246,6 +248,8 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.lookaheadGuesses = lookahead.guesses();
     result.lookaheadHits = lookahead.hits();
+    result.setRepairs = static_cast<long long>(sets.setsRepaired());
+    result.setRepairsSkipped = static_cast<long long>(sets.setsSkipped());
     return result;
 }
 

@@ -8,7 +8,28 @@
 
 namespace g2d::rt {
 
+namespace {
+
+bool shareAKind(const std::vector<int>& a, const std::vector<int>& b) {
+    for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end();) {
+        if (*i == *j) return true;
+        if (*i < *j) ++i;
+        else ++j;
+    }
+    return false;
+}
+
+// Whether applying `applied`'s daughter `d` can change the matches of `reader`.
+bool canChange(const RuleInfo& applied, std::size_t d, const RuleInfo& reader) {
+    if (!applied.kindsKnown || !reader.kindsKnown || d >= applied.changedKinds.size() || d >= applied.deletesNodes.size())
+        return true;
+    return shareAKind(applied.changedKinds[d], reader.readKinds) || (reader.readsDegrees && applied.deletesNodes[d]);
+}
+
+}  // namespace
+
 IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(rules) {
+    std::size_t pairs = 0;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
@@ -17,8 +38,25 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         refill(r, g);
         byRadius_.push_back(r);
         retired_.push_back(0);
+        pairs += (info.weights.size() + 1) * rules.ruleCount();
     }
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
+    if (pairs > kMaxListedPairs) return;   // decided at each step instead (affectedBy)
+    for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
+        auto& lists = affected_.emplace_back(rules.info(r).weights.size() + 1);
+        for (std::size_t d = 0; d < lists.size(); ++d) affectedBy(r, d, lists[d]);
+    }
+}
+
+void IncrementalMatches::affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::size_t>& out) const {
+    const RuleInfo& info = rules_.info(applied);
+    out.clear();
+    for (const std::size_t q : byRadius_) {
+        bool changes = false;
+        for (std::size_t d = 0; d < info.weights.size() && !changes; ++d)
+            changes = (daughter == d || daughter >= info.weights.size()) && canChange(info, d, rules_.info(q));
+        if (changes) out.push_back(q);
+    }
 }
 
 void IncrementalMatches::region(const Graph& g, int radius) {
@@ -71,11 +109,22 @@ bool IncrementalMatches::searchesEverything(const Graph& g) {
     return g.nodeCount() >= kFullSearchMinNodes && 2 * g.changedNodeCount() >= g.nodeCount();
 }
 
-void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything) {
+void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything,
+                                std::size_t appliedRule, std::size_t daughter) {
     if (!everything && g.changedNodes().empty()) return;
+    const std::vector<std::size_t>* listed = nullptr;
+    if (!affected_.empty()) {
+        const auto& lists = affected_[appliedRule];
+        listed = &lists[std::min(daughter, lists.size() - 1)];
+    } else {
+        affectedBy(appliedRule, daughter, scratchAffected_);
+    }
+    const std::vector<std::size_t>& affected = listed ? *listed : scratchAffected_;
+    setsSkipped_ += sets_.size() - affected.size();
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
-    for (const std::size_t r : byRadius_) {
+    for (const std::size_t r : affected) {
         if (retired_[r]) continue;
+        ++setsRepaired_;
         MatchSet& set = sets_[r];
         if (radius_[r] < 0 || everything) {
             // Not local, or not worth it: find them all again.

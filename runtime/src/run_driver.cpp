@@ -212,10 +212,11 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         }
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
-                        "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld}\n",
+                        "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
+                        "\"repairs\": %lld, \"repairs_skipped\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
-                        result.lookaheadGuesses, result.lookaheadHits);
+                        result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "g2d run: error: %s\n", e.what());
         return 1;

@@ -7,7 +7,7 @@ source "$(dirname "$0")/test_lib.sh"
 
 # Outputs and stats
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=2 -o k.svg --json k.json --stats --seed 9
-grep -qx '{"steps": 15, "nodes": 48, "edges": 48, "seconds": [0-9.e-]*, "seed": 9, "stopped": "terminal", "applications": 15, "lookahead_guesses": 0, "lookahead_hits": 0}' out.txt \
+grep -qx '{"steps": 15, "nodes": 48, "edges": 48, "seconds": [0-9.e-]*, "seed": 9, "stopped": "terminal", "applications": 15, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 15, "repairs_skipped": 0}' out.txt \
   || fail "stats line: $(cat out.txt)"
 head -c 38 k.svg | grep -q '<?xml version="1.0" encoding="UTF-8"?>' || fail "SVG header"
 [ "$(grep -c '<line ' k.svg)" = 48 ] || fail "48 lines expected in k.svg"

@@ -1,6 +1,8 @@
 // What semantic analysis hands to the back ends: the typed IR.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "test_helpers.hpp"
 
 using namespace g2d;
@@ -131,4 +133,59 @@ TEST_CASE("each reading match node reads the edge lists of its pattern edges' di
     CHECK(rules[2].readDirections == std::vector<std::uint8_t>{both, 0});
     CHECK(rules[3].readDirections == std::vector<std::uint8_t>{both});
     CHECK(rules[4].readDirections == std::vector<std::uint8_t>{both, 0});
+}
+
+TEST_CASE("each rule knows the kinds its matches read and the kinds each daughter changes", "[ir][incremental]") {
+    auto r = compile(R"(
+node A { v: int = 0; }
+node B;
+node C;
+edge E directed;
+edge F directed;
+edge U;
+axiom { a: A; }
+rule Grow { match { a: A; b: B; e: a -[E]-> b; } produce { a { v = 1 }; b; n: C at (0, 0); a -[F]-> n; } }
+rule Keep { match { a: A; b: B; e: a -[E]-> b; } produce { a; b; e; } }
+rule Move { match { b: B; } produce { b at (1, 1); } }
+rule Rewire { match { a: A; b: B; e: a -[E]-> b; } produce { a; b; e: b -[E]-> a; } }
+rule Count { match { c: C where c.degree > 1; } produce { } }
+rule Guard { match { x: *; b: B; x -[E]-> b; not { y: C; x -[U]- y; } } produce { x; b; } }
+)");
+    REQUIRE(r.program);
+    const auto& p = *r.program;
+    auto kind = [&](const std::string& name) {
+        for (std::size_t k = 0; k < p.kinds.size(); ++k)
+            if (p.kinds[k].name == name) return static_cast<int>(k);
+        FAIL("no kind " << name);
+        return -1;
+    };
+    auto kinds = [&](std::vector<std::string> names) {
+        std::vector<int> out;
+        for (const auto& n : names) out.push_back(kind(n));
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    auto rule = [&](const std::string& name) -> const ir::Rule& {
+        for (const auto& rr : p.rules)
+            if (rr.name == name) return rr;
+        FAIL("no rule " << name);
+        return p.rules[0];
+    };
+    // Grow: the deleted edge, the new node and edge, the kept node given a value.
+    CHECK(rule("Grow").readKinds == kinds({"A", "B", "E"}));
+    CHECK_FALSE(rule("Grow").readsDegrees);
+    CHECK(rule("Grow").daughters[0].changedKinds == kinds({"A", "C", "E", "F"}));
+    // Keeping everything as it was changes nothing.
+    CHECK(rule("Keep").daughters[0].changedKinds.empty());
+    // A new position is a change of the node.
+    CHECK(rule("Move").daughters[0].changedKinds == kinds({"B"}));
+    // A kept edge between other ends is a change of the edge.
+    CHECK(rule("Rewire").daughters[0].changedKinds == kinds({"E"}));
+    // A degree counts every edge kind; deleting the node is a change of its kind.
+    CHECK(rule("Count").readsDegrees);
+    CHECK(rule("Count").readKinds == kinds({"C", "E", "F", "U"}));
+    CHECK(rule("Count").daughters[0].changedKinds == kinds({"C"}));
+    CHECK(rule("Count").daughters[0].deletedNodes.size() == 1);
+    // A wildcard reads every node kind; a negative condition's kinds are read too.
+    CHECK(rule("Guard").readKinds == kinds({"A", "B", "C", "E", "U"}));
 }

@@ -65,6 +65,17 @@ struct RuleInfo {
     // Per pattern node: whether a search anchored there at a node the step
     // created can add nothing (ir::Rule::newHostAddsNothing); empty: none.
     std::vector<std::uint8_t> newHostAddsNothing;
+    // Which kinds of element this rule's matches read, and which each of its
+    // daughters changes (ir::Rule::readKinds, ir::Daughter::changedKinds;
+    // node and edge kinds share one numbering): after a step whose daughter
+    // changes no kind a rule reads, that rule's matches are as they were,
+    // and its set is not repaired (IncrementalMatches). Without
+    // `kindsKnown` (a hand-built RuleSet), every step repairs every set.
+    bool kindsKnown = false;
+    std::vector<int> readKinds;                     // sorted
+    bool readsDegrees = false;                      // so removing any edge at a match node matters
+    std::vector<std::vector<int>> changedKinds;     // per daughter, sorted
+    std::vector<std::uint8_t> deletesNodes;         // per daughter: removes a node (and so its edges)
 };
 
 // The nodes around a step's changes whose matches a rule finds again
@@ -176,6 +187,9 @@ struct DerivationResult {
     double seconds = 0;
     // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.
     long long lookaheadGuesses = 0, lookaheadHits = 0;
+    // Rule sets repaired after steps, and left as they were because their
+    // step changed no kind their rule reads (RuleInfo::readKinds).
+    long long setRepairs = 0, setRepairsSkipped = 0;
 };
 
 // Called after every step (for progress displays).

@@ -51,7 +51,16 @@ public:
     // the nodes from `newNodesFrom` on.
     // With `everything`, every rule is searched in full instead (and the
     // changes are not read: see searchesEverything).
-    void update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything = false);
+    // Only the sets of rules reading a kind that the applied rule's daughter
+    // `daughter` changes are repaired (RuleInfo::readKinds; kAnyDaughter: any
+    // of its daughters, as after a parallel step).
+    static constexpr std::size_t kAnyDaughter = ~std::size_t{0};
+    void update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything, std::size_t appliedRule,
+                std::size_t daughter);
+    // How many rule sets updates have repaired or refilled, and skipped as
+    // unaffected by their step (for the tests).
+    std::size_t setsRepaired() const { return setsRepaired_; }
+    std::size_t setsSkipped() const { return setsSkipped_; }
     // Whether the changes `g` has recorded are so many that the next update
     // should search every rule in full.
     static bool searchesEverything(const Graph& g);
@@ -82,8 +91,21 @@ private:
     std::vector<MatchSet> sets_;
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
     std::vector<std::uint8_t> retired_;      // per rule (bytes: read per rule per step)
-    // The rules by radius (stable), so that rules of one radius share one area.
+    // The rules whose sets a step applying `applied`'s daughter `daughter`
+    // (kAnyDaughter or past the last: any) can change, by radius (stable),
+    // so that rules of one radius share one area.
+    void affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::size_t>& out) const;
+    // The rules by radius.
     std::vector<std::size_t> byRadius_;
+    // affectedBy per applied rule and daughter (the last entry: any
+    // daughter), listed once where the grammar has at most kMaxListedPairs
+    // (rule, daughter, rule) triples; in larger ones decided at each step
+    // (in scratchAffected_), as a list of every pair would grow with the
+    // square of the rules (10^5 rules: 10^10 entries).
+    static constexpr std::size_t kMaxListedPairs = std::size_t{1} << 20;
+    std::vector<std::vector<std::vector<std::size_t>>> affected_;
+    std::vector<std::size_t> scratchAffected_;
+    std::size_t setsRepaired_ = 0, setsSkipped_ = 0;
     GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;

@@ -1,0 +1,95 @@
+#include "sema/kind_effects.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace g2d::sema {
+
+namespace {
+
+class KindSet {
+public:
+    explicit KindSet(const std::vector<ir::Kind>& kinds) : kinds_(kinds) {}
+    // A kind, or every kind of the class for -1 (a wildcard, or after an error).
+    void add(int kind, ir::ElemClass cls) {
+        if (kind >= 0) {
+            set_.insert(kind);
+            return;
+        }
+        for (std::size_t k = 0; k < kinds_.size(); ++k)
+            if (kinds_[k].cls == cls) set_.insert(static_cast<int>(k));
+    }
+    std::vector<int> sorted() const { return {set_.begin(), set_.end()}; }
+
+private:
+    const std::vector<ir::Kind>& kinds_;
+    std::set<int> set_;
+};
+
+bool readsDegree(const ir::Expr& e) {
+    if (e.op == ir::ExprOp::Fact &&
+        (e.fact == ir::ElemFact::Degree || e.fact == ir::ElemFact::InDegree || e.fact == ir::ElemFact::OutDegree))
+        return true;
+    return std::any_of(e.args.begin(), e.args.end(), readsDegree);
+}
+
+bool anyReadsDegree(const std::vector<ir::Condition>& conditions) {
+    return std::any_of(conditions.begin(), conditions.end(), [](const ir::Condition& c) { return readsDegree(c.expr); });
+}
+
+template <class T>
+const T* at(const std::vector<T>& v, int i) {
+    return i >= 0 && static_cast<std::size_t>(i) < v.size() ? &v[static_cast<std::size_t>(i)] : nullptr;
+}
+
+std::vector<int> changedBy(const ir::Rule& rule, const ir::Daughter& d, const std::vector<ir::Kind>& kinds) {
+    KindSet changed(kinds);
+    for (int n : d.deletedNodes)
+        changed.add(at(rule.nodes, n) ? at(rule.nodes, n)->kind : -1, ir::ElemClass::Node);
+    for (int e : d.deletedEdges)
+        changed.add(at(rule.edges, e) ? at(rule.edges, e)->kind : -1, ir::ElemClass::Edge);
+    for (const auto& n : d.nodes) {
+        const ir::PatternNode* mother = at(rule.nodes, n.motherNode);
+        if (!mother) {
+            changed.add(n.kind, ir::ElemClass::Node);   // new
+            continue;
+        }
+        const bool retyped = n.kind != mother->kind;
+        if (retyped) changed.add(n.kind, ir::ElemClass::Node);
+        if (retyped || n.position || !n.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Node);
+    }
+    for (const auto& e : d.edges) {
+        const ir::PatternEdge* mother = at(rule.edges, e.motherEdge);
+        if (!mother) {
+            changed.add(e.kind, ir::ElemClass::Edge);   // new
+            continue;
+        }
+        const ir::DaughterNode* src = at(d.nodes, e.src);
+        const ir::DaughterNode* dst = at(d.nodes, e.dst);
+        const bool sameEnds = src && dst && src->motherNode == mother->src && dst->motherNode == mother->dst;
+        const bool retyped = e.kind != mother->kind;
+        if (retyped) changed.add(e.kind, ir::ElemClass::Edge);
+        if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
+    }
+    return changed.sorted();
+}
+
+}  // namespace
+
+void describeKindEffects(ir::Rule& rule, const std::vector<ir::Kind>& kinds) {
+    KindSet read(kinds);
+    for (const auto& n : rule.nodes) read.add(n.kind, ir::ElemClass::Node);
+    for (const auto& e : rule.edges) read.add(e.kind, ir::ElemClass::Edge);
+    rule.readsDegrees = anyReadsDegree(rule.conditions);
+    for (const auto& nac : rule.nacs) {
+        for (const auto& n : nac.nodes) read.add(n.kind, ir::ElemClass::Node);
+        for (const auto& e : nac.edges) read.add(e.kind, ir::ElemClass::Edge);
+        rule.readsDegrees = rule.readsDegrees || anyReadsDegree(nac.conditions);
+    }
+    // A degree counts the edges of every kind.
+    if (rule.readsDegrees) read.add(-1, ir::ElemClass::Edge);
+    rule.readKinds = read.sorted();
+    for (auto& d : rule.daughters) d.changedKinds = changedBy(rule, d, kinds);
+}
+
+}  // namespace g2d::sema
