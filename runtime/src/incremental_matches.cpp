@@ -42,20 +42,26 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     }
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
     if (pairs > kMaxListedPairs) return;   // decided at each step instead (affectedBy)
+    std::vector<std::uint32_t> list;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
-        auto& lists = affected_.emplace_back(rules.info(r).weights.size() + 1);
-        for (std::size_t d = 0; d < lists.size(); ++d) affectedBy(r, d, lists[d]);
+        firstList_.push_back(static_cast<std::uint32_t>(listEnds_.size()));
+        for (std::size_t d = 0; d <= rules.info(r).weights.size(); ++d) {
+            affectedBy(r, d, list);
+            listed_.insert(listed_.end(), list.begin(), list.end());
+            listEnds_.push_back(static_cast<std::uint32_t>(listed_.size()));
+        }
     }
+    firstList_.push_back(static_cast<std::uint32_t>(listEnds_.size()));
 }
 
-void IncrementalMatches::affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::size_t>& out) const {
+void IncrementalMatches::affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::uint32_t>& out) const {
     const RuleInfo& info = rules_.info(applied);
     out.clear();
     for (const std::size_t q : byRadius_) {
         bool changes = false;
         for (std::size_t d = 0; d < info.weights.size() && !changes; ++d)
             changes = (daughter == d || daughter >= info.weights.size()) && canChange(info, d, rules_.info(q));
-        if (changes) out.push_back(q);
+        if (changes) out.push_back(static_cast<std::uint32_t>(q));
     }
 }
 
@@ -112,19 +118,22 @@ bool IncrementalMatches::searchesEverything(const Graph& g) {
 void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything,
                                 std::size_t appliedRule, std::size_t daughter) {
     if (!everything && g.changedNodes().empty()) return;
-    const std::vector<std::size_t>* listed = nullptr;
-    if (!affected_.empty()) {
-        const auto& lists = affected_[appliedRule];
-        listed = &lists[std::min(daughter, lists.size() - 1)];
+    std::span<const std::uint32_t> affected;
+    if (!firstList_.empty()) {
+        const std::uint32_t first = firstList_[appliedRule], last = firstList_[appliedRule + 1] - 1;   // last: any daughter
+        const std::uint32_t list = daughter < last - first ? first + static_cast<std::uint32_t>(daughter) : last;
+        const std::uint32_t begin = list == 0 ? 0 : listEnds_[list - 1];
+        affected = {listed_.data() + begin, listEnds_[list] - begin};
     } else {
         affectedBy(appliedRule, daughter, scratchAffected_);
+        affected = scratchAffected_;
     }
-    const std::vector<std::size_t>& affected = listed ? *listed : scratchAffected_;
     setsSkipped_ += sets_.size() - affected.size();
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
-    for (const std::size_t r : affected) {
+    std::size_t repaired = 0;
+    for (const std::uint32_t r : affected) {
         if (retired_[r]) continue;
-        ++setsRepaired_;
+        ++repaired;
         MatchSet& set = sets_[r];
         if (radius_[r] < 0 || everything) {
             // Not local, or not worth it: find them all again.
@@ -142,6 +151,7 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
         }
         rules_.repair(r, g, area, set, found_);
     }
+    setsRepaired_ += repaired;
 }
 
 void IncrementalMatches::prefetchMatch(const Graph& g, Match m, int nodes, int edges) const {

@@ -94,17 +94,20 @@ private:
     // The rules whose sets a step applying `applied`'s daughter `daughter`
     // (kAnyDaughter or past the last: any) can change, by radius (stable),
     // so that rules of one radius share one area.
-    void affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::size_t>& out) const;
+    void affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::uint32_t>& out) const;
     // The rules by radius.
     std::vector<std::size_t> byRadius_;
-    // affectedBy per applied rule and daughter (the last entry: any
-    // daughter), listed once where the grammar has at most kMaxListedPairs
+    // affectedBy per applied rule and daughter (and any daughter), listed
+    // once where the grammar has at most kMaxListedPairs
     // (rule, daughter, rule) triples; in larger ones decided at each step
     // (in scratchAffected_), as a list of every pair would grow with the
     // square of the rules (10^5 rules: 10^10 entries).
+    // The lists one after another in listed_; list k ends at listEnds_[k];
+    // rule r's lists are firstList_[r] (daughter 0) to firstList_[r + 1] - 1
+    // (any daughter). Empty when decided at each step.
     static constexpr std::size_t kMaxListedPairs = std::size_t{1} << 20;
-    std::vector<std::vector<std::vector<std::size_t>>> affected_;
-    std::vector<std::size_t> scratchAffected_;
+    std::vector<std::uint32_t> listed_, listEnds_, firstList_;
+    std::vector<std::uint32_t> scratchAffected_;
     std::size_t setsRepaired_ = 0, setsSkipped_ = 0;
     GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
