@@ -149,14 +149,20 @@ void Graph::setNodeStyle(NodeId n, StyleProp prop, Value&& v) {
     styles_.set(styleHead(nodeStyleList_, n, nodes_.size()), prop, std::move(v));
 }
 
-void Graph::setNodeStyle(NodeId n, StyleProp prop, const Value& v) { setNodeStyle(n, prop, Value(v)); }
+void Graph::setNodeStyle(NodeId n, StyleProp prop, const Value& v) {
+    nodes_[n].marks |= kStyled;
+    styles_.set(styleHead(nodeStyleList_, n, nodes_.size()), prop, v);
+}
 
 void Graph::setEdgeStyle(EdgeId e, StyleProp prop, Value&& v) {
     edges_[e].styled = true;
     styles_.set(styleHead(edgeStyleList_, e, edges_.size()), prop, std::move(v));
 }
 
-void Graph::setEdgeStyle(EdgeId e, StyleProp prop, const Value& v) { setEdgeStyle(e, prop, Value(v)); }
+void Graph::setEdgeStyle(EdgeId e, StyleProp prop, const Value& v) {
+    edges_[e].styled = true;
+    styles_.set(styleHead(edgeStyleList_, e, edges_.size()), prop, v);
+}
 
 void Graph::forgetChanges() {
     for (NodeId n : dirty_) nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);

@@ -29,13 +29,14 @@ StyleProp StyleStore::prop(std::string_view name) {
     return static_cast<StyleProp>(names_.size() - 1);
 }
 
-void StyleStore::set(std::uint32_t& head, StyleProp p, Value&& v) {
+void StyleStore::set(std::uint32_t& head, StyleProp p, Value&& v) { entryFor(head, p).value = std::move(v); }
+
+void StyleStore::set(std::uint32_t& head, StyleProp p, const Value& v) { entryFor(head, p).value = v; }
+
+StyleEntry& StyleStore::entryFor(std::uint32_t& head, StyleProp p) {
     std::uint32_t last = kNone;
     for (std::uint32_t i = head; i != kNone; i = at(i).next) {
-        if (at(i).prop == p) {
-            at(i).value = std::move(v);
-            return;
-        }
+        if (at(i).prop == p) return at(i);
         last = i;
     }
     std::uint32_t fresh = free_;
@@ -48,10 +49,10 @@ void StyleStore::set(std::uint32_t& head, StyleProp p, Value&& v) {
             blocks_.push_back(std::make_unique<StyleEntry[]>(std::size_t{1} << kBlockBits));
     }
     StyleEntry& e = at(fresh);
-    e.value = std::move(v);
     e.next = kNone;
     e.prop = p;
     (last == kNone ? head : at(last).next) = fresh;
+    return e;
 }
 
 void StyleStore::drop(std::uint32_t& head) {

@@ -79,6 +79,7 @@ public:
 
     // `head` is an element's chain (kNone for none), kept by the caller.
     void set(std::uint32_t& head, StyleProp p, Value&& v);
+    void set(std::uint32_t& head, StyleProp p, const Value& v);   // copied in place (a constant of generated code)
     void drop(std::uint32_t& head);   // the chain goes to the free list
     StyleList list(std::uint32_t head) const { return StyleList(this, head); }
     const StyleEntry& entry(std::uint32_t i) const { return blocks_[i >> kBlockBits][i & kBlockMask]; }
@@ -86,7 +87,12 @@ public:
     std::size_t memoryBytes() const;
 
 private:
-    static constexpr unsigned kBlockBits = 8;
+    // The override of `p` in the chain at `head`, appended (its value
+    // left as it was) if the chain has none.
+    StyleEntry& entryFor(std::uint32_t& head, StyleProp p);
+    // Blocks of 64 entries (3 KiB): a small grammar's overrides touch few
+    // fresh pages (every entry of a block is constructed when it is made).
+    static constexpr unsigned kBlockBits = 6;
     static constexpr std::uint32_t kBlockMask = (1u << kBlockBits) - 1;
     StyleEntry& at(std::uint32_t i) { return blocks_[i >> kBlockBits][i & kBlockMask]; }
 
