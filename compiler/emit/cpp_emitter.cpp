@@ -26,6 +26,13 @@ std::string intList(const std::vector<int>& v) {
     return out + "}";
 }
 
+// `std::vector<long long>{...}` of ir::valueKey numbers.
+std::string valueKeyList(const std::vector<long long>& v) {
+    std::string out = "std::vector<long long>{";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + str(v[i]) + "LL";
+    return out + "}";
+}
+
 std::string incidenceName(ir::IncidenceRead r) {
     switch (r) {
     case ir::IncidenceRead::None: return "Incidence::None";
@@ -273,8 +280,10 @@ private:
             out += in + "    info.kindsKnown = true;\n";
             out += in + "    info.readKinds = " + intList(r.readKinds) + ";\n";
             out += in + "    info.readsDegrees = " + (r.readsDegrees ? "true" : "false") + ";\n";
+            out += in + "    info.readValues = " + valueKeyList(r.readValues) + ";\n";
             for (const auto& d : r.daughters) {
                 out += in + "    info.changedKinds.push_back(" + intList(d.changedKinds) + ");\n";
+                out += in + "    info.changedValues.push_back(" + valueKeyList(d.changedValues) + ");\n";
                 out += in + "    info.deletesNodes.push_back(" + (d.deletedNodes.empty() ? "0" : "1") + ");\n";
             }
             for (const auto& d : r.daughters) {

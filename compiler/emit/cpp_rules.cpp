@@ -474,7 +474,7 @@ private:
                     commit += c + gen_.attrAccess(dn.kind, "h" + si, false, dn.assigns[a].attr, "G") + " = " +
                               assigned(dn.assigns[a], "nv" + si, a) + ";\n";
                 // Typed attributes change outside the graph: tell it, for incremental matching.
-                if (!dn.assigns.empty()) commit += c + "G.touchNode(h" + si + ");\n";
+                if (!dn.assigns.empty()) commit += c + "G.touchNodeValues(h" + si + ");\n";
             }
             for (std::size_t a = 0; a < dn.styles.size(); ++a)
                 commit += c + "G.setNodeStyle(h" + si + ", " + cppStyleProp(dn.styles[a]) + ", " +

@@ -59,8 +59,10 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         info.kindsKnown = true;
         info.readKinds = r.readKinds;
         info.readsDegrees = r.readsDegrees;
+        info.readValues = r.readValues;
         for (const auto& d : r.daughters) {
             info.changedKinds.push_back(d.changedKinds);
+            info.changedValues.push_back(d.changedValues);
             info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
         }
         infos_.push_back(std::move(info));

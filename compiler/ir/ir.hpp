@@ -277,15 +277,20 @@ struct Daughter {
     std::vector<int> deletedEdges;     // mother edges not kept
     bool autoPlacement = false;        // some new node is placed automatically
     // The kinds of the elements applying this daughter removes, adds or
-    // changes (an attribute, a position, the kind, an edge's ends; not a
-    // style, which no condition reads). Sorted. Removing a node also removes
-    // its edges, of any kind: a rule reading degrees sees that through
-    // deletedNodes.
+    // changes (a position, the kind, an edge's ends or attributes; not a
+    // style, which no condition reads), and the attributes it writes on
+    // kept nodes (valueKey; those alone leave a node's kind out of
+    // changedKinds). Sorted. Removing a node also removes its edges, of any
+    // kind: a rule reading degrees sees that through deletedNodes.
     std::vector<int> changedKinds;
+    std::vector<long long> changedValues;
     Span span;
 };
 
 enum class Pick { Random, Oldest };
+
+// A node attribute as one number (Rule::readValues, Daughter::changedValues).
+inline long long valueKey(int kind, int attribute) { return static_cast<long long>(kind) << 32 | static_cast<unsigned>(attribute); }
 
 // What a pattern node's matches read of the edges at its host beyond what
 // the other pattern nodes read:
@@ -349,6 +354,11 @@ struct Rule {
     // condition reads a degree (readsDegrees). Sorted.
     std::vector<int> readKinds;
     bool readsDegrees = false;
+    // The node attributes its conditions (and its negative conditions')
+    // read, as valueKey(kind, attribute). Sorted. A step that only writes
+    // other attributes of a node leaves the rule's matches binding it as
+    // they were.
+    std::vector<long long> readValues;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;

@@ -42,8 +42,20 @@ const T* at(const std::vector<T>& v, int i) {
     return i >= 0 && static_cast<std::size_t>(i) < v.size() ? &v[static_cast<std::size_t>(i)] : nullptr;
 }
 
-std::vector<int> changedBy(const ir::Rule& rule, const ir::Daughter& d, const std::vector<ir::Kind>& kinds) {
+// The node attributes `e` reads; `kindOf` gives a node's kind by its index
+// in the rule's numbering (match nodes, then a negative condition's).
+template <class KindOf>
+void readValues(const ir::Expr& e, const KindOf& kindOf, std::set<long long>& out) {
+    if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Node) {
+        const int kind = kindOf(e.elem.index);
+        if (kind >= 0) out.insert(ir::valueKey(kind, e.index));
+    }
+    for (const auto& a : e.args) readValues(a, kindOf, out);
+}
+
+std::vector<int> changedBy(const ir::Rule& rule, ir::Daughter& d, const std::vector<ir::Kind>& kinds) {
     KindSet changed(kinds);
+    std::set<long long> values;
     for (int n : d.deletedNodes)
         changed.add(at(rule.nodes, n) ? at(rule.nodes, n)->kind : -1, ir::ElemClass::Node);
     for (int e : d.deletedEdges)
@@ -56,8 +68,10 @@ std::vector<int> changedBy(const ir::Rule& rule, const ir::Daughter& d, const st
         }
         const bool retyped = n.kind != mother->kind;
         if (retyped) changed.add(n.kind, ir::ElemClass::Node);
-        if (retyped || n.position || !n.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Node);
+        if (retyped || n.position) changed.add(mother->kind, ir::ElemClass::Node);
+        for (const auto& a : n.assigns) values.insert(ir::valueKey(n.kind, a.attr));
     }
+    d.changedValues.assign(values.begin(), values.end());
     for (const auto& e : d.edges) {
         const ir::PatternEdge* mother = at(rule.edges, e.motherEdge);
         if (!mother) {
@@ -81,11 +95,19 @@ void describeKindEffects(ir::Rule& rule, const std::vector<ir::Kind>& kinds) {
     for (const auto& n : rule.nodes) read.add(n.kind, ir::ElemClass::Node);
     for (const auto& e : rule.edges) read.add(e.kind, ir::ElemClass::Edge);
     rule.readsDegrees = anyReadsDegree(rule.conditions);
+    std::set<long long> values;
+    const auto matchKind = [&](int i) { return at(rule.nodes, i) ? at(rule.nodes, i)->kind : -1; };
+    for (const auto& c : rule.conditions) readValues(c.expr, matchKind, values);
     for (const auto& nac : rule.nacs) {
         for (const auto& n : nac.nodes) read.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : nac.edges) read.add(e.kind, ir::ElemClass::Edge);
         rule.readsDegrees = rule.readsDegrees || anyReadsDegree(nac.conditions);
+        const auto nacKind = [&](int i) {
+            return i < nac.outerNodes ? matchKind(i) : at(nac.nodes, i - nac.outerNodes) ? at(nac.nodes, i - nac.outerNodes)->kind : -1;
+        };
+        for (const auto& c : nac.conditions) readValues(c.expr, nacKind, values);
     }
+    rule.readValues.assign(values.begin(), values.end());
     // A degree counts the edges of every kind.
     if (rule.readsDegrees) read.add(-1, ir::ElemClass::Edge);
     rule.readKinds = read.sorted();

@@ -124,7 +124,7 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
 
 void Graph::setNodeAttr(NodeId n, int i, Value v) {
     pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)] = std::move(v);
-    touchNode(n);
+    touchNodeValues(n);
 }
 
 void Graph::setEdgeAttr(EdgeId e, int i, Value v) {

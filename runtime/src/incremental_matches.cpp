@@ -10,7 +10,8 @@ namespace g2d::rt {
 
 namespace {
 
-bool shareAKind(const std::vector<int>& a, const std::vector<int>& b) {
+template <class T>
+bool shareAny(const std::vector<T>& a, const std::vector<T>& b) {
     for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end();) {
         if (*i == *j) return true;
         if (*i < *j) ++i;
@@ -19,11 +20,19 @@ bool shareAKind(const std::vector<int>& a, const std::vector<int>& b) {
     return false;
 }
 
-// Whether applying `applied`'s daughter `d` can change the matches of `reader`.
-bool canChange(const RuleInfo& applied, std::size_t d, const RuleInfo& reader) {
-    if (!applied.kindsKnown || !reader.kindsKnown || d >= applied.changedKinds.size() || d >= applied.deletesNodes.size())
-        return true;
-    return shareAKind(applied.changedKinds[d], reader.readKinds) || (reader.readsDegrees && applied.deletesNodes[d]);
+struct Effect {
+    bool changes = false;   // the step can change `reader`'s matches
+    bool values = false;    // through attributes `reader` reads, too
+};
+
+// What applying `applied`'s daughter `d` can do to the matches of `reader`.
+Effect effectOf(const RuleInfo& applied, std::size_t d, const RuleInfo& reader) {
+    if (!applied.kindsKnown || !reader.kindsKnown || d >= applied.changedKinds.size() ||
+        d >= applied.changedValues.size() || d >= applied.deletesNodes.size())
+        return {true, true};
+    const bool values = shareAny(applied.changedValues[d], reader.readValues);
+    return {values || shareAny(applied.changedKinds[d], reader.readKinds) || (reader.readsDegrees && applied.deletesNodes[d]),
+            values};
 }
 
 }  // namespace
@@ -58,14 +67,18 @@ void IncrementalMatches::affectedBy(std::size_t applied, std::size_t daughter, s
     const RuleInfo& info = rules_.info(applied);
     out.clear();
     for (const std::size_t q : byRadius_) {
-        bool changes = false;
-        for (std::size_t d = 0; d < info.weights.size() && !changes; ++d)
-            changes = (daughter == d || daughter >= info.weights.size()) && canChange(info, d, rules_.info(q));
-        if (changes) out.push_back(static_cast<std::uint32_t>(q));
+        Effect any;
+        for (std::size_t d = 0; d < info.weights.size(); ++d) {
+            if (daughter != d && daughter < info.weights.size()) continue;
+            const Effect e = effectOf(info, d, rules_.info(q));
+            any.changes = any.changes || e.changes;
+            any.values = any.values || e.values;
+        }
+        if (any.changes) out.push_back(static_cast<std::uint32_t>(q) | (any.values ? kReadsValues : 0));
     }
 }
 
-void IncrementalMatches::region(const Graph& g, int radius) {
+void IncrementalMatches::region(const Graph& g, int radius, bool values) {
     if (seen_.size() < g.nodeCapacity()) seen_.resize(g.nodeCapacity() + g.nodeCapacity() / 2, 0);
     if (++mark_ >= 0x1fffffffu) {  // about to wrap: forget every old mark
         std::fill(seen_.begin(), seen_.end(), 0);
@@ -75,14 +88,24 @@ void IncrementalMatches::region(const Graph& g, int radius) {
     area_.clear();
     // The nodes that changed themselves first, then those whose edges alone
     // did, each in the order they changed.
+    // A node whose attributes alone were written counts as changed itself
+    // only for rules reading such an attribute; for the others, only its
+    // edge lists may have changed.
     const std::span<const NodeId> changed = g.changedNodes();
+    areaSawValuesOnly_ = false;
+    auto itself = [&](NodeId n) {
+        if (g.changedItself(n)) return true;
+        if (!g.changedValuesOnly(n)) return false;
+        areaSawValuesOnly_ = true;
+        return values;
+    };
     for (NodeId n : changed)
-        if (g.changedItself(n)) {
+        if (itself(n)) {
             seen_[n] = full;
             area_.push_back(n);
         }
     for (NodeId n : changed)
-        if (!g.changedItself(n)) {
+        if (!itself(n) && g.changedLists(n) != 0) {
             seen_[n] = partial + 2u * g.changedLists(n);
             area_.push_back(n);
         }
@@ -130,8 +153,11 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
     }
     setsSkipped_ += sets_.size() - affected.size();
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
+    bool areaValues = false;
     std::size_t repaired = 0;
-    for (const std::uint32_t r : affected) {
+    for (const std::uint32_t entry : affected) {
+        const std::uint32_t r = entry & ~kReadsValues;
+        const bool values = (entry & kReadsValues) != 0;
         if (retired_[r]) continue;
         ++repaired;
         MatchSet& set = sets_[r];
@@ -140,9 +166,11 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
             refill(r, g);
             continue;
         }
-        if (radius_[r] != areaRadius) {
-            region(g, radius_[r]);
+        // (An area serves both views where no node's attributes alone changed.)
+        if (radius_[r] != areaRadius || (values != areaValues && areaSawValuesOnly_)) {
+            region(g, radius_[r], values);
             areaRadius = radius_[r];
+            areaValues = values;
         }
         const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom, newNodesFrom};
         for (NodeId n : area_) {

@@ -257,9 +257,11 @@ TEST_CASE("incrementally kept matches equal a full search after every random rew
 namespace {
 
 // A random grammar of three node kinds and three edge kinds whose rules each
-// read and change a few kinds (new and deleted nodes and edges, values,
-// positions, rewired edges, wildcards, negative conditions, degrees,
-// positions read), so that many steps leave some rules' sets alone (RuleInfo::readKinds).
+// read and change a few kinds and attributes (new and deleted nodes and
+// edges, attributes read and unread, moves and positions read, rewired
+// edges, wildcards, negative conditions, degrees), so that many steps leave
+// some rules' sets, or their matches at some nodes, alone
+// (RuleInfo::readKinds, readValues).
 std::string kindedGrammar(std::mt19937& gen) {
     auto pick = [&](int n) { return static_cast<int>(gen() % static_cast<unsigned>(n)); };
     const char* nodeKinds[] = {"A", "B", "C"};
@@ -267,7 +269,7 @@ std::string kindedGrammar(std::mt19937& gen) {
     auto node = [&] { return std::string(nodeKinds[pick(3)]); };
     auto arrow = [&](int k) { return k == 2 ? std::string(" -[U]- ") : std::string(" -[") + edgeKinds[k] + "]-> "; };
     std::ostringstream s;
-    s << "node A { v: int = 0; } node B { v: int = 0; } node C { v: int = 0; }\n"
+    s << "node A { v: int = 0; u: int = 0; } node B { v: int = 0; u: int = 0; } node C { v: int = 0; u: int = 0; }\n"
          "edge E directed; edge F directed; edge U;\naxiom {\n";
     const int hosts = 5 + pick(6);
     for (int i = 0; i < hosts; ++i) s << "  h" << i << ": " << node() << " at (" << i << ", " << pick(3) << ");\n";
@@ -278,7 +280,7 @@ std::string kindedGrammar(std::mt19937& gen) {
         const std::string w = pick(5) == 0 ? "*" : node(), x = node(), y = node(), z = node();
         const int k = pick(3), k2 = pick(3);
         s << "rule R" << r << " priority " << pick(3) << " {\n  match { ";
-        switch (pick(8)) {
+        switch (pick(10)) {
         case 0:   // an edge where there is none
             s << "x: " << x << "; y: " << y << "; not { x" << arrow(k) << "y; } } produce { x; y; x" << arrow(k) << "y; }";
             break;
@@ -295,10 +297,16 @@ std::string kindedGrammar(std::mt19937& gen) {
             s << "x: " << w << "; y: " << y << "; e: x" << arrow(k) << "y; } produce { x; y; e: y" << arrow(k) << "x; }";
             break;
         case 5:   // a move, unless a neighbour of some kind is there
-            s << "x: " << y << " where x.pos.x < 6; not { w: " << z << "; x" << arrow(k2) << "w; } } produce { x at x.pos + (1, 0); }";
+            s << "x: " << y << " where x.pos.x < 6; not { w: " << z << " where w.v > 1; x" << arrow(k2) << "w; } } produce { x at x.pos + (1, 0); }";
             break;
         case 6:   // reads a position
             s << "x: " << y << " where x.pos.x > 3 and x.v < 4; } produce { x { v = x.v + 2 }; }";
+            break;
+        case 7:   // writes an attribute no condition reads, at a node others bind
+            s << "x: " << x << " where x.v < 4; y: " << y << "; e: x" << arrow(k) << "y; } produce { x { u = x.u + 1 }; y; e; }";
+            break;
+        case 8:   // writes an attribute others read, and reads the other one
+            s << "x: " << y << " where x.u < 5; } produce { x { v = x.v + 1, u = x.u + 1 }; }";
             break;
         default:   // reads two kinds, changes a third
             s << "x: " << w << "; y: " << y << "; e: x" << arrow(k) << "y; } produce { x; y; e; n: " << z << " at (0, 2); y" << arrow(k2) << "n; }";

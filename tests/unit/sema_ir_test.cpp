@@ -135,9 +135,9 @@ TEST_CASE("each reading match node reads the edge lists of its pattern edges' di
     CHECK(rules[4].readDirections == std::vector<std::uint8_t>{both, 0});
 }
 
-TEST_CASE("each rule knows the kinds its matches read and the kinds each daughter changes", "[ir][incremental]") {
+TEST_CASE("each rule knows the kinds and attributes its matches read and each daughter changes", "[ir][incremental]") {
     auto r = compile(R"(
-node A { v: int = 0; }
+node A { v: int = 0; w: int = 0; }
 node B;
 node C;
 edge E directed;
@@ -149,6 +149,8 @@ rule Keep { match { a: A; b: B; e: a -[E]-> b; } produce { a; b; e; } }
 rule Move { match { b: B; } produce { b at (1, 1); } }
 rule Rewire { match { a: A; b: B; e: a -[E]-> b; } produce { a; b; e: b -[E]-> a; } }
 rule Count { match { c: C where c.degree > 1; } produce { } }
+rule ReadsW { match { a: A where a.w > 0; } produce { a; } }
+rule NacReadsV { match { b: B; not { a: A where a.v > 1; a -[E]-> b; } } produce { b; } }
 rule Guard { match { x: *; b: B; x -[E]-> b; not { y: C; x -[U]- y; } } produce { x; b; } }
 )");
     REQUIRE(r.program);
@@ -171,10 +173,17 @@ rule Guard { match { x: *; b: B; x -[E]-> b; not { y: C; x -[U]- y; } } produce 
         FAIL("no rule " << name);
         return p.rules[0];
     };
-    // Grow: the deleted edge, the new node and edge, the kept node given a value.
+    // Grow: the deleted edge, the new node and edge; the kept node's new
+    // value is a change of that attribute, not of its kind.
     CHECK(rule("Grow").readKinds == kinds({"A", "B", "E"}));
     CHECK_FALSE(rule("Grow").readsDegrees);
-    CHECK(rule("Grow").daughters[0].changedKinds == kinds({"A", "C", "E", "F"}));
+    CHECK(rule("Grow").readValues.empty());
+    CHECK(rule("Grow").daughters[0].changedKinds == kinds({"C", "E", "F"}));
+    CHECK(rule("Grow").daughters[0].changedValues == std::vector<long long>{ir::valueKey(kind("A"), 0)});
+    // The attributes conditions read, in the match or a negative condition.
+    CHECK(rule("ReadsW").readValues == std::vector<long long>{ir::valueKey(kind("A"), 1)});
+    CHECK(rule("NacReadsV").readValues == std::vector<long long>{ir::valueKey(kind("A"), 0)});
+    CHECK(rule("NacReadsV").readKinds == kinds({"A", "B", "E"}));
     // Keeping everything as it was changes nothing.
     CHECK(rule("Keep").daughters[0].changedKinds.empty());
     // A new position is a change of the node.

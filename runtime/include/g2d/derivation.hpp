@@ -71,10 +71,16 @@ struct RuleInfo {
     // changes no kind a rule reads, that rule's matches are as they were,
     // and its set is not repaired (IncrementalMatches). Without
     // `kindsKnown` (a hand-built RuleSet), every step repairs every set.
+    // Likewise node attributes (ir::Rule::readValues, ir::Daughter::
+    // changedValues, as ir::valueKey): for a rule reading none of the
+    // attributes a daughter writes, a node whose only change is such a write
+    // (Graph::changedValuesOnly) is not revisited.
     bool kindsKnown = false;
     std::vector<int> readKinds;                     // sorted
     bool readsDegrees = false;                      // so removing any edge at a match node matters
+    std::vector<long long> readValues;              // sorted
     std::vector<std::vector<int>> changedKinds;     // per daughter, sorted
+    std::vector<std::vector<long long>> changedValues;   // per daughter, sorted
     std::vector<std::uint8_t> deletesNodes;         // per daughter: removes a node (and so its edges)
 };
 

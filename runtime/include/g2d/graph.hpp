@@ -205,6 +205,9 @@ public:
     // as changed themselves (incremental matching tells an edge the step
     // added by its id, but keeps no other mark per edge).
     void touchNode(NodeId n) { touch(n, kChangedItself); }
+    // Only attributes of `n` were written (a rule reading none of them need
+    // not revisit it).
+    void touchNodeValues(NodeId n) { touch(n, kChangedValues); }
     void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedOut); touch(edges_[e].dst, kChangedIn); }
     void touchEdgeItself(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
     // The changed nodes (each once, in the order they first changed); for
@@ -213,6 +216,8 @@ public:
     // step's few changes are not copied out.
     std::span<const NodeId> changedNodes() const { return {dirty_.data(), dirty_.size()}; }
     bool changedItself(NodeId n) const { return (nodes_[n].marks & kChangedItself) != 0; }
+    // Whether `n`'s attributes were written, and nothing else of it itself.
+    bool changedValuesOnly(NodeId n) const { return (nodes_[n].marks & (kChangedItself | kChangedValues)) == kChangedValues; }
     std::uint8_t changedLists(NodeId n) const {
         return static_cast<std::uint8_t>((nodes_[n].marks & (kChangedOut | kChangedIn)) >> 1);
     }
@@ -250,8 +255,8 @@ private:
     static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 40);
 
     // Out and In as RepairArea::kOut and kIn, one bit up.
-    static constexpr std::uint8_t kChangedItself = 1, kChangedOut = 2, kChangedIn = 4;
-    static constexpr std::uint8_t kChanged = kChangedItself | kChangedOut | kChangedIn, kStyled = 8;
+    static constexpr std::uint8_t kChangedItself = 1, kChangedOut = 2, kChangedIn = 4, kChangedValues = 16;
+    static constexpr std::uint8_t kChanged = kChangedItself | kChangedOut | kChangedIn | kChangedValues, kStyled = 8;
     void touch(NodeId n, std::uint8_t what) {
         if (!(nodes_[n].marks & kChanged)) dirty_.push_back(n);
         nodes_[n].marks |= what;

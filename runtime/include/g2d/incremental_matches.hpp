@@ -82,7 +82,11 @@ private:
     void prefetchMatch(const Graph& g, Match m, int nodes, int edges) const;
     // The changed nodes and those within `radius` edges of them, in area_,
     // marked in seen_ as RepairArea reads them.
-    void region(const Graph& g, int radius);
+    // With `values`, nodes whose attributes alone changed count as changed
+    // themselves; without, only their edge lists' changes count.
+    // areaSawValuesOnly_: whether such a node was among the changes.
+    void region(const Graph& g, int radius, bool values);
+    bool areaSawValuesOnly_ = false;
     bool inArea(NodeId n) const { return (seen_[n] >> 3) == mark_; }
     // Empties `rule`'s set and fills it by a full search.
     void refill(std::size_t rule, const Graph& g);
@@ -92,8 +96,10 @@ private:
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
     std::vector<std::uint8_t> retired_;      // per rule (bytes: read per rule per step)
     // The rules whose sets a step applying `applied`'s daughter `daughter`
-    // (kAnyDaughter or past the last: any) can change, by radius (stable),
-    // so that rules of one radius share one area.
+    // (kAnyDaughter or past the last: any) can change, by radius (so that
+    // rules of one radius share one area), each marked with kReadsValues if
+    // it reads an attribute the daughter writes (an area serves both kinds
+    // of rule unless a node's attributes alone changed).
     void affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::uint32_t>& out) const;
     // The rules by radius.
     std::vector<std::size_t> byRadius_;
@@ -106,6 +112,7 @@ private:
     // rule r's lists are firstList_[r] (daughter 0) to firstList_[r + 1] - 1
     // (any daughter). Empty when decided at each step.
     static constexpr std::size_t kMaxListedPairs = std::size_t{1} << 20;
+    static constexpr std::uint32_t kReadsValues = 0x80000000u;
     std::vector<std::uint32_t> listed_, listEnds_, firstList_;
     std::vector<std::uint32_t> scratchAffected_;
     std::size_t setsRepaired_ = 0, setsSkipped_ = 0;
