@@ -167,6 +167,7 @@ void Graph::setEdgeStyle(EdgeId e, StyleProp prop, const Value& v) {
 void Graph::forgetChanges() {
     for (NodeId n : dirty_) nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);
     dirty_.clear();
+    valuesWritten_ = false;
 }
 
 int Graph::degree(NodeId n) const {

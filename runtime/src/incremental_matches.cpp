@@ -47,6 +47,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         refill(r, g);
         byRadius_.push_back(r);
         retired_.push_back(0);
+        ++liveRules_;
         pairs += (info.weights.size() + 1) * rules.ruleCount();
     }
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
@@ -78,6 +79,22 @@ void IncrementalMatches::affectedBy(std::size_t applied, std::size_t daughter, s
     }
 }
 
+template <bool kCountValues>
+void IncrementalMatches::collectChanged(const Graph& g, std::uint32_t full, std::uint32_t partial) {
+    const std::span<const NodeId> changed = g.changedNodes();
+    for (NodeId n : changed)
+        if (g.changedItself(n, kCountValues)) {
+            seen_[n] = full;
+            area_.push_back(n);
+        }
+    // Counting attribute writes, every other changed node had an edge list change.
+    for (NodeId n : changed)
+        if (!g.changedItself(n, kCountValues) && (kCountValues || g.changedLists(n) != 0)) {
+            seen_[n] = partial + 2u * g.changedLists(n);
+            area_.push_back(n);
+        }
+}
+
 void IncrementalMatches::region(const Graph& g, int radius, bool values) {
     if (seen_.size() < g.nodeCapacity()) seen_.resize(g.nodeCapacity() + g.nodeCapacity() / 2, 0);
     if (++mark_ >= 0x1fffffffu) {  // about to wrap: forget every old mark
@@ -87,28 +104,13 @@ void IncrementalMatches::region(const Graph& g, int radius, bool values) {
     const std::uint32_t full = mark_ * 8 + 1, partial = mark_ * 8;
     area_.clear();
     // The nodes that changed themselves first, then those whose edges alone
-    // did, each in the order they changed.
-    // A node whose attributes alone were written counts as changed itself
-    // only for rules reading such an attribute; for the others, only its
-    // edge lists may have changed.
-    const std::span<const NodeId> changed = g.changedNodes();
-    areaSawValuesOnly_ = false;
-    auto itself = [&](NodeId n) {
-        if (g.changedItself(n)) return true;
-        if (!g.changedValuesOnly(n)) return false;
-        areaSawValuesOnly_ = true;
-        return values;
-    };
-    for (NodeId n : changed)
-        if (itself(n)) {
-            seen_[n] = full;
-            area_.push_back(n);
-        }
-    for (NodeId n : changed)
-        if (!itself(n) && g.changedLists(n) != 0) {
-            seen_[n] = partial + 2u * g.changedLists(n);
-            area_.push_back(n);
-        }
+    // did, each in the order they changed. A node whose attributes alone
+    // were written counts as changed itself only for rules reading such an
+    // attribute (`values`); for the others, only its edge lists' changes do.
+    // (Where no attributes were written, both views are the same.)
+    areaSawValuesOnly_ = g.valuesWritten();
+    if (values || !areaSawValuesOnly_) collectChanged<true>(g, full, partial);
+    else collectChanged<false>(g, full, partial);
     // Nodes reached within the radius are revisited fully (a negative
     // condition's nodes may be there).
     auto reach = [&](NodeId o) {
@@ -151,7 +153,6 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
         affectedBy(appliedRule, daughter, scratchAffected_);
         affected = scratchAffected_;
     }
-    setsSkipped_ += sets_.size() - affected.size();
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     bool areaValues = false;
     std::size_t repaired = 0;
@@ -180,6 +181,7 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
         rules_.repair(r, g, area, set, found_);
     }
     setsRepaired_ += repaired;
+    setsSkipped_ += liveRules_ - repaired;
 }
 
 void IncrementalMatches::prefetchMatch(const Graph& g, Match m, int nodes, int edges) const {
@@ -234,6 +236,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, M
 void IncrementalMatches::retire(std::size_t rule) {
     if (retired_[rule]) return;
     retired_[rule] = 1;
+    --liveRules_;
     sets_[rule].release();
 }
 

@@ -74,7 +74,7 @@ struct RuleInfo {
     // Likewise node attributes (ir::Rule::readValues, ir::Daughter::
     // changedValues, as ir::valueKey): for a rule reading none of the
     // attributes a daughter writes, a node whose only change is such a write
-    // (Graph::changedValuesOnly) is not revisited.
+    // (Graph::touchNodeValues) is not revisited.
     bool kindsKnown = false;
     std::vector<int> readKinds;                     // sorted
     bool readsDegrees = false;                      // so removing any edge at a match node matters

@@ -207,7 +207,10 @@ public:
     void touchNode(NodeId n) { touch(n, kChangedItself); }
     // Only attributes of `n` were written (a rule reading none of them need
     // not revisit it).
-    void touchNodeValues(NodeId n) { touch(n, kChangedValues); }
+    void touchNodeValues(NodeId n) {
+        touch(n, kChangedValues);
+        valuesWritten_ = true;
+    }
     void touchEdge(EdgeId e) { touch(edges_[e].src, kChangedOut); touch(edges_[e].dst, kChangedIn); }
     void touchEdgeItself(EdgeId e) { touchNode(edges_[e].src); touchNode(edges_[e].dst); }
     // The changed nodes (each once, in the order they first changed); for
@@ -216,8 +219,13 @@ public:
     // step's few changes are not copied out.
     std::span<const NodeId> changedNodes() const { return {dirty_.data(), dirty_.size()}; }
     bool changedItself(NodeId n) const { return (nodes_[n].marks & kChangedItself) != 0; }
-    // Whether `n`'s attributes were written, and nothing else of it itself.
-    bool changedValuesOnly(NodeId n) const { return (nodes_[n].marks & (kChangedItself | kChangedValues)) == kChangedValues; }
+    // The same, counting a node whose attributes alone were written as
+    // changed itself when `values`.
+    bool changedItself(NodeId n, bool values) const {
+        return (nodes_[n].marks & (values ? kChangedItself | kChangedValues : kChangedItself)) != 0;
+    }
+    // Whether some node's attributes were written (touchNodeValues).
+    bool valuesWritten() const { return valuesWritten_; }
     std::uint8_t changedLists(NodeId n) const {
         return static_cast<std::uint8_t>((nodes_[n].marks & (kChangedOut | kChangedIn)) >> 1);
     }
@@ -265,6 +273,7 @@ private:
         return static_cast<std::size_t>(slot) * defaults_[kind].size() + static_cast<std::size_t>(i);
     }
     std::uint32_t newAttrBlock(int kind, std::vector<Value>* attrs);
+    bool valuesWritten_ = false;
     void clearAttrBlock(int kind, std::uint32_t slot);
     inline void link(EdgeId e);
     inline void unlink(EdgeId e);

@@ -57,8 +57,8 @@ public:
     static constexpr std::size_t kAnyDaughter = ~std::size_t{0};
     void update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything, std::size_t appliedRule,
                 std::size_t daughter);
-    // How many rule sets updates have repaired or refilled, and skipped as
-    // unaffected by their step (for the tests).
+    // How many sets of rules not retired updates have repaired or refilled,
+    // and left alone as their step could not change them (--stats).
     std::size_t setsRepaired() const { return setsRepaired_; }
     std::size_t setsSkipped() const { return setsSkipped_; }
     // Whether the changes `g` has recorded are so many that the next update
@@ -84,9 +84,14 @@ private:
     // marked in seen_ as RepairArea reads them.
     // With `values`, nodes whose attributes alone changed count as changed
     // themselves; without, only their edge lists' changes count.
-    // areaSawValuesOnly_: whether such a node was among the changes.
+    // areaSawValuesOnly_: whether such a node may be among the changes
+    // (Graph::valuesWritten).
     void region(const Graph& g, int radius, bool values);
     bool areaSawValuesOnly_ = false;
+    // Puts the changed nodes in area_ (those changed themselves, counting
+    // attribute writes if kCountValues, first), marked `full` or `partial`.
+    template <bool kCountValues>
+    void collectChanged(const Graph& g, std::uint32_t full, std::uint32_t partial);
     bool inArea(NodeId n) const { return (seen_[n] >> 3) == mark_; }
     // Empties `rule`'s set and fills it by a full search.
     void refill(std::size_t rule, const Graph& g);
@@ -116,6 +121,7 @@ private:
     std::vector<std::uint32_t> listed_, listEnds_, firstList_;
     std::vector<std::uint32_t> scratchAffected_;
     std::size_t setsRepaired_ = 0, setsSkipped_ = 0;
+    std::size_t liveRules_ = 0;   // rules not retired
     GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;
