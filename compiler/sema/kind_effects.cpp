@@ -53,7 +53,8 @@ void readValues(const ir::Expr& e, const KindOf& kindOf, std::set<long long>& ou
     for (const auto& a : e.args) readValues(a, kindOf, out);
 }
 
-std::vector<int> changedBy(const ir::Rule& rule, ir::Daughter& d, const std::vector<ir::Kind>& kinds) {
+// Fills d.changedKinds and d.changedValues.
+void describeDaughter(const ir::Rule& rule, ir::Daughter& d, const std::vector<ir::Kind>& kinds) {
     KindSet changed(kinds);
     std::set<long long> values;
     for (int n : d.deletedNodes)
@@ -85,7 +86,7 @@ std::vector<int> changedBy(const ir::Rule& rule, ir::Daughter& d, const std::vec
         if (retyped) changed.add(e.kind, ir::ElemClass::Edge);
         if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
-    return changed.sorted();
+    d.changedKinds = changed.sorted();
 }
 
 }  // namespace
@@ -111,7 +112,7 @@ void describeKindEffects(ir::Rule& rule, const std::vector<ir::Kind>& kinds) {
     // A degree counts the edges of every kind.
     if (rule.readsDegrees) read.add(-1, ir::ElemClass::Edge);
     rule.readKinds = read.sorted();
-    for (auto& d : rule.daughters) d.changedKinds = changedBy(rule, d, kinds);
+    for (auto& d : rule.daughters) describeDaughter(rule, d, kinds);
 }
 
 }  // namespace g2d::sema
