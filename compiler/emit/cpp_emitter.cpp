@@ -19,17 +19,13 @@ std::string cLiteral(const std::string& s) {
     return lit.substr(12, lit.rfind("\", ") - 12 + 1);   // "..."
 }
 
-// `std::vector<int>{a, b}` (typed, so that an empty list stays a vector).
-std::string intList(const std::vector<int>& v) {
-    std::string out = "std::vector<int>{";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + str(v[i]);
-    return out + "}";
-}
-
-// `std::vector<long long>{...}` of ir::valueKey numbers.
-std::string valueKeyList(const std::vector<long long>& v) {
-    std::string out = "std::vector<long long>{";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + str(v[i]) + "LL";
+// `std::vector<int>{a, b}` or `std::vector<long long>{aLL, bLL}` (typed, so
+// that an empty list stays a vector).
+template <class T>
+std::string vectorLiteral(const std::vector<T>& v) {
+    constexpr bool wide = sizeof(T) > sizeof(int);
+    std::string out = wide ? "std::vector<long long>{" : "std::vector<int>{";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + str(v[i]) + (wide ? "LL" : "");
     return out + "}";
 }
 
@@ -278,12 +274,12 @@ private:
             for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);
             out += "};\n";
             out += in + "    info.kindsKnown = true;\n";
-            out += in + "    info.readKinds = " + intList(r.readKinds) + ";\n";
+            out += in + "    info.readKinds = " + vectorLiteral(r.readKinds) + ";\n";
             out += in + "    info.readsDegrees = " + (r.readsDegrees ? "true" : "false") + ";\n";
-            out += in + "    info.readValues = " + valueKeyList(r.readValues) + ";\n";
+            out += in + "    info.readValues = " + vectorLiteral(r.readValues) + ";\n";
             for (const auto& d : r.daughters) {
-                out += in + "    info.changedKinds.push_back(" + intList(d.changedKinds) + ");\n";
-                out += in + "    info.changedValues.push_back(" + valueKeyList(d.changedValues) + ");\n";
+                out += in + "    info.changedKinds.push_back(" + vectorLiteral(d.changedKinds) + ");\n";
+                out += in + "    info.changedValues.push_back(" + vectorLiteral(d.changedValues) + ");\n";
                 out += in + "    info.deletesNodes.push_back(" + (d.deletedNodes.empty() ? "0" : "1") + ");\n";
             }
             for (const auto& d : r.daughters) {

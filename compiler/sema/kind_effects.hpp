@@ -12,8 +12,8 @@
 namespace g2d::sema {
 
 // Fills rule.readKinds, rule.readsDegrees, rule.readValues and every
-// daughter's changedKinds and changedValues, for a rule whose match, negative conditions and daughters
-// are built; `kinds` are the program's.
+// daughter's changedKinds and changedValues, for a rule whose match,
+// negative conditions and daughters are built; `kinds` are the program's.
 void describeKindEffects(ir::Rule& rule, const std::vector<ir::Kind>& kinds);
 
 }  // namespace g2d::sema

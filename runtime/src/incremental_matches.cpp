@@ -140,19 +140,21 @@ bool IncrementalMatches::searchesEverything(const Graph& g) {
     return g.nodeCount() >= kFullSearchMinNodes && 2 * g.changedNodeCount() >= g.nodeCount();
 }
 
+std::span<const std::uint32_t> IncrementalMatches::affectedSets(std::size_t applied, std::size_t daughter) {
+    if (firstList_.empty()) {
+        affectedBy(applied, daughter, scratchAffected_);
+        return scratchAffected_;
+    }
+    const std::uint32_t first = firstList_[applied], last = firstList_[applied + 1] - 1;   // last: any daughter
+    const std::uint32_t list = daughter < last - first ? first + static_cast<std::uint32_t>(daughter) : last;
+    const std::uint32_t begin = list == 0 ? 0 : listEnds_[list - 1];
+    return {listed_.data() + begin, listEnds_[list] - begin};
+}
+
 void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything,
                                 std::size_t appliedRule, std::size_t daughter) {
     if (!everything && g.changedNodes().empty()) return;
-    std::span<const std::uint32_t> affected;
-    if (!firstList_.empty()) {
-        const std::uint32_t first = firstList_[appliedRule], last = firstList_[appliedRule + 1] - 1;   // last: any daughter
-        const std::uint32_t list = daughter < last - first ? first + static_cast<std::uint32_t>(daughter) : last;
-        const std::uint32_t begin = list == 0 ? 0 : listEnds_[list - 1];
-        affected = {listed_.data() + begin, listEnds_[list] - begin};
-    } else {
-        affectedBy(appliedRule, daughter, scratchAffected_);
-        affected = scratchAffected_;
-    }
+    const std::span<const std::uint32_t> affected = affectedSets(appliedRule, daughter);
     int areaRadius = -1;   // the radius area_ was built for in this call (none yet)
     bool areaValues = false;
     std::size_t repaired = 0;

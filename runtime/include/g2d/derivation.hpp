@@ -194,7 +194,8 @@ struct DerivationResult {
     // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.
     long long lookaheadGuesses = 0, lookaheadHits = 0;
     // Rule sets repaired after steps, and left as they were because their
-    // step changed no kind their rule reads (RuleInfo::readKinds).
+    // step changed no kind or attribute their rule reads (RuleInfo::readKinds,
+    // readValues).
     long long setRepairs = 0, setRepairsSkipped = 0;
 };
 

@@ -100,24 +100,26 @@ private:
     std::vector<MatchSet> sets_;
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
     std::vector<std::uint8_t> retired_;      // per rule (bytes: read per rule per step)
+    // The rules by radius (stable).
+    std::vector<std::size_t> byRadius_;
     // The rules whose sets a step applying `applied`'s daughter `daughter`
     // (kAnyDaughter or past the last: any) can change, by radius (so that
     // rules of one radius share one area), each marked with kReadsValues if
     // it reads an attribute the daughter writes (an area serves both kinds
     // of rule unless a node's attributes alone changed).
     void affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::uint32_t>& out) const;
-    // The rules by radius.
-    std::vector<std::size_t> byRadius_;
-    // affectedBy per applied rule and daughter (and any daughter), listed
-    // once where the grammar has at most kMaxListedPairs
-    // (rule, daughter, rule) triples; in larger ones decided at each step
-    // (in scratchAffected_), as a list of every pair would grow with the
-    // square of the rules (10^5 rules: 10^10 entries).
-    // The lists one after another in listed_; list k ends at listEnds_[k];
-    // rule r's lists are firstList_[r] (daughter 0) to firstList_[r + 1] - 1
-    // (any daughter). Empty when decided at each step.
-    static constexpr std::size_t kMaxListedPairs = std::size_t{1} << 20;
     static constexpr std::uint32_t kReadsValues = 0x80000000u;
+    // affectedBy for a step, from the lists below or, without them, decided
+    // now (in scratchAffected_).
+    std::span<const std::uint32_t> affectedSets(std::size_t applied, std::size_t daughter);
+    // affectedBy of every rule and daughter (and any daughter), listed once
+    // where the grammar has at most kMaxListedPairs (rule, daughter, rule)
+    // triples: a list of every triple grows with the square of the rules
+    // (10^5 rules: 10^10 entries). The lists lie one after another in
+    // listed_; list k ends at listEnds_[k]; rule r's lists are firstList_[r]
+    // (daughter 0) to firstList_[r + 1] - 1 (any daughter). Empty beyond the
+    // limit.
+    static constexpr std::size_t kMaxListedPairs = std::size_t{1} << 20;
     std::vector<std::uint32_t> listed_, listEnds_, firstList_;
     std::vector<std::uint32_t> scratchAffected_;
     std::size_t setsRepaired_ = 0, setsSkipped_ = 0;
