@@ -10,37 +10,40 @@ namespace g2d::rt {
 AgeBuckets::Page& AgeBuckets::pageFor(std::size_t pageNo) {
     if (pageNo >= pages_.size()) {
         const std::size_t size = std::max(pageNo + 1, pages_.size() * 2);
-        pages_.resize(size);
+        pages_.resize(size, kNoPage);
         queued_.resize(size, false);
     }
-    auto& page = pages_[pageNo];
-    if (!page) {
+    std::uint32_t& at = pages_[pageNo];
+    if (at == kNoPage) {
         if (!spare_.empty()) {   // emptied: every bit is 0 again
-            page = std::move(spare_.back());
+            at = spare_.back();
             spare_.pop_back();
         } else {
+            if (pool_.size() >= kNoPage) throw std::length_error("too many age groups");
+            at = static_cast<std::uint32_t>(pool_.size());
             // Slots are written when their key arrives: not clearing 16 KiB
             // leaves a small run's untouched slots unfaulted.
-            page.reset(new Page);
+            Page* page = pool_.extendUnset(1);
             std::fill(std::begin(page->occupied), std::end(page->occupied), 0);
         }
-        page->keys = 0;
-        page->lowWord = kPageWords;
+        Page& page = pool_[at];
+        page.keys = 0;
+        page.lowWord = kPageWords;
         if (!queued_[pageNo]) {
             queued_[pageNo] = true;
             pageHeap_.push_back(pageNo);
             std::push_heap(pageHeap_.begin(), pageHeap_.end(), std::greater<>());
         }
     }
-    return *page;
+    return pool_[at];
 }
 
-void AgeBuckets::insert(std::uint32_t id, long long key) {
+std::uint32_t AgeBuckets::insert(std::uint32_t id, long long key) {
     if (key < 0) throw std::logic_error("a negative age sum");
     const auto k = static_cast<std::uint64_t>(key);
     const auto pageNo = static_cast<std::size_t>(k >> kPageBits);
     // Most keys land on a page in use (keys of nearby steps are close).
-    Page& page = pageNo < pages_.size() && pages_[pageNo] ? *pages_[pageNo] : pageFor(pageNo);
+    Page& page = inUse(pageNo) ? pool_[pages_[pageNo]] : pageFor(pageNo);
     const std::size_t at = k & (kPageKeys - 1);
     Slot& slot = page.slots[at];
     std::uint64_t& word = page.occupied[at / 64];
@@ -51,9 +54,7 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
         ++page.keys;
         slot.size = 0;
     }
-    if (id >= placeOf_.size()) placeOf_.resize(std::max<std::size_t>(id + 1, placeOf_.size() * 2));
     const std::uint32_t size = slot.size & kSizeMask;
-    placeOf_[id] = Place{k, size};
     if (slot.size & kSpilled) {
         spills_[slot.ids[0]].push_back(id);
         ++slot.size;
@@ -64,6 +65,7 @@ void AgeBuckets::insert(std::uint32_t id, long long key) {
         spill(slot, id);
     }
     ++count_;
+    return size;
 }
 
 // A fourth id: the group's ids move to a pooled list, in their order.
@@ -81,38 +83,40 @@ void AgeBuckets::spill(Slot& slot, std::uint32_t id) {
     slot.size = (kInline + 1) | kSpilled;
 }
 
-void AgeBuckets::erase(std::uint32_t id) {
-    const Place place = placeOf_[id];
-    Slot& slot = slotOf(place.key);
+std::uint32_t AgeBuckets::erase(std::uint64_t key, std::uint32_t place) {
+    Slot& slot = slotOf(key);
     std::uint32_t* ids = idsOf(slot);
     const std::uint32_t last = (slot.size & kSizeMask) - 1;
-    const std::uint32_t moved = ids[last];
-    ids[place.pos] = moved;
-    placeOf_[moved].pos = place.pos;
+    const std::uint32_t moved = place == last ? kNoMove : ids[last];
+    ids[place] = ids[last];
     if (slot.size & kSpilled) {
         spills_[slot.ids[0]].pop_back();
         if (last == 0) freeSpills_.push_back(slot.ids[0]);
     }
     --slot.size;
-    if (last == 0) release(place.key);
+    if (last == 0) release(key);
     --count_;
+    return moved;
 }
 
 void AgeBuckets::release(std::uint64_t key) {
     const std::size_t pageNo = static_cast<std::size_t>(key >> kPageBits);
-    Page& page = *pages_[pageNo];
+    Page& page = pool_[pages_[pageNo]];
     const std::size_t at = key & (kPageKeys - 1);
     page.occupied[at / 64] &= ~(std::uint64_t{1} << (at % 64));
-    if (--page.keys == 0) spare_.push_back(std::move(pages_[pageNo]));  // its heap entry goes lazily
+    if (--page.keys == 0) {   // its heap entry goes lazily
+        spare_.push_back(pages_[pageNo]);
+        pages_[pageNo] = kNoPage;
+    }
 }
 
 std::span<const std::uint32_t> AgeBuckets::lowest() {
-    while (!pages_[pageHeap_.front()]) {
+    while (!inUse(pageHeap_.front())) {
         queued_[pageHeap_.front()] = false;
         std::pop_heap(pageHeap_.begin(), pageHeap_.end(), std::greater<>());
         pageHeap_.pop_back();
     }
-    Page& page = *pages_[pageHeap_.front()];
+    Page& page = pool_[pages_[pageHeap_.front()]];
     std::uint32_t w = page.lowWord;
     while (page.occupied[w] == 0) ++w;
     page.lowWord = w;
@@ -121,9 +125,9 @@ std::span<const std::uint32_t> AgeBuckets::lowest() {
 }
 
 std::size_t AgeBuckets::peekLowest(std::uint64_t* keys, std::size_t count) const {
-    if (pageHeap_.empty() || !pages_[pageHeap_.front()]) return 0;
+    if (pageHeap_.empty() || !inUse(pageHeap_.front())) return 0;
     const std::uint64_t pageNo = pageHeap_.front();
-    const Page& page = *pages_[pageNo];
+    const Page& page = pool_[pages_[pageNo]];
     std::size_t found = 0;
     for (std::size_t w = page.lowWord; w < kPageWords && found < count; ++w)
         for (std::uint64_t bits = page.occupied[w]; bits != 0 && found < count; bits &= bits - 1)
@@ -134,11 +138,8 @@ std::size_t AgeBuckets::peekLowest(std::uint64_t* keys, std::size_t count) const
 void AgeBuckets::clear() { *this = AgeBuckets(); }
 
 std::size_t AgeBuckets::memoryBytes() const {
-    std::size_t bytes = pages_.capacity() * sizeof(void*) + spare_.capacity() * sizeof(void*) + pageHeap_.capacity() * 8 +
-                        queued_.capacity() / 8 + placeOf_.capacity() * sizeof(Place);
-    for (const auto& p : pages_)
-        if (p) bytes += sizeof(Page);
-    bytes += spare_.size() * sizeof(Page);
+    std::size_t bytes = pool_.capacity() * sizeof(Page) + (pages_.capacity() + spare_.capacity()) * 4 +
+                        pageHeap_.capacity() * 8 + queued_.capacity() / 8;
     bytes += spills_.capacity() * sizeof(spills_[0]) + freeSpills_.capacity() * 4;
     for (const auto& list : spills_) bytes += list.capacity() * 4;
     return bytes;

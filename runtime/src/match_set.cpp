@@ -10,7 +10,7 @@ namespace g2d::rt {
 
 MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
     : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)),
-      stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 2 : 0)), byAge_(byAge) {
+      stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 3 : 0)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
     if (reads.size() != static_cast<std::size_t>(nodes)) reads.assign(static_cast<std::size_t>(nodes), Incidence::AllEdges);
     for (Incidence r : reads) reads_.push_back(static_cast<std::uint8_t>(r));
@@ -64,7 +64,7 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
         for (int i = 0; i < nn_; ++i) sum += g.nodeAge(p[i]);
         for (int i = 0; i < ne_; ++i) sum += g.edgeAge(p[nn_ + i]);
         std::memcpy(p + stride_ - 2, &sum, sizeof sum);
-        ageBuckets_.insert(id, sum);
+        p[stride_ - 3] = ageBuckets_.insert(id, sum);
     }
 }
 
@@ -86,7 +86,11 @@ void MatchSet::remove(Id id) {
     livePos(last) = pos;
     live_.pop_back();
     p[width_] = kNoId;
-    if (byAge_) ageBuckets_.erase(id);
+    if (byAge_) {
+        const std::uint32_t place = p[stride_ - 3];
+        const std::uint32_t moved = ageBuckets_.erase(static_cast<std::uint64_t>(ageSum(id)), place);
+        if (moved != AgeBuckets::kNoMove) data(moved)[stride_ - 3] = place;
+    }
     free_.push_back(id);
 }
 

@@ -135,7 +135,6 @@ void PickLookahead::aheadOldest(std::size_t rule, const RuleInfo& info, const Ma
             guessed_[0] = next.nodes;
         } else if (j == 2) {   // its record was asked for a step ago
             sets.prefetch(g, set.matchOf(id), set.nodes(), set.edges());
-            ages.prefetchPlace(id);   // where taking it out of its group starts
         } else {
             set.prefetchRecord(id);
         }

@@ -35,6 +35,8 @@ void exercise(std::uint64_t seed, long long keySpread, int operations) {
     g2d::rt::AgeBuckets buckets;
     Model model;
     std::vector<std::uint32_t> live, freeIds;
+    // What a caller keeps per id: its key and its place in its group.
+    std::map<std::uint32_t, std::pair<long long, std::uint32_t>> placeOf;
     std::uint32_t nextId = 0;
     long long base = 0;
     for (int op = 0; op < operations; ++op) {
@@ -52,7 +54,8 @@ void exercise(std::uint64_t seed, long long keySpread, int operations) {
             base += static_cast<long long>(rng.below(3));
             const long long key = rng.below(10) == 0 ? static_cast<long long>(rng.below(static_cast<std::uint64_t>(base + 1)))
                                                      : base + static_cast<long long>(rng.below(static_cast<std::uint64_t>(keySpread)));
-            buckets.insert(id, key);
+            placeOf[id] = {key, buckets.insert(id, key)};
+            REQUIRE(placeOf[id].second == model.groups[key].size());
             model.insert(id, key);
             live.push_back(id);
         } else {
@@ -64,7 +67,15 @@ void exercise(std::uint64_t seed, long long keySpread, int operations) {
             } else {
                 id = live[static_cast<std::size_t>(rng.below(live.size()))];
             }
-            buckets.erase(id);
+            const auto [key, place] = placeOf[id];
+            const std::uint32_t moved = buckets.erase(static_cast<std::uint64_t>(key), place);
+            placeOf.erase(id);
+            const bool wasLast = model.groups[key].back() == id;
+            REQUIRE((moved == g2d::rt::AgeBuckets::kNoMove) == wasLast);
+            if (!wasLast) {
+                REQUIRE(moved == model.groups[key].back());
+                placeOf[moved].second = place;
+            }
             model.erase(id);
             live.erase(std::find(live.begin(), live.end(), id));
             freeIds.push_back(id);
@@ -82,6 +93,7 @@ void exercise(std::uint64_t seed, long long keySpread, int operations) {
                 REQUIRE(keys[i] == static_cast<std::uint64_t>(group->first));
                 const auto ids = buckets.groupIds(keys[i]);
                 REQUIRE(std::vector<std::uint32_t>(ids.begin(), ids.end()) == group->second);
+                for (std::uint32_t at = 0; at < ids.size(); ++at) REQUIRE(placeOf[ids[at]].second == at);
             }
             // Fewer than asked only when the next key is on another page (1024 keys each).
             if (found < 4 && group != model.groups.end()) REQUIRE(group->first / 1024 != model.groups.begin()->first / 1024);

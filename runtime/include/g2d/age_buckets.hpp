@@ -12,8 +12,12 @@
 // The order of the ids inside a group depends only on the sequence of
 // inserts and erases of that key (appended; an erased id's place is taken by
 // the group's last), so draws over a group are reproducible.
+//
+// The caller keeps each id's key and place in its group (MatchSet keeps
+// them in the match's record, which its removal reads anyway): an array of
+// places per id here was 16 bytes a match more and one more cache line to
+// each insert and erase.
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -24,8 +28,13 @@ namespace g2d::rt {
 
 class AgeBuckets {
 public:
-    void insert(std::uint32_t id, long long key);
-    void erase(std::uint32_t id);
+    // Adds `id` to the group of `key`; returns its place there.
+    std::uint32_t insert(std::uint32_t id, long long key);
+    // Takes the id at place `place` out of the group of `key`; the group's
+    // last id moves to that place: returns that id, or kNoMove when the
+    // erased id was the last.
+    static constexpr std::uint32_t kNoMove = 0xffffffffu;
+    std::uint32_t erase(std::uint64_t key, std::uint32_t place);
     bool empty() const { return count_ == 0; }
     // The ids with the lowest key; empty() must be false.
     std::span<const std::uint32_t> lowest();
@@ -37,10 +46,6 @@ public:
     // the lowest page (none if it has just emptied).
     std::size_t peekLowest(std::uint64_t* keys, std::size_t count) const;
     void prefetchGroup(std::uint64_t key) const { prefetchLine(&slotOf(key)); }
-    // Where erase() finds `id` (for an id a later step will pick).
-    void prefetchPlace(std::uint32_t id) const {
-        if (id < placeOf_.size()) prefetchLine(&placeOf_[id]);
-    }
     std::span<const std::uint32_t> groupIds(std::uint64_t key) const {
         const Slot& slot = slotOf(key);
         return {idsOf(slot), slot.size & kSizeMask};
@@ -68,25 +73,26 @@ private:
         std::uint32_t keys;                  // occupied keys
         std::uint32_t lowWord;               // no occupied word lies below it
     };
-    struct Place {
-        std::uint64_t key;
-        std::uint32_t pos;
-    };
     std::uint32_t* idsOf(Slot& s) { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
     const std::uint32_t* idsOf(const Slot& s) const { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
-    Slot& slotOf(std::uint64_t key) { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
-    const Slot& slotOf(std::uint64_t key) const { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
+    Slot& slotOf(std::uint64_t key) { return pool_[pages_[key >> kPageBits]].slots[key & (kPageKeys - 1)]; }
+    const Slot& slotOf(std::uint64_t key) const { return pool_[pages_[key >> kPageBits]].slots[key & (kPageKeys - 1)]; }
+    bool inUse(std::size_t pageNo) const { return pageNo < pages_.size() && pages_[pageNo] != kNoPage; }
     Page& pageFor(std::size_t pageNo);
     void spill(Slot& slot, std::uint32_t id);
     void release(std::uint64_t key);
 
-    std::vector<std::unique_ptr<Page>> pages_;   // by key >> kPageBits
-    std::vector<std::unique_ptr<Page>> spare_;   // emptied pages: every bit 0
+    // Pages live in one pool, so that a large run's come from a mapping whose
+    // memory a helper thread faults in ahead (GrowArray), not from malloc's
+    // heap, whose fresh pages this thread would clear at its first writes.
+    static constexpr std::uint32_t kNoPage = 0xffffffffu;
+    GrowArray<Page> pool_;
+    std::vector<std::uint32_t> pages_;           // by key >> kPageBits: its page in pool_, or kNoPage
+    std::vector<std::uint32_t> spare_;           // emptied pages of pool_: every bit 0
     std::vector<std::uint64_t> pageHeap_;        // min-heap of page numbers (may hold emptied ones)
     std::vector<bool> queued_;                   // per page number: in pageHeap_
     std::vector<std::vector<std::uint32_t>> spills_;
     std::vector<std::uint32_t> freeSpills_;
-    GrowArray<Place> placeOf_;                   // per id: its key and its place in the group
     std::size_t count_ = 0;
 };
 

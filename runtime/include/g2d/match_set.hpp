@@ -146,7 +146,8 @@ private:
     //   word  width_                 its position in live_ (kNoId: free)
     //   words width_ + 1 + 2i, +1    next / prev in the list of matches
     //                                binding its node i (see below)
-    //   2 words after (oldest only)  its age sum
+    //   3 words after (oldest only)  its place in its age group
+    //                                (AgeBuckets), then its age sum
     // The per-node lists are doubly linked through those link words and
     // numbered by the word offset of their `next` word; each node heads one
     // list for positions that read incidences and one for the others.
