@@ -226,7 +226,7 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                     if (observer) observer(step, g);
                     throw timeLimit(limits, step);
                 }
-                g.forgetChanges();
+                if (!everything) g.forgetChanges();
                 if (verify) sets.verify(g, step);
                 applied = true;
                 break;
