@@ -10,32 +10,29 @@ namespace g2d::rt {
 AgeBuckets::Page& AgeBuckets::pageFor(std::size_t pageNo) {
     if (pageNo >= pages_.size()) {
         const std::size_t size = std::max(pageNo + 1, pages_.size() * 2);
-        pages_.resize(size, kNoPage);
+        pages_.resize(size);
         queued_.resize(size, false);
     }
-    std::uint32_t& at = pages_[pageNo];
-    if (at == kNoPage) {
+    auto& page = pages_[pageNo];
+    if (!page) {
         if (!spare_.empty()) {   // emptied: every bit is 0 again
-            at = spare_.back();
+            page = std::move(spare_.back());
             spare_.pop_back();
         } else {
-            if (pool_.size() >= kNoPage) throw std::length_error("too many age groups");
-            at = static_cast<std::uint32_t>(pool_.size());
             // Slots are written when their key arrives: not clearing 16 KiB
             // leaves a small run's untouched slots unfaulted.
-            Page* page = pool_.extendUnset(1);
+            page.reset(new Page);
             std::fill(std::begin(page->occupied), std::end(page->occupied), 0);
         }
-        Page& page = pool_[at];
-        page.keys = 0;
-        page.lowWord = kPageWords;
+        page->keys = 0;
+        page->lowWord = kPageWords;
         if (!queued_[pageNo]) {
             queued_[pageNo] = true;
             pageHeap_.push_back(pageNo);
             std::push_heap(pageHeap_.begin(), pageHeap_.end(), std::greater<>());
         }
     }
-    return pool_[at];
+    return *page;
 }
 
 std::uint32_t AgeBuckets::insert(std::uint32_t id, long long key) {
@@ -43,7 +40,7 @@ std::uint32_t AgeBuckets::insert(std::uint32_t id, long long key) {
     const auto k = static_cast<std::uint64_t>(key);
     const auto pageNo = static_cast<std::size_t>(k >> kPageBits);
     // Most keys land on a page in use (keys of nearby steps are close).
-    Page& page = inUse(pageNo) ? pool_[pages_[pageNo]] : pageFor(pageNo);
+    Page& page = pageNo < pages_.size() && pages_[pageNo] ? *pages_[pageNo] : pageFor(pageNo);
     const std::size_t at = k & (kPageKeys - 1);
     Slot& slot = page.slots[at];
     std::uint64_t& word = page.occupied[at / 64];
@@ -101,22 +98,19 @@ std::uint32_t AgeBuckets::erase(std::uint64_t key, std::uint32_t place) {
 
 void AgeBuckets::release(std::uint64_t key) {
     const std::size_t pageNo = static_cast<std::size_t>(key >> kPageBits);
-    Page& page = pool_[pages_[pageNo]];
+    Page& page = *pages_[pageNo];
     const std::size_t at = key & (kPageKeys - 1);
     page.occupied[at / 64] &= ~(std::uint64_t{1} << (at % 64));
-    if (--page.keys == 0) {   // its heap entry goes lazily
-        spare_.push_back(pages_[pageNo]);
-        pages_[pageNo] = kNoPage;
-    }
+    if (--page.keys == 0) spare_.push_back(std::move(pages_[pageNo]));  // its heap entry goes lazily
 }
 
 std::span<const std::uint32_t> AgeBuckets::lowest() {
-    while (!inUse(pageHeap_.front())) {
+    while (!pages_[pageHeap_.front()]) {
         queued_[pageHeap_.front()] = false;
         std::pop_heap(pageHeap_.begin(), pageHeap_.end(), std::greater<>());
         pageHeap_.pop_back();
     }
-    Page& page = pool_[pages_[pageHeap_.front()]];
+    Page& page = *pages_[pageHeap_.front()];
     std::uint32_t w = page.lowWord;
     while (page.occupied[w] == 0) ++w;
     page.lowWord = w;
@@ -125,9 +119,9 @@ std::span<const std::uint32_t> AgeBuckets::lowest() {
 }
 
 std::size_t AgeBuckets::peekLowest(std::uint64_t* keys, std::size_t count) const {
-    if (pageHeap_.empty() || !inUse(pageHeap_.front())) return 0;
+    if (pageHeap_.empty() || !pages_[pageHeap_.front()]) return 0;
     const std::uint64_t pageNo = pageHeap_.front();
-    const Page& page = pool_[pages_[pageNo]];
+    const Page& page = *pages_[pageNo];
     std::size_t found = 0;
     for (std::size_t w = page.lowWord; w < kPageWords && found < count; ++w)
         for (std::uint64_t bits = page.occupied[w]; bits != 0 && found < count; bits &= bits - 1)
@@ -138,8 +132,11 @@ std::size_t AgeBuckets::peekLowest(std::uint64_t* keys, std::size_t count) const
 void AgeBuckets::clear() { *this = AgeBuckets(); }
 
 std::size_t AgeBuckets::memoryBytes() const {
-    std::size_t bytes = pool_.capacity() * sizeof(Page) + (pages_.capacity() + spare_.capacity()) * 4 +
-                        pageHeap_.capacity() * 8 + queued_.capacity() / 8;
+    std::size_t bytes = pages_.capacity() * sizeof(void*) + spare_.capacity() * sizeof(void*) + pageHeap_.capacity() * 8 +
+                        queued_.capacity() / 8;
+    for (const auto& p : pages_)
+        if (p) bytes += sizeof(Page);
+    bytes += spare_.size() * sizeof(Page);
     bytes += spills_.capacity() * sizeof(spills_[0]) + freeSpills_.capacity() * 4;
     for (const auto& list : spills_) bytes += list.capacity() * 4;
     return bytes;

@@ -18,10 +18,10 @@
 // places per id here was 16 bytes a match more and one more cache line to
 // each insert and erase.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
-#include "g2d/grow_array.hpp"
 #include "g2d/prefetch.hpp"
 
 namespace g2d::rt {
@@ -75,20 +75,14 @@ private:
     };
     std::uint32_t* idsOf(Slot& s) { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
     const std::uint32_t* idsOf(const Slot& s) const { return s.size & kSpilled ? spills_[s.ids[0]].data() : s.ids; }
-    Slot& slotOf(std::uint64_t key) { return pool_[pages_[key >> kPageBits]].slots[key & (kPageKeys - 1)]; }
-    const Slot& slotOf(std::uint64_t key) const { return pool_[pages_[key >> kPageBits]].slots[key & (kPageKeys - 1)]; }
-    bool inUse(std::size_t pageNo) const { return pageNo < pages_.size() && pages_[pageNo] != kNoPage; }
+    Slot& slotOf(std::uint64_t key) { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
+    const Slot& slotOf(std::uint64_t key) const { return pages_[key >> kPageBits]->slots[key & (kPageKeys - 1)]; }
     Page& pageFor(std::size_t pageNo);
     void spill(Slot& slot, std::uint32_t id);
     void release(std::uint64_t key);
 
-    // Pages live in one pool, so that a large run's come from a mapping whose
-    // memory a helper thread faults in ahead (GrowArray), not from malloc's
-    // heap, whose fresh pages this thread would clear at its first writes.
-    static constexpr std::uint32_t kNoPage = 0xffffffffu;
-    GrowArray<Page> pool_;
-    std::vector<std::uint32_t> pages_;           // by key >> kPageBits: its page in pool_, or kNoPage
-    std::vector<std::uint32_t> spare_;           // emptied pages of pool_: every bit 0
+    std::vector<std::unique_ptr<Page>> pages_;   // by key >> kPageBits
+    std::vector<std::unique_ptr<Page>> spare_;   // emptied pages: every bit 0
     std::vector<std::uint64_t> pageHeap_;        // min-heap of page numbers (may hold emptied ones)
     std::vector<bool> queued_;                   // per page number: in pageHeap_
     std::vector<std::vector<std::uint32_t>> spills_;
