@@ -40,11 +40,5 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# npm packages of the VS Code extension (vscode-languageclient; vscode-textmate
-# and vscode-oniguruma for the grammar tests; @vscode/vsce to package), as
-# pinned by its package-lock.json. Install scripts are not needed.
-vscode="$(cd "$(dirname "$0")/.." && pwd)/editors/vscode"
-if [ ! -f "$vscode/node_modules/.package-lock.json" ] || [ "$vscode/package-lock.json" -nt "$vscode/node_modules/.package-lock.json" ]; then
-  echo "install-deps: npm ci in editors/vscode" >&2
-  (cd "$vscode" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error)
-fi
+# npm packages of the VS Code extension, as pinned by its lock file.
+bash "$(dirname "$0")/install-npm.sh"

@@ -6,6 +6,6 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$(realpath -m "${1:-$root/build/g2d.vsix}")"
 mkdir -p "$(dirname "$out")"
-bash "$root/scripts/install-deps.sh"
+bash "$root/scripts/install-npm.sh"
 cd "$root/editors/vscode"
 npx --no-install vsce package --allow-missing-repository --skip-license -o "$out"

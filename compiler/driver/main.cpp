@@ -7,6 +7,7 @@
 #include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
 #include "driver/show_command.hpp"
+#include "g2d/run_options.hpp"
 #include "lsp/server.hpp"
 
 #include <iostream>
@@ -28,27 +29,10 @@ int runCommandLine(int argc, char** argv) {
     check->add_flag("--werror", werror, "Treat warnings as errors");
 
     auto* run = app.add_subcommand("run", "Derive a grammar and write SVG (and graph JSON)");
-    g2d::RunOptions runOptions;
-    std::string svgOut, jsonOut;
-    long long steps = -1;
-    long long maxElements = -1;
-    double timeout = 0;
-    run->add_option("FILE", runOptions.file, ".g2d grammar")->required();
-    run->add_option("-o,--output", svgOut, "SVG output (default: the grammar's name with .svg)");
-    run->add_option("--json", jsonOut, "Graph output in NetworkX node-link JSON");
-    run->add_flag("--no-svg", runOptions.noSvg, "Write no SVG");
-    run->add_option("--seed", runOptions.seed, "Seed of the random generator (default 1)")
-        ->check(CLI::NonNegativeNumber);
-    run->add_option("-D,--define", runOptions.defines, "Set a parameter: -D NAME=VALUE")->allow_extra_args(false);
-    run->add_option("--steps", steps, "Global step limit (overrides the grammar's)");
-    run->add_flag("--stats", runOptions.stats, "Print one JSON line of statistics on stdout");
-    run->add_option("--max-elements", maxElements, "Stop with an error when the graph grows past N nodes + edges (default 10000000)");
-    run->add_option("--timeout", timeout, "Stop with an error when the derivation runs longer than SECONDS");
-    std::string traceHtml, traceJson;
-    run->add_option("--trace", traceHtml, "Write the derivation step by step as a self-contained HTML page");
-    run->add_option("--trace-json", traceJson, "Write the derivation step by step as JSON");
-    run->add_flag("--keep-partial", runOptions.keepPartial,
-                  "After an error or a bound, still write the graph of the last completed step");
+    g2d::rt::RunRequest runRequest;
+    run->add_option("FILE", runRequest.grammarFile, ".g2d grammar (with --help: also lists its parameters)")->required();
+    g2d::rt::addRunOptions(*run, runRequest);
+    run->footer("`g2d run FILE --help` also lists the grammar's parameters.");
 
     auto* show = app.add_subcommand("show", "Draw every production (mother beside daughters) and the axiom");
     g2d::ShowOptions showOptions;
@@ -80,7 +64,10 @@ int runCommandLine(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
+        const int code = app.exit(e);
+        // `g2d run FILE --help`: the file was read before the help was asked for.
+        if (run->parsed() && !runRequest.grammarFile.empty()) return g2d::printGrammarParameters(runRequest.grammarFile);
+        return code;
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
@@ -110,16 +97,7 @@ int runCommandLine(int argc, char** argv) {
         std::ios::sync_with_stdio(false);
         return g2d::lsp::runLanguageServer(std::cin, std::cout);
     }
-    if (run->parsed()) {
-        if (!svgOut.empty()) runOptions.svgOut = svgOut;
-        if (!jsonOut.empty()) runOptions.jsonOut = jsonOut;
-        if (run->count("--steps")) runOptions.steps = steps;
-        if (run->count("--max-elements")) runOptions.maxElements = maxElements;
-        if (run->count("--timeout")) runOptions.timeoutSeconds = timeout;
-        if (!traceHtml.empty()) runOptions.traceHtml = traceHtml;
-        if (!traceJson.empty()) runOptions.traceJson = traceJson;
-        return g2d::runRun(runOptions);
-    }
+    if (run->parsed()) return g2d::runRun(runRequest);
     return 2;
 }
 

@@ -1,35 +1,26 @@
 #include "driver/run_command.hpp"
 
 #include <cstdio>
-#include <cstdlib>
-#include <unistd.h>
 
 #include "driver/compile.hpp"
-#include "g2d/run_driver.hpp"
+#include "g2d/run_options.hpp"
 #include "interp/interpreted_run.hpp"
 
 namespace g2d {
 
-int runRun(const RunOptions& options) {
-    CompileResult compiled = compileAndReport(options.file);
+int runRun(const rt::RunRequest& request) {
+    CompileResult compiled = compileAndReport(request.grammarFile);
     if (!compiled.program) return 1;
-
-    rt::RunRequest request;
-    request.grammarFile = options.file;
-    request.svgOut = options.svgOut;
-    request.jsonOut = options.jsonOut;
-    request.noSvg = options.noSvg;
-    request.seed = options.seed;
-    request.defines = options.defines;
-    request.steps = options.steps;
-    request.stats = options.stats;
-    request.maxElements = options.maxElements;
-    request.timeoutSeconds = options.timeoutSeconds;
-    request.keepPartial = options.keepPartial;
-    request.traceHtml = options.traceHtml;
-    request.traceJson = options.traceJson;
     interp::InterpretedRun grammar(*compiled.program, &compiled.sources);
     return rt::runGrammar(request, grammar);
+}
+
+int printGrammarParameters(const std::string& file) {
+    CompileResult compiled = compileAndReport(file);
+    if (!compiled.program) return 1;
+    interp::InterpretedRun grammar(*compiled.program, &compiled.sources);
+    std::printf("\n%s", rt::parameterHelp(grammar.params()).c_str());
+    return 0;
 }
 
 }  // namespace g2d

@@ -94,9 +94,9 @@ public:
         out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "();\n";
         out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "() { return std::make_unique<Grammar>(); }\n";
         if (options_.withMain)
-            out += "\nint main(int argc, char** argv) {\n    RunRequest request;\n"
+            out += "\nint main(int argc, char** argv) {\n    Grammar grammar;\n    RunRequest request;\n"
                    "    if (auto code = parseRunArguments(argc, argv, " + cLiteral(options_.grammarFile) +
-                   ", request)) return *code;\n    Grammar grammar;\n    return runGrammar(request, grammar);\n}\n";
+                   ", grammar.params(), request)) return *code;\n    return runGrammar(request, grammar);\n}\n";
         return out;
     }
 
@@ -260,6 +260,7 @@ private:
             const auto prio = prog_.priorities.find(r.priority);
             const bool parallel = r.parallel || (prio != prog_.priorities.end() && prio->second.parallel);
             out += in + "{\n" + in + "    RuleInfo info;\n" + in + "    info.priority = " + cppLiteral(ir::Value{r.priority}, ir::kIntType) + ";\n";
+            out += in + "    info.name = " + cppString(r.name) + ";\n";
             out += in + "    info.pick = " + (r.pick == ir::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
             out += in + "    info.parallel = " + (parallel ? "true" : "false") + ";\n";
             out += in + "    info.radius = " + str(r.repairRadius) + ";\n";

@@ -238,61 +238,29 @@ std::string ExprGen::call(const ir::Expr& e, const ExprContext& ctx, std::string
     // Arguments first, left to right, as the interpreter evaluates them.
     std::vector<std::string> a;
     for (const auto& arg : e.args) a.push_back(gen(arg, ctx, out, in));
-    const bool isInt = e.type.kind == TypeKind::Int;
     auto bind = [&](const std::string& expr, bool checked) {
         if (checked) place(e, out, in);
         const std::string t = temp();
         out += in + "const " + cppType(e.type) + " " + t + " = " + expr + ";\n";
         return t;
     };
-    auto f1 = [&](const char* fn) { return bind(std::string("rt::finite(std::") + fn + "(" + a[0] + "))", true); };
-    auto f2 = [&](const char* fn) { return bind(std::string("rt::finite(std::") + fn + "(" + a[0] + ", " + a[1] + "))", true); };
-    switch (e.builtin) {
-    case Builtin::Sin: return f1("sin");
-    case Builtin::Cos: return f1("cos");
-    case Builtin::Tan: return f1("tan");
-    case Builtin::Asin: return f1("asin");
-    case Builtin::Acos: return f1("acos");
-    case Builtin::Atan: return f1("atan");
-    case Builtin::Sqrt: return f1("sqrt");
-    case Builtin::Exp: return f1("exp");
-    case Builtin::Log: return f1("log");
-    case Builtin::Atan2: return f2("atan2");
-    case Builtin::Pow: return f2("pow");
-    case Builtin::Hypot: return f2("hypot");
-    case Builtin::Floor: return bind("rt::floorToInt(" + a[0] + ")", true);
-    case Builtin::Ceil: return bind("rt::ceilToInt(" + a[0] + ")", true);
-    case Builtin::Round: return bind("rt::roundToInt(" + a[0] + ")", true);
-    case Builtin::Radians: return bind("rt::finite(" + a[0] + " * 3.141592653589793 / 180.0)", true);
-    case Builtin::Degrees: return bind("rt::finite(" + a[0] + " * 180.0 / 3.141592653589793)", true);
-    case Builtin::Abs: return isInt ? bind("rt::absInt(" + a[0] + ")", true) : bind("std::fabs(" + a[0] + ")", false);
-    case Builtin::Sign:
-        return bind(std::string(isInt ? "static_cast<long long>" : "static_cast<double>") + "((" + a[0] + " > 0) - (" +
-                        a[0] + " < 0))", false);
-    case Builtin::Clamp: return bind("std::min(std::max(" + a[0] + ", " + a[1] + "), " + a[2] + ")", false);
-    case Builtin::Min:
-    case Builtin::Max: {
-        const std::string t = temp();
-        out += in + cppType(e.type) + " " + t + " = " + a[0] + ";\n";
-        for (std::size_t i = 1; i < a.size(); ++i)
-            out += in + "if (" + a[i] + (e.builtin == Builtin::Min ? " < " : " > ") + t + ") " + t + " = " + a[i] + ";\n";
-        return t;
+    const rt::BuiltinEntry& fn = rt::builtinEntry(e.builtin);
+    const std::string name = std::string("rt::fn::") + fn.cppName;
+    switch (fn.call) {
+    case rt::BuiltinCall::Pure:
+    case rt::BuiltinCall::Random: {
+        std::string call = name + "(" + (fn.call == rt::BuiltinCall::Random ? "*rng_" : "");
+        for (std::size_t i = 0; i < a.size(); ++i) call += (i || fn.call == rt::BuiltinCall::Random ? ", " : "") + a[i];
+        return bind(call + ")", fn.mayFail);
     }
-    case Builtin::MakeVec2: return bind("vec2(" + a[0] + ", " + a[1] + ")", false);
-    case Builtin::Dot: return bind("rt::finite(rt::dot(" + a[0] + ", " + a[1] + "))", true);
-    case Builtin::Cross: return bind("rt::finite(rt::cross(" + a[0] + ", " + a[1] + "))", true);
-    case Builtin::Length: return bind("rt::finite(rt::length(" + a[0] + "))", true);
-    case Builtin::Distance: return bind("rt::finite(rt::distance(" + a[0] + ", " + a[1] + "))", true);
-    case Builtin::Normalize: return bind("rt::normalize(" + a[0] + ")", false);
-    case Builtin::PerpLeft: return bind("rt::perpLeft(" + a[0] + ")", false);
-    case Builtin::PerpRight: return bind("rt::perpRight(" + a[0] + ")", false);
-    case Builtin::Rotate: return bind("rt::finite(rt::rotate(" + a[0] + ", " + a[1] + "))", true);
-    case Builtin::RotateAround: return bind("rt::finite(rt::rotateAround(" + a[0] + ", " + a[1] + ", " + a[2] + "))", true);
-    case Builtin::Angle: return bind("rt::angle(" + a[0] + ")", false);
-    case Builtin::AngleBetween: return bind("rt::angleBetween(" + a[0] + ", " + a[1] + ")", false);
-    case Builtin::Lerp: return bind("rt::finite(rt::lerp(" + a[0] + ", " + a[1] + ", " + a[2] + "))", true);
-    case Builtin::ToInt: return bind("rtc::toInt(" + a[0] + ")", true);
-    case Builtin::ToFloat: return bind("rtc::toFloat(" + a[0] + ")", true);
+    case rt::BuiltinCall::Variadic: {
+        std::string call = a[0];
+        for (std::size_t i = 1; i < a.size(); ++i) call = name + "(" + call + ", " + a[i] + ")";
+        return bind(call, fn.mayFail);
+    }
+    case rt::BuiltinCall::Special: break;
+    }
+    switch (e.builtin) {
     case Builtin::ToStr: return bind(display(a[0], e.args[0].type), false);
     case Builtin::Format: {
         const std::string h = temp();
@@ -306,13 +274,6 @@ std::string ExprGen::call(const ir::Expr& e, const ExprContext& ctx, std::string
         out += "};\n";
         return bind("rt::formatTemplate(" + a[0] + ", " + h + ", " + std::to_string(a.size() - 1) + ")", true);
     }
-    case Builtin::Random: return bind("rng_->unit()", false);
-    case Builtin::Uniform: return bind("rng_->uniform(" + a[0] + ", " + a[1] + ")", false);
-    case Builtin::RandInt:
-        place(e, out, in);
-        out += in + "if (" + a[0] + " > " + a[1] + ") throw OpError(\"randint(\" + std::to_string(" + a[0] +
-               ") + \", \" + std::to_string(" + a[1] + ") + \"): empty range\");\n";
-        return bind("rng_->range(" + a[0] + ", " + a[1] + ")", false);
     case Builtin::Choice: {
         const std::string arr = temp();
         out += in + "const " + cppType(e.type) + " " + arr + "[] = {";
@@ -320,9 +281,9 @@ std::string ExprGen::call(const ir::Expr& e, const ExprContext& ctx, std::string
         out += "};\n";
         return bind(arr + "[rng_->below(" + std::to_string(a.size()) + ")]", false);
     }
-    case Builtin::Normal: return bind("rng_->normal(" + a[0] + ", " + a[1] + ")", false);
+    default: break;
     }
-    return "0";
+    throw std::logic_error("the emitter has no form for built-in `" + std::string(fn.cppName) + "`");
 }
 
 }  // namespace g2d::emit

@@ -56,84 +56,16 @@ Value call(const ir::Expr& e, EvalFrame& f) {
     std::vector<Value> a;
     a.reserve(e.args.size());
     for (const auto& arg : e.args) a.push_back(evaluate(arg, f));
-    const bool isInt = e.type.kind == ir::TypeKind::Int;
-    using rt::finite;
     switch (e.builtin) {
-    case Builtin::Sin: return finite(std::sin(F(a[0])));
-    case Builtin::Cos: return finite(std::cos(F(a[0])));
-    case Builtin::Tan: return finite(std::tan(F(a[0])));
-    case Builtin::Asin: return finite(std::asin(F(a[0])));
-    case Builtin::Acos: return finite(std::acos(F(a[0])));
-    case Builtin::Atan: return finite(std::atan(F(a[0])));
-    case Builtin::Atan2: return finite(std::atan2(F(a[0]), F(a[1])));
-    case Builtin::Sqrt: return finite(std::sqrt(F(a[0])));
-    case Builtin::Exp: return finite(std::exp(F(a[0])));
-    case Builtin::Log: return finite(std::log(F(a[0])));
-    case Builtin::Pow: return finite(std::pow(F(a[0]), F(a[1])));
-    case Builtin::Hypot: return finite(std::hypot(F(a[0]), F(a[1])));
-    case Builtin::Floor: return rt::floorToInt(F(a[0]));
-    case Builtin::Ceil: return rt::ceilToInt(F(a[0]));
-    case Builtin::Round: return rt::roundToInt(F(a[0]));
-    case Builtin::Radians: return finite(F(a[0]) * 3.141592653589793 / 180.0);
-    case Builtin::Degrees: return finite(F(a[0]) * 180.0 / 3.141592653589793);
-    case Builtin::Abs: return isInt ? Value{rt::absInt(I(a[0]))} : Value{std::fabs(F(a[0]))};
-    case Builtin::Sign:
-        if (isInt) return static_cast<long long>((I(a[0]) > 0) - (I(a[0]) < 0));
-        return static_cast<double>((F(a[0]) > 0) - (F(a[0]) < 0));
-    case Builtin::Clamp:
-        if (isInt) return std::min(std::max(I(a[0]), I(a[1])), I(a[2]));
-        return std::min(std::max(F(a[0]), F(a[1])), F(a[2]));
-    case Builtin::Min:
-    case Builtin::Max: {
-        Value best = a[0];
-        for (std::size_t i = 1; i < a.size(); ++i) {
-            const bool less = isInt ? I(a[i]) < I(best) : F(a[i]) < F(best);
-            const bool greater = isInt ? I(a[i]) > I(best) : F(a[i]) > F(best);
-            if (e.builtin == Builtin::Min ? less : greater) best = a[i];
-        }
-        return best;
-    }
-    case Builtin::MakeVec2: return vec2{F(a[0]), F(a[1])};
-    case Builtin::Dot: return finite(rt::dot(V(a[0]), V(a[1])));
-    case Builtin::Cross: return finite(rt::cross(V(a[0]), V(a[1])));
-    case Builtin::Length: return finite(rt::length(V(a[0])));
-    case Builtin::Distance: return finite(rt::distance(V(a[0]), V(a[1])));
-    case Builtin::Normalize: return rt::normalize(V(a[0]));
-    case Builtin::PerpLeft: return rt::perpLeft(V(a[0]));
-    case Builtin::PerpRight: return rt::perpRight(V(a[0]));
-    case Builtin::Rotate: return finite(rt::rotate(V(a[0]), F(a[1])));
-    case Builtin::RotateAround: return finite(rt::rotateAround(V(a[0]), F(a[1]), V(a[2])));
-    case Builtin::Angle: return rt::angle(V(a[0]));
-    case Builtin::AngleBetween: return rt::angleBetween(V(a[0]), V(a[1]));
-    case Builtin::Lerp:
-        if (e.type.kind == ir::TypeKind::Vec2) return finite(rt::lerp(V(a[0]), V(a[1]), F(a[2])));
-        return finite(rt::lerp(F(a[0]), F(a[1]), F(a[2])));
-    case Builtin::ToInt:
-        if (auto* d = std::get_if<double>(&a[0])) return rt::floatToInt(*d);
-        if (auto* b = std::get_if<bool>(&a[0])) return static_cast<long long>(*b);
-        if (auto* s = std::get_if<std::string>(&a[0])) return rt::parseInt(*s);
-        return a[0];
-    case Builtin::ToFloat:
-        if (auto* n = std::get_if<long long>(&a[0])) return static_cast<double>(*n);
-        if (auto* b = std::get_if<bool>(&a[0])) return *b ? 1.0 : 0.0;
-        if (auto* s = std::get_if<std::string>(&a[0])) return rt::parseFloat(*s);
-        return a[0];
     case Builtin::ToStr: return display(a[0], *f.prog);
     case Builtin::Format: {
         std::vector<rt::FormatHole> holes;
         for (std::size_t i = 1; i < a.size(); ++i) holes.push_back(hole(a[i], *f.prog));
         return rt::formatTemplate(S(a[0]), holes.data(), holes.size());
     }
-    case Builtin::Random: return f.rng->unit();
-    case Builtin::Uniform: return f.rng->uniform(F(a[0]), F(a[1]));
-    case Builtin::RandInt:
-        if (I(a[0]) > I(a[1]))
-            throw rt::OpError("randint(" + std::to_string(I(a[0])) + ", " + std::to_string(I(a[1])) + "): empty range");
-        return f.rng->range(I(a[0]), I(a[1]));
     case Builtin::Choice: return a[static_cast<std::size_t>(f.rng->below(a.size()))];
-    case Builtin::Normal: return f.rng->normal(F(a[0]), F(a[1]));
+    default: return rt::callBuiltin(e.builtin, a.data(), a.size(), f.rng);
     }
-    throw rt::OpError("unknown built-in");
 }
 
 Value arith(const ir::Expr& e, const Value& l, const Value& r) {

@@ -33,6 +33,7 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     std::size_t maxNodes = 0, maxEdges = 0;
     for (const auto& r : st.prog->rules) {
         rt::RuleInfo info;
+        info.name = r.name;
         info.priority = r.priority;
         info.pick = r.pick == ir::Pick::Oldest ? rt::Pick::Oldest : rt::Pick::Random;
         auto prio = st.prog->priorities.find(r.priority);

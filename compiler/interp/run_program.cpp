@@ -9,14 +9,13 @@ std::vector<rt::Value> defaultParams(const ir::Program& prog) {
 }
 
 RunResult runProgram(const ir::Program& prog, std::vector<rt::Value> params, std::uint64_t seed,
-                     std::optional<long long> steps, const rt::StepObserver& observer, RunFailure* failure) {
+                     const rt::RunSettings& settings, const rt::StepObserver& observer, RunFailure* failure) {
     RunResult out;
     out.grammar = std::make_unique<InterpretedRun>(prog, nullptr);
     rt::RunProgress progress;
     try {
-        rt::RunLimits limits;
-        limits.steps = steps;
-        rt::DerivedRun derived = rt::deriveGrammar(*out.grammar, params, seed, limits, observer, &progress);
+        rt::DerivedRun derived;
+        rt::deriveGrammar(*out.grammar, params, seed, settings, derived, observer, &progress);
         out.derivation = derived.result;
         out.hitDefaultLimit = derived.hitDefaultLimit;
     } catch (const EvalError&) {

@@ -29,7 +29,7 @@ struct RunFailure {
 
 // Throws EvalError (with `failure` filled in) and rt::RunawayError.
 RunResult runProgram(const ir::Program& prog, std::vector<rt::Value> params, std::uint64_t seed,
-                     std::optional<long long> steps, const rt::StepObserver& observer = {},
+                     const rt::RunSettings& settings, const rt::StepObserver& observer = {},
                      RunFailure* failure = nullptr);
 
 std::vector<rt::Value> defaultParams(const ir::Program& prog);

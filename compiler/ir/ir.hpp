@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "diag/source.hpp"
+#include "g2d/builtins.hpp"
 
 namespace g2d::ir {
 
@@ -63,18 +64,9 @@ struct ElemRef {
 enum class ElemFact { Pos, Age, Id, Degree, InDegree, OutDegree };
 
 // ---- expressions -----------------------------------------------------------------
-enum class Builtin {
-    // math
-    Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Min, Max, Floor, Ceil, Round, Pow, Exp, Log,
-    Clamp, Sign, Radians, Degrees, Hypot,
-    // vectors
-    MakeVec2, Dot, Cross, Length, Distance, Normalize, PerpLeft, PerpRight, Rotate, RotateAround,
-    Angle, AngleBetween, Lerp,
-    // conversions and strings
-    ToInt, ToFloat, ToStr, Format,
-    // randomness (drawn from the run's generator)
-    Random, Uniform, RandInt, Choice, Normal,
-};
+// The built-in functions are the runtime's (g2d/builtins.hpp): one definition
+// that the folder, the interpreter and generated code all call.
+using Builtin = rt::Builtin;
 
 enum class ExprOp {
     Literal,     // value

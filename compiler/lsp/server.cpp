@@ -14,6 +14,7 @@
 #include "lsp/positions.hpp"
 #include "lsp/symbol_index.hpp"
 #include "sema/builtins.hpp"
+#include "sema/element_facts.hpp"
 
 namespace g2d::lsp {
 
@@ -320,13 +321,19 @@ private:
             items.push_back(json{{"label", label}, {"kind", kind}, {"detail", detail}});
         };
         if (!p.receiver.empty()) {
-            // After `x.`: x's attributes (all attributes if x's kind is unknown), and its position.
+            // After `x.`: x's attributes (all attributes if x's kind is unknown),
+            // and the facts of its class (an edge has no position).
             std::string kind;
-            if (const Symbol* r = p.doc->index->resolve(p.receiver, kMainFile, p.line, p.col)) kind = r->typeName;
+            bool isEdge = false;
+            if (const Symbol* r = p.doc->index->resolve(p.receiver, kMainFile, p.line, p.col)) {
+                kind = r->typeName;
+                isEdge = r->kind == SymbolKind::PatternEdge || r->kind == SymbolKind::DaughterEdge;
+            }
             for (const auto& s : p.doc->index->all())
                 if (s.kind == SymbolKind::Attribute && (kind.empty() || s.container == kind))
                     add(s.name, 10, s.typeName + " (" + s.container + ")");
-            add("pos", 10, "vec2 (position)");
+            for (const auto& f : sema::elementFacts())
+                if (!isEdge || f.onEdges) add(f.name, 10, f.meaning);
             return items;
         }
         for (const Symbol* s : p.doc->index->visible(kMainFile, p.line, p.col))

@@ -3,6 +3,7 @@
 #include <climits>
 #include <cmath>
 
+#include "g2d/builtins.hpp"
 #include "g2d/ops.hpp"
 #include "g2d/vec_math.hpp"
 
@@ -28,56 +29,40 @@ rt::vec2 asVec(const Value& v) {
 }
 Value fromVec(rt::vec2 v) { return ir::Vec2{v.x, v.y}; }
 
-std::optional<Value> foldCall(const Expr& e, const std::vector<Value>& a) {
-    auto f = [&](int i) { return asNumber(a[i]); };
-    auto v = [&](int i) { return asVec(a[i]); };
-    auto finite = [](double d) -> std::optional<Value> {
-        if (!std::isfinite(d)) return std::nullopt;
-        return Value{d};
-    };
-    switch (e.builtin) {
-    case Builtin::Sin: return finite(std::sin(f(0)));
-    case Builtin::Cos: return finite(std::cos(f(0)));
-    case Builtin::Tan: return finite(std::tan(f(0)));
-    case Builtin::Asin: return finite(std::asin(f(0)));
-    case Builtin::Acos: return finite(std::acos(f(0)));
-    case Builtin::Atan: return finite(std::atan(f(0)));
-    case Builtin::Atan2: return finite(std::atan2(f(0), f(1)));
-    case Builtin::Sqrt: return finite(std::sqrt(f(0)));
-    case Builtin::Exp: return finite(std::exp(f(0)));
-    case Builtin::Log: return finite(std::log(f(0)));
-    case Builtin::Pow: return finite(std::pow(f(0), f(1)));
-    case Builtin::Hypot: return finite(std::hypot(f(0), f(1)));
-    case Builtin::Radians: return finite(f(0) * 3.141592653589793 / 180.0);
-    case Builtin::Degrees: return finite(f(0) * 180.0 / 3.141592653589793);
-    case Builtin::Abs:
-        if (e.type.kind == TypeKind::Int) return Value{std::llabs(std::get<long long>(a[0]))};
-        return Value{std::fabs(f(0))};
-    case Builtin::Min:
-    case Builtin::Max: {
-        Value best = a[0];
-        for (std::size_t i = 1; i < a.size(); ++i) {
-            const bool less = asNumber(a[i]) < asNumber(best);
-            if ((e.builtin == Builtin::Min) == less && asNumber(a[i]) != asNumber(best)) best = a[i];
-        }
-        return best;
-    }
-    case Builtin::MakeVec2: return Value{ir::Vec2{f(0), f(1)}};
-    case Builtin::Dot: return Value{rt::dot(v(0), v(1))};
-    case Builtin::Cross: return Value{rt::cross(v(0), v(1))};
-    case Builtin::Length: return Value{rt::length(v(0))};
-    case Builtin::Distance: return Value{rt::distance(v(0), v(1))};
-    case Builtin::Normalize: return fromVec(rt::normalize(v(0)));
-    case Builtin::PerpLeft: return fromVec(rt::perpLeft(v(0)));
-    case Builtin::PerpRight: return fromVec(rt::perpRight(v(0)));
-    case Builtin::Rotate: return fromVec(rt::rotate(v(0), f(1)));
-    case Builtin::RotateAround: return fromVec(rt::rotateAround(v(0), f(1), v(2)));
-    case Builtin::Angle: return Value{rt::angle(v(0))};
-    case Builtin::AngleBetween: return Value{rt::angleBetween(v(0), v(1))};
-    case Builtin::ToFloat:
-        if (std::holds_alternative<long long>(a[0]) || std::holds_alternative<double>(a[0])) return Value{f(0)};
+rt::Value toRuntime(const Value& v) {
+    return std::visit(
+        [](const auto& x) -> rt::Value {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, ir::Vec2>) return rt::vec2(x.x, x.y);
+            else if constexpr (std::is_same_v<T, ir::EnumValue>) return rt::EnumVal{x.enumId, x.index};
+            else return x;
+        },
+        v);
+}
+
+Value fromRuntime(const rt::Value& v) {
+    return std::visit(
+        [](const auto& x) -> Value {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, rt::vec2>) return ir::Vec2{x.x, x.y};
+            else if constexpr (std::is_same_v<T, rt::EnumVal>) return ir::EnumValue{x.enumId, x.index};
+            else return x;
+        },
+        v);
+}
+
+// The runtime's own built-in, so a fold gives what a run gives, error for
+// error. Random draws, str() and format() are left to the run.
+std::optional<Value> foldCall(const Expr& e, const std::vector<Value>& a, std::string* error) {
+    const rt::BuiltinCall how = rt::builtinEntry(e.builtin).call;
+    if (how != rt::BuiltinCall::Pure && how != rt::BuiltinCall::Variadic) return std::nullopt;
+    std::vector<rt::Value> args;
+    for (const auto& v : a) args.push_back(toRuntime(v));
+    try {
+        return fromRuntime(rt::callBuiltin(e.builtin, args.data(), args.size(), nullptr));
+    } catch (const rt::OpError& err) {
+        if (error && error->empty()) *error = err.what();
         return std::nullopt;
-    default: return std::nullopt;  // conversions from strings, formatting, randomness: at run time
     }
 }
 
@@ -209,7 +194,7 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
             if (!v) return std::nullopt;
             args.push_back(std::move(*v));
         }
-        return foldCall(e, args);
+        return foldCall(e, args, error);
     }
     case ExprOp::Add: case ExprOp::Sub: case ExprOp::Mul: case ExprOp::Div: case ExprOp::Mod:
     case ExprOp::Lt: case ExprOp::Le: case ExprOp::Gt: case ExprOp::Ge: case ExprOp::Eq: case ExprOp::Ne: {

@@ -1,5 +1,7 @@
 #include "sema/expr_checker.hpp"
 
+#include "sema/element_facts.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -37,8 +39,6 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
     }
     return prev[b.size()];
 }
-
-const char* factNames[] = {"pos", "age", "id", "degree", "in_degree", "out_degree"};
 
 }  // namespace
 
@@ -161,14 +161,11 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
     }
     if (env.selfKind >= 0) {
         const bool isNode = g_.prog.kinds[env.selfKind].cls == ir::ElemClass::Node;
-        for (int f = 0; f < 6; ++f) {
-            if (id != factNames[f]) continue;
-            const auto fact = static_cast<ir::ElemFact>(f);
-            if (!isNode && fact != ir::ElemFact::Age && fact != ir::ElemFact::Id) break;
+        if (const ElementFact* f = findElementFact(id, isNode)) {
             Expr r;
             r.op = ExprOp::SelfFact;
-            r.fact = fact;
-            r.type = fact == ir::ElemFact::Pos ? ir::kVec2Type : ir::kIntType;
+            r.fact = f->fact;
+            r.type = ir::Type::of(f->type);
             r.span = e.span;
             return r;
         }
@@ -319,25 +316,23 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         return std::nullopt;
     }
     const bool isNode = b.ref.cls == ir::ElemClass::Node;
-    for (int f = 0; f < 6; ++f) {
-        if (member.name != factNames[f]) continue;
-        auto fact = static_cast<ir::ElemFact>(f);
-        const bool nodeOnly = fact == ir::ElemFact::Pos || fact == ir::ElemFact::Degree ||
-                              fact == ir::ElemFact::InDegree || fact == ir::ElemFact::OutDegree;
-        if (nodeOnly && !isNode) break;  // may still be a declared edge attribute
+    // A fact that is a node's only may still be a declared edge attribute.
+    if (const ElementFact* f = findElementFact(member.name, isNode)) {
         Expr r;
         r.op = ExprOp::Fact;
         r.elem = b.ref;
-        r.fact = fact;
-        r.type = fact == ir::ElemFact::Pos ? ir::kVec2Type : ir::kIntType;
+        r.fact = f->fact;
+        r.type = ir::Type::of(f->type);
         r.span = e.span;
         if (env.deps) env.deps->insert(b.ref);
         return r;
     }
     if (b.kind < 0 && !isNode) return std::nullopt;   // an edge whose kind was unknown (reported already)
     if (b.kind < 0) {
+        std::string facts;
+        for (const auto& f : elementFacts()) facts += (facts.empty() ? "" : ", ") + std::string(f.name);
         g_.diags.error(member.span, "wildcard node `" + b.name + "` matches any kind, so it has no attribute `" +
-                                        member.name + "`; only pos, age, id, degree, in_degree, out_degree can be read");
+                                        member.name + "`; only " + facts + " can be read");
         return std::nullopt;
     }
     const auto& kind = g_.prog.kinds[b.kind];
@@ -354,8 +349,8 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
     }
     std::vector<std::string> candidates;
     for (const auto& a : kind.attrs) candidates.push_back(a.name);
-    for (int f = 0; f < 6; ++f)
-        if (isNode || f == 1 || f == 2) candidates.push_back(factNames[f]);
+    for (const auto& f : elementFacts())
+        if (isNode || f.onEdges) candidates.push_back(f.name);
     g_.diags.error(member.span, std::string(isNode ? "node" : "edge") + " kind `" + kind.name +
                                     "` has no attribute `" + member.name + "`" + suggest(member.name, candidates));
     return std::nullopt;

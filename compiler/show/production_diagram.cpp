@@ -221,12 +221,21 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
     return p;
 }
 
-std::string ruleHeading(const ir::Rule& r) {
+// The rule's options, with those its priority gives it (`priority P limit N
+// parallel;`): what decides when and how often it applies.
+std::string ruleHeading(const ir::Rule& r, const ir::Program& prog, const SourceManager& sources) {
     std::string h = "rule " + r.name;
-    if (r.priority != 0) h += " · priority " + std::to_string(r.priority);
+    const auto prio = prog.priorities.find(r.priority);
+    const ir::PriorityConfig* config = prio != prog.priorities.end() ? &prio->second : nullptr;
+    if (r.priority != 0 || config) h += " · priority " + std::to_string(r.priority);
+    if (config && config->limit) {
+        const auto n = sema::fold(*config->limit, prog);
+        h += " · limit " + (n ? std::to_string(std::get<long long>(*n)) : sourceText(sources, config->limit->span)) +
+             " (its priority's)";
+    }
     if (r.pick == ir::Pick::Oldest) h += " · pick oldest";
     if (r.ordered) h += " · ordered";
-    if (r.parallel) h += " · parallel";
+    if (r.parallel || (config && config->parallel)) h += " · parallel";
     return h;
 }
 
@@ -239,7 +248,7 @@ std::string productionsSvg(const ir::Program& prog, const SourceManager& sources
     body += drawPanel(axiomPanel(prog), 20, y + 20);
     y += kPanel + 50;
     for (const auto& r : prog.rules) {
-        body += "<text x=\"20\" y=\"" + num(y + 12) + "\" font-size=\"14\" font-weight=\"bold\">" + xmlEscape(ruleHeading(r)) + "</text>\n";
+        body += "<text x=\"20\" y=\"" + num(y + 12) + "\" font-size=\"14\" font-weight=\"bold\">" + xmlEscape(ruleHeading(r, prog, sources)) + "</text>\n";
         double lineY = y + 28;
         for (const auto& c : r.conditions) {
             body += "<text x=\"20\" y=\"" + num(lineY) + "\" font-size=\"11\" fill=\"#555555\">where " +

@@ -34,7 +34,7 @@ std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng) {
 
 namespace {
 
-RunawayError timeLimit(const DerivationLimits& limits, long long step) {
+RunawayError timeLimit(const DerivationOptions& limits, long long step) {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%g s", limits.timeoutSeconds.value_or(0));
     return RunawayError("time_limit", std::string("the derivation ran past the time limit of ") + seconds + " at step " +
@@ -130,9 +130,36 @@ private:
 
 }  // namespace
 
-DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
-                        const StepObserver& observer, StepTracer* tracer) {
-    const auto start = std::chrono::steady_clock::now();
+namespace {
+
+// Fills in the statistics however the derivation ends (returning or throwing).
+class ResultSummary {
+public:
+    ResultSummary(DerivationResult& result, const PickLookahead& lookahead)
+        : result_(result), lookahead_(lookahead), start_(std::chrono::steady_clock::now()) {}
+    ~ResultSummary() {
+        result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        result_.lookaheadGuesses = lookahead_.guesses();
+        result_.lookaheadHits = lookahead_.hits();
+        if (sets_) {
+            result_.setRepairs = static_cast<long long>(sets_->setsRepaired());
+            result_.setRepairsSkipped = static_cast<long long>(sets_->setsSkipped());
+        }
+    }
+    void follow(const IncrementalMatches& sets) { sets_ = &sets; }
+
+private:
+    DerivationResult& result_;
+    const PickLookahead& lookahead_;
+    const IncrementalMatches* sets_ = nullptr;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits, DerivationResult& result,
+            const StepObserver& observer, StepTracer* tracer) {
+    result = DerivationResult{};
     std::map<long long, Group> byPriority;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const long long p = rules.info(r).priority;
@@ -146,19 +173,20 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
         groups.push_back(std::move(grp));
     }
 
-    DerivationResult result;
     std::vector<std::size_t> order;
     ParallelStep parallel;
     PickLookahead lookahead;
+    std::optional<IncrementalMatches> found;   // before the summary, which reads it as it goes
+    ResultSummary summary(result, lookahead);
     std::optional<DeadlineWatch> deadline;
     if (limits.timeoutSeconds) deadline.emplace(*limits.timeoutSeconds);
-    std::optional<IncrementalMatches> found;
     try {
         found.emplace(rules, g);
     } catch (const DeadlinePassed&) {
         throw timeLimit(limits, 0);
     }
     IncrementalMatches& sets = *found;
+    summary.follow(sets);
     // A priority whose limit is used up never applies again: its rules' sets
     // are no longer kept (mutex STS: the requests, once every process made one).
     auto retireIfSpent = [&](const Group& grp) {
@@ -167,7 +195,6 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
     };
     for (const auto& grp : groups) retireIfSpent(grp);
     g.forgetChanges();
-    static const bool verify = std::getenv("G2D_VERIFY_MATCHES") != nullptr;
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
             result.stopped = StopReason::StepLimit;
@@ -222,12 +249,13 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
                     sets.update(g, newEdgesFrom, newNodesFrom, everything, r, daughter);
                 } catch (const DeadlinePassed&) {
                     // While finding matches after the step: the step itself is complete.
+                    result.steps = step;
                     if (tracer) tracer->stepDone(step, g);
                     if (observer) observer(step, g);
                     throw timeLimit(limits, step);
                 }
                 if (!everything) g.forgetChanges();
-                if (verify) sets.verify(g, step);
+                if (limits.verifyMatches) sets.verify(g, step);
                 applied = true;
                 break;
             }
@@ -245,12 +273,6 @@ DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimi
             throw RunawayError("element_limit", "the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
                                std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
     }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.lookaheadGuesses = lookahead.guesses();
-    result.lookaheadHits = lookahead.hits();
-    result.setRepairs = static_cast<long long>(sets.setsRepaired());
-    result.setRepairsSkipped = static_cast<long long>(sets.setsSkipped());
-    return result;
 }
 
 }  // namespace g2d::rt

@@ -32,9 +32,11 @@ void Grammar::set(const std::string& name, const std::string& value) {
 
 rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
     try {
-        rt::RunLimits limits;
-        limits.steps = steps;
-        last_ = rt::deriveGrammar(*run_, params_, seed_, limits).result;
+        rt::RunSettings settings;
+        settings.steps = steps;
+        rt::DerivedRun derived;
+        rt::deriveGrammar(*run_, params_, seed_, settings, derived);
+        last_ = derived.result;
     } catch (const rt::RunawayError&) {
         throw;
     } catch (const std::exception& e) {

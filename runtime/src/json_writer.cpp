@@ -1,6 +1,8 @@
 #include "g2d/json_writer.hpp"
 
+#include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace g2d::rt {
 
@@ -38,6 +40,21 @@ std::string jsonValue(const Value& v, const JsonSchema& schema) {
     return jsonString(schema.enumValueNames.at(e.enumId).at(e.index));
 }
 
+bool finite(const Value& v) {
+    if (const auto* d = std::get_if<double>(&v)) return std::isfinite(*d);
+    if (const auto* p = std::get_if<vec2>(&v)) return std::isfinite(p->x) && std::isfinite(p->y);
+    return true;
+}
+
+// JSON has no infinities or NaN. Every operation that makes a number checks
+// it, so this only guards the file: nothing invalid is ever written.
+std::string attributeJson(const Value& v, const JsonSchema& schema, const char* cls, std::uint32_t id, const std::string& name) {
+    if (!finite(v))
+        throw std::runtime_error(std::string(cls) + " " + std::to_string(id) + "'s attribute `" + name + "` is " +
+                                 toString(v) + ", which JSON cannot hold");
+    return jsonValue(v, schema);
+}
+
 }  // namespace
 
 std::string writeJson(const Graph& g, const JsonSchema& schema,
@@ -55,10 +72,12 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
         const int k = g.nodeKind(n);
         out += first ? "\n" : ",\n";
         first = false;
+        if (!finite(Value{g.pos(n)})) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
         out += "{\"id\": " + std::to_string(n) + ", \"kind\": " + jsonString(schema.kindNames[k]) + ", \"pos\": [" +
                formatNumber(g.pos(n).x) + ", " + formatNumber(g.pos(n).y) + "], \"age\": " + std::to_string(g.nodeAge(n));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
-            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(attr(false, n, static_cast<int>(a)), schema);
+            out += ", " + jsonString(schema.attrNames[k][a]) + ": " +
+                   attributeJson(attr(false, n, static_cast<int>(a)), schema, "node", n, schema.attrNames[k][a]);
         out += "}";
     }
     out += "],\n\"links\": [";
@@ -75,7 +94,8 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
                jsonString(schema.kindNames[k]) + ", \"directed\": " + (g.kinds()[k].directed ? "true" : "false") +
                ", \"age\": " + std::to_string(g.edgeAge(e));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
-            out += ", " + jsonString(schema.attrNames[k][a]) + ": " + jsonValue(attr(true, e, static_cast<int>(a)), schema);
+            out += ", " + jsonString(schema.attrNames[k][a]) + ": " +
+                   attributeJson(attr(true, e, static_cast<int>(a)), schema, "edge", e, schema.attrNames[k][a]);
         out += "}";
     }
     out += "]}\n";

@@ -14,9 +14,15 @@ namespace g2d::rt {
 
 namespace {
 
-int usageError(const std::string& message) {
-    std::fprintf(stderr, "g2d run: error: %s\n", message.c_str());
+int usageError(const RunRequest& request, const std::string& message) {
+    std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), message.c_str());
     return 2;
+}
+
+std::string trimmed(const std::string& s) {
+    const auto first = s.find_first_not_of(" \t");
+    if (first == std::string::npos) return "";
+    return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
 
 // Parameter values: defaults, then -D overrides. Returns an error message or "".
@@ -25,8 +31,9 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
     for (const auto& p : specs) out.push_back(p.defaultValue);
     for (const auto& d : defines) {
         const auto eq = d.find('=');
-        if (eq == std::string::npos || eq == 0) return "-D " + d + ": expected NAME=VALUE";
-        const std::string name = d.substr(0, eq), text = d.substr(eq + 1);
+        if (eq == std::string::npos || trimmed(d.substr(0, eq)).empty()) return "-D " + d + ": expected NAME=VALUE";
+        // `-D "gens = 3"` reads as gens=3.
+        const std::string name = trimmed(d.substr(0, eq)), text = trimmed(d.substr(eq + 1));
         std::size_t index = specs.size();
         for (std::size_t i = 0; i < specs.size(); ++i)
             if (specs[i].name == name) index = i;
@@ -86,29 +93,28 @@ std::string renderLocatedError(const SourceLocation& at, const std::string& mess
     return out + "  " + ex.line + "\n  " + std::string(ex.pad, ' ') + "^" + std::string(ex.width - 1, '~') + "\n";
 }
 
-DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         const RunLimits& runLimits, const StepObserver& observer, RunProgress* progress,
-                         TraceRecorder* trace) {
+void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed, const RunSettings& settings,
+                   DerivedRun& out, const StepObserver& observer, RunProgress* progress, TraceRecorder* trace) {
+    out = DerivedRun{};
     Rng rng(seed);
     grammar.start(params, rng);
     if (trace) trace->started();
     if (progress) *progress = RunProgress{true, 0};
-    DerivationLimits limits;
+    DerivationOptions options;
     const std::optional<long long> grammarLimit = grammar.stepLimit();
-    limits.steps = runLimits.steps ? runLimits.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
-    limits.perPriority = grammar.priorityLimits();
-    limits.maxElements = runLimits.maxElements;
-    limits.timeoutSeconds = runLimits.timeoutSeconds;
-    DerivedRun out;
-    out.result = derive(
-        grammar.graph(), grammar.rules(), rng, limits,
+    options.steps = settings.steps ? settings.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
+    options.perPriority = grammar.priorityLimits();
+    options.maxElements = settings.maxElements;
+    options.timeoutSeconds = settings.timeoutSeconds;
+    options.verifyMatches = settings.verifyMatches;
+    derive(
+        grammar.graph(), grammar.rules(), rng, options, out.result,
         [&](long long s, const Graph& g) {
             if (progress) progress->step = s;
             if (observer) observer(s, g);
         },
         trace);
-    out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !runLimits.steps && !grammarLimit;
-    return out;
+    out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !settings.steps && !grammarLimit;
 }
 
 namespace {
@@ -130,11 +136,11 @@ void reportRunError(const RunRequest& request, GrammarRun& grammar, const std::e
 int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     std::vector<Value> params;
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
-        return usageError(err);
-    if (request.steps && *request.steps < 0) return usageError("--steps must not be negative");
-    if (request.maxElements && *request.maxElements <= 0) return usageError("--max-elements must be positive");
+        return usageError(request, err);
+    if (request.steps && *request.steps < 0) return usageError(request, "--steps must not be negative");
+    if (request.maxElements && *request.maxElements <= 0) return usageError(request, "--max-elements must be positive");
     if (request.timeoutSeconds && !(*request.timeoutSeconds > 0 && *request.timeoutSeconds < 1e9))
-        return usageError("--timeout must be a positive number of seconds");
+        return usageError(request, "--timeout must be a positive number of seconds");
 
     // Outputs are opened first, so an unwritable path fails before the work.
     std::unique_ptr<AtomicFile> svgFile, jsonFile, traceHtmlFile, traceJsonFile;
@@ -146,26 +152,26 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (request.traceHtml) traceHtmlFile = std::make_unique<AtomicFile>(*request.traceHtml);
         if (request.traceJson) traceJsonFile = std::make_unique<AtomicFile>(*request.traceJson);
     } catch (const OutputError& e) {
-        std::fprintf(stderr, "g2d run: error: %s\n", e.what());
+        std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;
     }
 
-    RunLimits limits;
-    limits.steps = request.steps;
-    limits.maxElements = request.maxElements ? static_cast<std::size_t>(*request.maxElements) : kDefaultMaxElements;
-    limits.timeoutSeconds = request.timeoutSeconds;
+    RunSettings settings;
+    settings.steps = request.steps;
+    settings.maxElements = request.maxElements ? static_cast<std::size_t>(*request.maxElements) : kDefaultMaxElements;
+    settings.timeoutSeconds = request.timeoutSeconds;
+    settings.verifyMatches = request.verifyMatches;
     RunProgress progress;
     std::unique_ptr<TraceRecorder> trace;
     if (traceHtmlFile || traceJsonFile) trace = std::make_unique<TraceRecorder>(grammar);
-    DerivationResult result;
+    DerivedRun derived;
+    const DerivationResult& result = derived.result;   // complete, or as far as the derivation got
     std::string stopped;
     int status = 0;
     try {
         Progress display;
-        const DerivedRun derived =
-            deriveGrammar(grammar, params, request.seed, limits, [&](long long s, const Graph& g) { display.update(s, g); },
-                          &progress, trace.get());
-        result = derived.result;
+        deriveGrammar(grammar, params, request.seed, settings, derived,
+                      [&](long long s, const Graph& g) { display.update(s, g); }, &progress, trace.get());
         stopped = stopName(result.stopped);
         if (derived.hitDefaultLimit) {
             std::fprintf(stderr,
@@ -177,7 +183,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
             status = 1;
         }
     } catch (const OutputError& e) {
-        std::fprintf(stderr, "g2d run: error: %s\n", e.what());
+        std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;
     } catch (const RunawayError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.grammarFile.c_str(), e.what());
@@ -189,7 +195,6 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         status = 1;
     }
     if (status != 0 && !(request.keepPartial && progress.started)) return status;
-    if (status != 0) result.steps = progress.step;
 
     try {
         const Graph& graph = grammar.graph();
@@ -218,7 +223,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
                         result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped);
     } catch (const OutputError& e) {
-        std::fprintf(stderr, "g2d run: error: %s\n", e.what());
+        std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;
     } catch (const std::exception& e) {
         reportRunError(request, grammar, e, progress.step);

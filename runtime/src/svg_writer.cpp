@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace g2d::rt {
 
@@ -61,7 +62,12 @@ std::string attrName(std::string p) {
     return p;
 }
 
-std::string num(double x) { return formatNumber(x); }
+// Every number a grammar makes is checked where it is made; this guards the
+// file, so that nothing invalid is ever written.
+std::string num(double x) {
+    if (!std::isfinite(x)) throw std::runtime_error("the drawing has a non-finite number (" + formatNumber(x) + ")");
+    return formatNumber(x);
+}
 
 // The frame is presentational: micro-unit steps (rounded outward) keep it tidy.
 double down(double x) { return std::floor(x * 1e6 + 1e-6) / 1e6; }
@@ -86,11 +92,18 @@ std::string passThrough(const DrawItem& it, const std::vector<std::pair<const ch
 
 struct Box {
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-    void add(vec2 p, double pad) {
-        x0 = std::min(x0, p.x - pad);
-        y0 = std::min(y0, p.y - pad);
-        x1 = std::max(x1, p.x + pad);
-        y1 = std::max(y1, p.y + pad);
+    void add(vec2 p, double pad) { add(p, pad, pad); }
+    void add(vec2 p, double halfWidth, double halfHeight) {
+        x0 = std::min(x0, p.x - halfWidth);
+        y0 = std::min(y0, p.y - halfHeight);
+        x1 = std::max(x1, p.x + halfWidth);
+        y1 = std::max(y1, p.y + halfHeight);
+    }
+    // A w × h box centred at c, turned by `degrees`: its corners' extent.
+    void addTurned(vec2 c, double w, double h, double degrees) {
+        const double a = degrees * 3.141592653589793 / 180.0;
+        const double cs = std::abs(std::cos(a)), sn = std::abs(std::sin(a));
+        add(c, (w * cs + h * sn) / 2, (w * sn + h * cs) / 2);
     }
     bool empty() const { return x0 > x1; }
 };
@@ -131,7 +144,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.02"}}) + "/>\n";
         } else if (tag == "rect") {
             const double w = styleNumber(it, "width", 0.1), h = styleNumber(it, "height", 0.1);
-            box.add(c, std::hypot(w, h) / 2);
+            box.addTurned(c, w, h, rotate);
             body += "<rect x=\"" + num(c.x - w / 2) + "\" y=\"" + num(c.y - h / 2) + "\" width=\"" + num(w) +
                     "\" height=\"" + num(h) + "\"" + rotation + passThrough(it, {}) + "/>\n";
         } else if (tag == "path") {
@@ -146,7 +159,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.05"}}) + "/>\n";
         } else if (tag == "image") {
             const double w = styleNumber(it, "width", 1), h = styleNumber(it, "height", 1);
-            box.add(c, std::hypot(w, h) / 2);
+            box.addTurned(c, w, h, rotate);
             // Images and text are flipped back upright inside the y-up group.
             body += "<image href=\"" + xmlEscape(styleText(it, "href", "")) + "\" x=\"" + num(-w / 2) + "\" y=\"" +
                     num(-h / 2) + "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" transform=\"translate(" +

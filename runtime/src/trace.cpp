@@ -60,6 +60,7 @@ void TraceRecorder::started() {
 void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) {
     const RuleInfo& info = grammar_.rules().info(rule);
     Pending p;
+    p.rule = info.name;
     p.daughter = static_cast<std::uint32_t>(daughter);
     p.nodes.assign(m.nodes, m.nodes + info.nodeKinds.size());
     p.edges.assign(m.edges, m.edges + info.edgeCount);
@@ -75,7 +76,9 @@ void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, co
 void TraceRecorder::stepDone(long long step, const Graph& g) {
     TraceStep s;
     s.step = step;
-    s.rule = grammar_.currentRule();
+    // The rule applied (every rewrite of a step is one rule's), not the one
+    // whose code ran last: match repair runs other rules' searches.
+    if (!pending_.empty()) s.rule = pending_.front().rule;
     for (const auto& p : pending_) {
         s.daughters.push_back(p.daughter);
         s.matchedNodes.insert(s.matchedNodes.end(), p.nodes.begin(), p.nodes.end());

@@ -48,7 +48,16 @@ expect_code 1 ./div -D d=2 --steps 1000000000 --timeout 0.2 --no-svg
 grep -q 'ran past the time limit of 0.2 s at step' err.txt || fail "compiled --timeout: $(cat err.txt)"
 expect_code 2 ./div --timeout -3
 expect_code 2 ./div --frobnicate
+grep -q '^div: error: .*frobnicate' err.txt || fail "a compiled program names itself: $(cat err.txt)"
+expect_code 2 ./div -D nosuch=1
+grep -qx 'div: error: -D nosuch: the grammar has no parameter `nosuch` (its parameters: d)' err.txt || fail "compiled -D error: $(cat err.txt)"
+expect_code 2 ./div --seed -1
 expect_code 0 ./div --help
+grep -q '^  d: float  *default 0$' out.txt || fail "compiled --help lists no parameters: $(cat out.txt)"
+for option in --max-elements --timeout --keep-partial --trace --trace-json --verify-matches; do
+  grep -q -- "$option" out.txt || fail "compiled --help lacks $option"
+done
+expect_code 0 ./div -D " d = 2 " --steps 3 --stats --no-svg --verify-matches
 
 # A literal style value is one constant of the generated grammar, copied by
 # every element it is set on; computed ones are evaluated per rewrite. The

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every example: `g2d check --werror` passes, and `g2d run` completes for three
-# seeds with no options but the seed, writing well-formed SVG and JSON.
+# seeds with no options but the seed (and --verify-matches: incremental
+# matching checked after every step), writing well-formed SVG and JSON.
 # Usage: examples_test.sh G2D SOURCE_DIR EXAMPLE.g2d
 set -u
 g2d="$1"; src="$2"; example="$3"
@@ -10,7 +11,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 "$g2d" check --werror "$example" || fail "g2d check --werror $example"
 for seed in 1 2 3; do
   # Run from the example's folder so relative image paths resolve as in the gallery.
-  (cd "$(dirname "$example")" && "$g2d" run "$example" --seed "$seed" -o "$work/out.svg" --json "$work/out.json" --stats) \
+  (cd "$(dirname "$example")" && "$g2d" run "$example" --seed "$seed" -o "$work/out.svg" --json "$work/out.json" --stats --verify-matches) \
       >"$work/stats.txt" 2>"$work/err.txt" || { fail "seed $seed: $(cat "$work/err.txt")"; continue; }
   grep -q '"stopped": "\(terminal\|step_limit\)"' "$work/stats.txt" || fail "seed $seed: stats $(cat "$work/stats.txt")"
   grep -q 'warning' "$work/err.txt" && fail "seed $seed: warnings: $(cat "$work/err.txt")"

@@ -25,6 +25,22 @@ assert node["kind"] == "Point" and node["pos"] == [-4, 0] and node["age"] == 0
 assert all(d["kind"] == "Seg" and d["directed"] and d["lod"] == 2 for _, _, d in g.edges(data=True))
 PY
 
+# -D tolerates spaces round the name and the value
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D " max_lod = 2 " --no-svg --stats
+grep -q '"steps": 15,' out.txt || fail "-D with spaces: $(cat out.txt) $(cat err.txt)"
+expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D "gens = 3" --no-svg
+grep -qx 'g2d run: error: -D gens: the grammar has no parameter `gens` (its parameters: max_lod)' err.txt || fail "-D unknown: $(cat err.txt)"
+# `g2d run FILE --help` lists the grammar's parameters, with types and defaults
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" --help
+grep -q -- '--verify-matches' out.txt || fail "run --help: $(cat out.txt)"
+grep -q '^Parameters of the grammar (-D NAME=VALUE):$' out.txt && grep -q '^  max_lod: int  *default 4$' out.txt \
+  || fail "run FILE --help lists no parameters: $(cat out.txt)"
+
+# --verify-matches: the same outputs, checked after every step
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=3 -o v1.svg --verify-matches
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=3 -o v2.svg
+cmp -s v1.svg v2.svg || fail "--verify-matches changed the output"
+
 # Default output name: the grammar's name in the current folder
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=1
 [ -f koch_snowflake.svg ] || fail "default output koch_snowflake.svg missing"
@@ -83,6 +99,14 @@ expect_code 1 "$g2d" run spin.g2d -o spin.svg --json spin.json --keep-partial
 grep -q '"steps": 10000' spin.json && grep -q '"stopped": "default_step_limit"' spin.json || fail "--keep-partial at the default limit: $(head -c 300 spin.json)"
 grep -q 'note: wrote the graph of step 10000, the last completed (--keep-partial)' err.txt || fail "keep-partial note: $(cat err.txt)"
 xmllint --noout spin.svg || fail "partial SVG is not well-formed"
+# --stats after a bound reports the completed steps, not zeros
+expect_code 1 "$g2d" run spin.g2d --no-svg --keep-partial --stats
+grep -qx '{"steps": 10000, "nodes": 1, "edges": 0, "seconds": [0-9.e-]*, "seed": 1, "stopped": "default_step_limit", "applications": 10000, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 0, "repairs_skipped": 0}' out.txt \
+  || fail "--stats at the default limit: $(cat out.txt)"
+grep -q '"seconds": 0,' out.txt && fail "--stats at the default limit: no time: $(cat out.txt)"
+expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=20 --max-elements 1000 --no-svg --keep-partial --stats
+grep -qx '{"steps": 166, "nodes": 501, "edges": 501, "seconds": [0-9.e-]*, "seed": 1, "stopped": "element_limit", "applications": 166, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 166, "repairs_skipped": 0}' out.txt \
+  || fail "--stats at the element bound: $(cat out.txt)"
 
 # --timeout: a wall-time bound with the step it tripped at; a usage error unless positive
 expect_code 1 "$g2d" run spin.g2d --steps 1000000000 --timeout 0.2 -o slow.svg
@@ -92,6 +116,13 @@ grep -q '^spin.g2d: error: the derivation ran past the time limit of 0.2 s at st
 expect_code 1 "$g2d" run spin.g2d --steps 1000000000 --timeout 0.2 -o slow.svg --json slow.json --keep-partial
 grep -q '"stopped": "time_limit"' slow.json || fail "--timeout --keep-partial: $(head -c 300 slow.json)"
 [ -e slow.svg ] || fail "--timeout --keep-partial wrote no SVG"
+expect_code 1 "$g2d" run spin.g2d --steps 1000000000 --timeout 0.2 --no-svg --keep-partial --stats
+python3 - out.txt <<'PY' || fail "--stats at the time bound: $(cat out.txt)"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["stopped"] == "time_limit" and s["steps"] > 0 and s["applications"] == s["steps"], s
+assert s["seconds"] >= 0.2, s
+PY
 for bad in 0 -1 nan abc; do
   expect_code 2 "$g2d" run spin.g2d --timeout "$bad" --no-svg
 done

@@ -52,6 +52,21 @@ page = open(sys.argv[1]).read()
 assert re.search(r'<line [^>]*stroke="#ff8c00"[^>]*/>\n<text [^>]*>e: E</text>', page), "e kept"
 PY
 
+# Options a rule takes from its priority: the limit and parallel steps.
+cat > prio.g2d <<'G2D'
+node P;
+node Q;
+param n: int = 4;
+axiom { a: P; }
+priority 1 limit 3 parallel;
+priority 2 limit n;
+rule Fill priority 1 { match { a: P; } produce { a; q: Q at (0, 1); } }
+rule Count priority 2 { match { q: Q; } produce { } }
+G2D
+expect_code 0 "$g2d" show prio.g2d -o prio.svg
+has prio.svg '>rule Fill · priority 1 · limit 3 (its priority&apos;s) · parallel</text>'
+has prio.svg '>rule Count · priority 2 · limit n (its priority&apos;s)</text>'
+
 # Errors: a bad grammar, an unwritable output, no output
 printf 'node P;\naxiom { a: Q; }\n' > bad.g2d
 expect_code 1 "$g2d" show bad.g2d -o bad.svg

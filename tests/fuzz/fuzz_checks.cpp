@@ -1,6 +1,7 @@
 #include "fuzz_checks.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -78,32 +79,44 @@ void checkInterpreterHere(const std::uint8_t* data, std::size_t size) {
     checkDiagnostics(r);
     if (!r.program) return;
     interp::InterpretedRun run(*r.program, &r.sources);
-    rt::RunLimits limits;
-    limits.steps = 300;
-    limits.maxElements = 20000;
-    limits.timeoutSeconds = 2.0;
+    rt::RunSettings settings;
+    settings.steps = 300;
+    settings.maxElements = 20000;
+    settings.timeoutSeconds = 2.0;
+    settings.verifyMatches = true;
     try {
         std::vector<rt::Value> params;
         for (const auto& p : run.params()) params.push_back(p.defaultValue);
-        rt::deriveGrammar(run, params, 7, limits);
-    } catch (const std::logic_error& e) {
-        violated(std::string("internal error in the derivation: ") + e.what());
+        rt::DerivedRun derived;
+        rt::deriveGrammar(run, params, 7, settings, derived);
     } catch (const std::exception& e) {
-        // A run-time error or a bound: it must be reportable like g2d run does.
-        if (std::string(e.what()).empty()) violated("a run-time error without a message");
-        (void)run.locate(e);
-        (void)run.currentRule();
+        if (auto wrong = unexpectedRunFailure(e, run)) violated("in the derivation: " + *wrong);
     }
     // Whatever the derivation reached is a completed step: it must draw and write.
     try {
         (void)rt::writeSvg(run.drawItems(), run.svgDefs());
         (void)rt::writeJson(run.graph(), run.jsonSchema(), {},
                             [&](bool isEdge, std::uint32_t id, int a) { return run.attribute(isEdge, id, a); });
-    } catch (const std::logic_error& e) {
-        violated(std::string("internal error while drawing: ") + e.what());
-    } catch (const std::exception&) {
-        // A style expression failing at draw time is a run-time error g2d run reports.
+    } catch (const std::exception& e) {
+        if (auto wrong = unexpectedRunFailure(e, run)) violated("while drawing: " + *wrong);
     }
+}
+
+std::optional<std::string> unexpectedRunFailure(const std::exception& e, const rt::GrammarRun& run) {
+    const std::string what = e.what();
+    // A bound: the graph is that of the last completed step, and g2d run says which bound.
+    if (dynamic_cast<const rt::RunawayError*>(&e)) {
+        if (what.empty()) return "a bound without a message";
+        return std::nullopt;
+    }
+    // A run-time error in the grammar: g2d run shows it at its place in the source.
+    if (run.locate(e)) {
+        if (what.empty()) return "a run-time error without a message";
+        return std::nullopt;
+    }
+    // Anything else (std::logic_error, std::bad_variant_access, std::out_of_range, an
+    // OpError that escaped its location, ...) is a fault of g2d's.
+    return std::string("an error g2d cannot locate: ") + what;
 }
 
 }  // namespace g2d::fuzz

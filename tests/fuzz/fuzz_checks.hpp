@@ -9,6 +9,11 @@
 // hangs and memory errors are found by the sanitizers and libFuzzer itself.
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <optional>
+#include <string>
+
+#include "g2d/grammar_run.hpp"
 
 namespace g2d::fuzz {
 
@@ -24,5 +29,10 @@ void checkInterpreter(const std::uint8_t* data, std::size_t size);
 // the stack g2d itself runs on: driver/big_stack.hpp).
 void checkFrontEndHere(const std::uint8_t* data, std::size_t size);
 void checkInterpreterHere(const std::uint8_t* data, std::size_t size);
+
+// Why `e`, ending a run (or its drawing) of `run`, is a fault of g2d's rather
+// than an error it reports: only a bound (rt::RunawayError) or a run-time
+// error located in the grammar's source may end a run. Nullopt when it may.
+std::optional<std::string> unexpectedRunFailure(const std::exception& e, const rt::GrammarRun& run);
 
 }  // namespace g2d::fuzz

@@ -2,14 +2,7 @@
 // under step, element and time budgets, with incremental matching verified
 // against a full search after every step. Inputs are mutated as tokens (see
 // token_mutator.hpp), so that most of them stay valid grammars.
-#include <cstdlib>
-
 #include "fuzz_checks.hpp"
-
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    setenv("G2D_VERIFY_MATCHES", "1", 1);
-    return 0;
-}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     g2d::fuzz::checkInterpreter(data, size);

@@ -108,6 +108,20 @@ rule Grow parallel { match { p: P; } produce { q: Q at p.pos + (0, 1); } }
 check(len(t["steps"]) == 1 and t["steps"][0]["daughters"] == [0, 0, 0] and t["steps"][0]["deleted"]["nodes"] == [0, 1, 2]
       and len(t["steps"][0]["added"]["nodes"]) == 3, "parallel step: %s" % t["steps"])
 
+# 4b. Each step names the rule applied, not the one whose code ran last: after
+# First's step, match repair runs Second's search before the step is recorded.
+priorities = """node A; node B; node C;
+axiom { a: A; }
+rule First priority 0 { match { x: A; } produce { y: B at (1, 0); } }
+rule Second priority 1 { match { x: B; } produce { z: C at (2, 0); } }
+"""
+t, g = trace_of(priorities, "priorities")
+check([s["rule"] for s in t["steps"]] == ["First", "Second"], "rules named in the trace: %s" % [s["rule"] for s in t["steps"]])
+run([g2d, "build", os.path.join(work, "priorities.g2d"), "-o", "priorities_program"])
+run([os.path.join(work, "priorities_program"), "--no-svg", "--trace-json", "priorities.compiled.json"])
+check(open(os.path.join(work, "priorities.compiled.json")).read() == open(os.path.join(work, "priorities.trace.json")).read(),
+      "compiled and interpreted traces of priorities.g2d differ")
+
 # 5. Compiled programs write the same trace, and --trace writes a page holding it.
 run([g2d, "build", koch_path, "-o", "koch_program"])
 run([os.path.join(work, "koch_program"), "-D", "max_lod=1", "--no-svg", "--trace-json", "koch.compiled.json", "--trace", "koch.html"])

@@ -249,7 +249,7 @@ TEST_CASE("incrementally kept matches equal a full search after every random rew
         INFO(text);
         auto compiled = test::compile(text);
         REQUIRE(compiled.program);
-        auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1 + trial, {});
+        auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1 + trial, test::verified());
         CHECK(run.derivation.steps <= 40);
     }
 }
@@ -332,7 +332,7 @@ TEST_CASE("sets left alone by steps that change no kind their rules read equal a
         INFO(text);
         auto compiled = test::compile(text);
         REQUIRE(compiled.program);
-        auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1 + trial, {});
+        auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1 + trial, test::verified());
         skipped += run.derivation.setRepairsSkipped;
         repaired += run.derivation.setRepairs;
         ran += run.derivation.steps > 0;

@@ -25,8 +25,10 @@ struct Run {
     interp::RunResult run;
 };
 
+// Incremental matching is verified after every step unless `verify` is off
+// (for derivations too long to search in full at each step).
 Run derive(const std::string& source, std::uint64_t seed = 1, std::optional<long long> steps = {},
-           std::vector<std::pair<std::string, rt::Value>> params = {}) {
+           std::vector<std::pair<std::string, rt::Value>> params = {}, bool verify = true) {
     Run r{compile(source), {}};
     INFO(test::firstError(r.compiled));
     REQUIRE(r.compiled.program);
@@ -35,7 +37,9 @@ Run derive(const std::string& source, std::uint64_t seed = 1, std::optional<long
     for (const auto& [name, v] : params)
         for (std::size_t i = 0; i < prog.params.size(); ++i)
             if (prog.params[i].name == name) values[i] = v;
-    r.run = interp::runProgram(prog, values, seed, steps);
+    rt::RunSettings settings = test::verified(steps);
+    settings.verifyMatches = verify;
+    r.run = interp::runProgram(prog, values, seed, settings);
     return r;
 }
 
@@ -212,7 +216,7 @@ TEST_CASE("daughters are chosen by weight", "[run][weights]") {
     int bs = 0;
     const int runs = 4000;
     for (int seed = 0; seed < runs; ++seed) {
-        auto run = interp::runProgram(*c.program, {}, static_cast<std::uint64_t>(seed), {});
+        auto run = interp::runProgram(*c.program, {}, static_cast<std::uint64_t>(seed), test::verified());
         bs += static_cast<int>(countNodes(run.graph(), kindB));
     }
     // Expected 3/4; the standard deviation of the count is sqrt(n p (1-p)) ≈ 27.4.
@@ -239,7 +243,7 @@ TEST_CASE("priorities and both kinds of limits, as in the thesis's §4.1 example
     CHECK(limited.run.graph().nodeCount() == 1 + 200);  // 400 tokens eaten after 100 counts
 }
 
-TEST_CASE("lower priority values go first; equal priorities in random order", "[run][priorities]") {
+TEST_CASE("lower priority values go first, equal priorities in random order", "[run][priorities]") {
     auto r = derive("node S; node A; node B;\naxiom { s: S at (0, 0); }\nlimit 1;\n"
                     "rule Late priority 5 { match { s: S; } produce { s; b: B at (0, 0); } }\n"
                     "rule Early priority -1 { match { s: S; } produce { s; a: A at (0, 0); } }\n");
@@ -386,7 +390,7 @@ TEST_CASE("run-time errors name the expression", "[run][errors]") {
     REQUIRE(c.program);
     interp::RunFailure failure;
     try {
-        interp::runProgram(*c.program, {}, 1, {}, {}, &failure);
+        interp::runProgram(*c.program, {}, 1, test::verified(), {}, &failure);
         FAIL("expected a division by zero");
     } catch (const interp::EvalError& e) {
         CHECK(std::string(e.what()) == "division by zero");
@@ -452,7 +456,7 @@ public:
         ++repairs[rule];
         const std::size_t before = set.size();   // after the broken matches were dropped
         anchored[rule].push_back(0);
-        rt::RuleSet::repair(rule, g, area, set, scratch);   // the interpreter's (through findAnchored above)
+        if (!forgetful) rt::RuleSet::repair(rule, g, area, set, scratch);   // the interpreter's (through findAnchored above)
         added[rule].push_back(static_cast<long long>(set.size() - before));
     }
     void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override {
@@ -467,11 +471,41 @@ private:
     rt::RuleSet& inner_;
 
 public:
+    bool forgetful = false;   // repairs nothing: the sets go stale
     std::vector<long long> repairs;
     std::vector<std::vector<long long>> added;   // per rule, per repair: the matches it added
     std::vector<std::vector<long long>> anchored;   // per rule, per repair: its anchored searches
 };
 }  // namespace
+
+TEST_CASE("match verification is an option of the derivation, and finds a stale set", "[run][incremental]") {
+    // A rule set whose repair adds nothing loses the matches of the edges
+    // each split creates. With verifyMatches the derivation says so at the
+    // first step; without, it goes on with the stale set.
+    const std::string src = "node P;\nedge E directed;\naxiom { a: P at (0, 0); b: P at (1, 0); a -[E]-> b; }\nlimit 6;\n"
+                            "rule Split { match { s: P; e: P; old: s -[E]-> e; } produce { s; e; p: P at (0, 1); s -[E]-> p; p -[E]-> e; } }\n";
+    auto compiled = test::compile(src);
+    REQUIRE(compiled.program);
+    for (const bool verify : {true, false}) {
+        rt::Rng rng(3);
+        auto [st, g] = test::startInterpreter(*compiled.program, rng);
+        interp::InterpretedRules inner(st);
+        CountingRules rules(inner);
+        rules.forgetful = true;
+        rt::DerivationOptions options;
+        options.steps = 6;
+        options.verifyMatches = verify;
+        rt::DerivationResult result;
+        if (verify) {
+            CHECK_THROWS_WITH(rt::derive(g, rules, rng, options, result),
+                              "incremental matching lost track of rule 0 after step 1: 0 matches kept, 2 found");
+            CHECK(result.steps == 0);
+        } else {
+            rt::derive(g, rules, rng, options, result);
+            CHECK(result.steps == 1);   // the only match was rewritten; the new ones were never found
+        }
+    }
+}
 
 TEST_CASE("a priority whose limit is used up is no longer kept up to date", "[run][limits]") {
     // Grow (priority 0, limit 5) would still match after its 5 steps; Walk
@@ -492,10 +526,12 @@ TEST_CASE("a priority whose limit is used up is no longer kept up to date", "[ru
     auto [st, g] = test::startInterpreter(prog, rng);
     interp::InterpretedRules inner(st);
     CountingRules rules(inner);
-    rt::DerivationLimits limits;
+    rt::DerivationOptions limits;
+    limits.verifyMatches = true;
     limits.steps = 25;
     limits.perPriority[0] = 5;
-    const auto result = rt::derive(g, rules, rng, limits);
+    rt::DerivationResult result;
+    rt::derive(g, rules, rng, limits, result);
     CHECK(result.steps == 25);
     CHECK(g.nodeCount() == 26);
     CHECK(rules.repairs[0] == 4);    // after Grow's steps 1-4; its 5th step spends the limit
@@ -527,9 +563,11 @@ TEST_CASE("edge changes alone keep the matches they do not break", "[run][increm
     auto [st, g] = test::startInterpreter(*compiled.program, rng);
     interp::InterpretedRules inner(st);
     CountingRules rules(inner);
-    rt::DerivationLimits limits;
+    rt::DerivationOptions limits;
+    limits.verifyMatches = true;
     limits.steps = 12;
-    const auto result = rt::derive(g, rules, rng, limits);
+    rt::DerivationResult result;
+    rt::derive(g, rules, rng, limits, result);
     CHECK(result.steps == 12);
     CHECK(g.edgeCount() == 15);
     CHECK(rules.added[0] == std::vector<long long>(12, 2));
@@ -543,7 +581,8 @@ TEST_CASE("edge changes alone keep the matches they do not break", "[run][increm
     // A second derivation on the same graph counts its steps from 1 again,
     // so edge ages do not tell its new edges: they are told by id.
     rules.added[0].clear();
-    const auto again = rt::derive(g, rules, rng, limits);
+    rt::DerivationResult again;
+    rt::derive(g, rules, rng, limits, again);
     CHECK(again.steps == 12);
     CHECK(g.edgeCount() == 27);
     CHECK(rules.added[0] == std::vector<long long>(12, 2));
@@ -584,7 +623,7 @@ TEST_CASE("a node lacking an edge kind its pattern node needs is not searched", 
     SECTION("with an edge of the needed kind the condition is evaluated") {
         auto c = compile(kinds + "axiom { a: A; b: B; a -[F]-> b; b -[E]-> a; }\n" + rule);
         REQUIRE(c.program);
-        CHECK_THROWS_WITH(interp::runProgram(*c.program, {}, 1, {}), "division by zero");
+        CHECK_THROWS_WITH(interp::runProgram(*c.program, {}, 1, test::verified()), "division by zero");
     }
 }
 
@@ -599,7 +638,7 @@ TEST_CASE("picks are guessed a step ahead on large match sets", "[run][lookahead
     std::string random = koch(), oldest = koch();
     random.replace(random.find("pick oldest"), 11, "");
     for (const auto& [source, leastHits] : {std::pair{random, 0.99}, std::pair{oldest, 0.99}}) {
-        auto r = derive(source, 5, 40000, {{"max_lod", 14LL}});
+        auto r = derive(source, 5, 40000, {{"max_lod", 14LL}}, /*verify=*/false);
         const auto& d = r.run.derivation;
         CHECK(d.steps == 40000);
         CHECK(r.run.graph().edgeCount() == 3 + 3 * 40000);

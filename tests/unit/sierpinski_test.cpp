@@ -40,7 +40,7 @@ TEST_CASE("Sierpinski: node and edge counts follow the formula, geometry is exac
     REQUIRE(compiled.program);
     for (long long g = 0; g <= 8; ++g) {
         INFO("generation " << g);
-        auto run = interp::runProgram(*compiled.program, {g}, 1, {});
+        auto run = interp::runProgram(*compiled.program, {g}, 1, test::verified());
         const rt::Graph& graph = run.graph();
         const auto p3 = static_cast<std::size_t>(std::pow(3, g + 1));
         CHECK(run.derivation.steps == g);

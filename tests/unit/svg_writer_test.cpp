@@ -69,3 +69,19 @@ TEST_CASE("an empty graph is a valid, tiny drawing", "[svg]") {
     const std::string svg = writeSvg({}, {});
     CHECK(contains(svg, "viewBox=\"0 -1 1 1\""));
 }
+
+TEST_CASE("rectangles and images are measured by their corners, turned or not", "[svg]") {
+    // A 10 × 1 lot: 10 wide and 1 high (not a 10.05-wide square round its
+    // half-diagonal), padded by the node stroke (0.02) and 2 % of 10.
+    const std::string lot = writeSvg({node(0, {0, 0}, {{"tag", std::string("rect")}, {"width", 10.0}, {"height", 1.0}})}, {});
+    CHECK(contains(lot, "viewBox=\"-5.22 -0.72 10.44 1.44\""));
+    // Turned a quarter: 1 wide and 10 high.
+    const std::string upright =
+        writeSvg({node(0, {0, 0}, {{"tag", std::string("rect")}, {"width", 10.0}, {"height", 1.0}, {"rotate", 90.0}})}, {});
+    CHECK(contains(upright, "viewBox=\"-0.72 -5.22 1.44 10.44\""));
+    // An image 2 × 4 turned by 30°: half-extents (2 cos 30° + 4 sin 30°) / 2 and (2 sin 30° + 4 cos 30°) / 2.
+    const std::string image = writeSvg(
+        {node(0, {0, 0}, {{"tag", std::string("image")}, {"href", std::string("a.png")}, {"width", 2.0}, {"height", 4.0}, {"rotate", 30.0}})},
+        {});
+    CHECK(contains(image, "viewBox=\"-1.975308 -2.341333 3.950616 4.682666\""));
+}

@@ -39,4 +39,11 @@ InterpreterStart startInterpreter(const ir::Program& prog, rt::Rng& rng) {
     return InterpreterStart{std::move(state), std::move(graph)};
 }
 
+rt::RunSettings verified(std::optional<long long> steps) {
+    rt::RunSettings s;
+    s.steps = steps;
+    s.verifyMatches = true;
+    return s;
+}
+
 }  // namespace g2d::test

@@ -6,6 +6,7 @@
 #include "driver/compile.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/rng.hpp"
+#include "g2d/run_driver.hpp"
 #include "interp/program_state.hpp"
 
 namespace g2d::test {
@@ -30,5 +31,9 @@ struct InterpreterStart {
     rt::Graph graph;
 };
 InterpreterStart startInterpreter(const ir::Program& prog, rt::Rng& rng);
+
+// Run settings for tests: after every step, every rule's kept matches are
+// checked against a full search (a std::logic_error on a difference).
+rt::RunSettings verified(std::optional<long long> steps = {});
 
 }  // namespace g2d::test

@@ -28,14 +28,14 @@ struct Stats {
 };
 
 Stats run(const ir::Program& p, std::uint64_t seed) {
-    auto r = interp::runProgram(p, interp::defaultParams(p), seed, {});
+    auto r = interp::runProgram(p, interp::defaultParams(p), seed, test::verified());
     CHECK(r.derivation.stopped == rt::StopReason::Terminal);
     return {r.derivation.steps, r.graph().nodeCount(), r.graph().edgeCount()};
 }
 
 }  // namespace
 
-TEST_CASE("varied façade: the paper's 116 steps; 450 elements = 468 less 18 dangling edges", "[thesis][facade]") {
+TEST_CASE("varied façade: the paper's 116 steps, 450 elements = 468 less 18 dangling edges", "[thesis][facade]") {
     // The original tool left 18 edges without an end node; single-pushout deletion removes them.
     const auto p = load("facade_varied.g2d");
     for (std::uint64_t seed : {1, 2, 3, 4, 5}) {
@@ -77,7 +77,7 @@ TEST_CASE("square pattern: steps = 22+16(2d+2+l), elements = 112+48l+64d", "[the
     CHECK(small.nodes + small.edges == 160);
 }
 
-TEST_CASE("circular pattern: n leaves take 1+3n steps; the thesis's 28 steps / 20 elements occur", "[thesis][pattern]") {
+TEST_CASE("circular pattern: n leaves take 1+3n steps, the thesis's 28 steps / 20 elements occur", "[thesis][pattern]") {
     const auto p = load("pattern_circle.g2d");
     bool thesisOutcome = false;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -98,7 +98,7 @@ TEST_CASE("mutex STS benchmark: 5n - 1 steps, the token once around the ring", "
         auto params = interp::defaultParams(p);
         params[0] = rt::Value{n};
         for (std::uint64_t seed : {1, 2}) {
-            auto r = interp::runProgram(p, params, seed, {});
+            auto r = interp::runProgram(p, params, seed, test::verified());
             CHECK(r.derivation.stopped == rt::StopReason::Terminal);
             CHECK(r.derivation.steps == 5 * n - 1);
             // n processes and the resource; n ring edges and the token at the process after the first holder.

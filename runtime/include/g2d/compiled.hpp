@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "g2d/builtins.hpp"
 #include "g2d/deadline.hpp"
 #include "g2d/derivation.hpp"
 #include "g2d/grammar_run.hpp"
@@ -23,6 +24,7 @@
 #include "g2d/prefetch.hpp"
 #include "g2d/rng.hpp"
 #include "g2d/run_driver.hpp"
+#include "g2d/run_options.hpp"
 #include "g2d/svg_writer.hpp"
 #include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"
@@ -54,15 +56,6 @@ inline FormatHole hole(double v) { return FormatHole{str(v), v, 0, 1}; }
 inline FormatHole hole(bool v) { return FormatHole{str(v), 0, 0, 0}; }
 inline FormatHole hole(const std::string& v) { return FormatHole{v, 0, 0, 0}; }
 inline FormatHole hole(vec2 v) { return FormatHole{str(v), v.x, v.y, 2}; }
-
-inline double toFloat(long long v) { return static_cast<double>(v); }
-inline double toFloat(double v) { return v; }
-inline double toFloat(bool v) { return v ? 1.0 : 0.0; }
-inline double toFloat(const std::string& v) { return parseFloat(v); }
-inline long long toInt(long long v) { return v; }
-inline long long toInt(double v) { return floatToInt(v); }
-inline long long toInt(bool v) { return v ? 1 : 0; }
-inline long long toInt(const std::string& v) { return parseInt(v); }
 
 // A growable array that does not copy itself as it grows when T is plain
 // data (GrowArray), a std::vector otherwise.

@@ -44,6 +44,7 @@ namespace g2d::rt {
 enum class Pick { Random, Oldest };
 
 struct RuleInfo {
+    std::string name;                 // as written in the grammar (traces, messages)
     long long priority = 0;
     Pick pick = Pick::Random;
     bool parallel = false;
@@ -179,11 +180,15 @@ inline constexpr std::size_t kDefaultMaxElements = 10'000'000;
 
 enum class StopReason { Terminal, StepLimit };
 
-struct DerivationLimits {
+struct DerivationOptions {
     std::optional<long long> steps;               // global limit (none: unlimited)
     std::map<long long, long long> perPriority;   // priority -> limit
     std::size_t maxElements = kDefaultMaxElements;
     std::optional<double> timeoutSeconds;         // wall time of the derivation (none: unlimited)
+    // After every step, check every rule's kept matches against a full search
+    // (IncrementalMatches::verify; std::logic_error on a difference). Costs a
+    // full search per step: for tests, and for users who suspect the engine.
+    bool verifyMatches = false;
 };
 
 struct DerivationResult {
@@ -223,8 +228,11 @@ private:
     std::string bound_;
 };
 
-DerivationResult derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationLimits& limits,
-                        const StepObserver& observer = {}, StepTracer* tracer = nullptr);
+// Derives until no rule applies or a limit is reached. `result` is kept up
+// to date: when a bound or a run-time error ends the derivation with an
+// exception, it describes the steps completed until then (statistics included).
+void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& options, DerivationResult& result,
+            const StepObserver& observer = {}, StepTracer* tracer = nullptr);
 
 // Helpers shared with tests: the selection rules, as specified above.
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);

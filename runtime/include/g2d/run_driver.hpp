@@ -15,6 +15,7 @@ namespace g2d::rt {
 inline constexpr long long kDefaultStepLimit = 10000;
 
 struct RunRequest {
+    std::string program = "g2d run";      // who reports usage and output errors ("g2d run", or a compiled program's name)
     std::string grammarFile;              // the .g2d file (messages, default output name)
     std::optional<std::string> svgOut;    // default: the grammar's name with .svg, in the current folder
     std::optional<std::string> jsonOut;
@@ -28,13 +29,15 @@ struct RunRequest {
     bool keepPartial = false;             // on a bound or a run-time error, still write the graph of the last completed step
     std::optional<std::string> traceHtml; // the derivation step by step, as a self-contained page
     std::optional<std::string> traceJson; // the same, as data
+    bool verifyMatches = false;           // check incremental matching after every step (DerivationOptions)
 };
 
 // The bounds of one derivation.
-struct RunLimits {
+struct RunSettings {
     std::optional<long long> steps;       // overrides the grammar's global limit
     std::size_t maxElements = kDefaultMaxElements;
     std::optional<double> timeoutSeconds;
+    bool verifyMatches = false;
 };
 
 // How far a derivation got (kept up to date while it runs, for errors).
@@ -50,10 +53,11 @@ struct DerivedRun {
 
 // Starts the grammar with `params` and derives it with a generator seeded by
 // `seed`. `progress` follows the derivation (for error messages).
-// With `trace`, every step is recorded.
-DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed,
-                         const RunLimits& limits, const StepObserver& observer = {}, RunProgress* progress = nullptr,
-                         TraceRecorder* trace = nullptr);
+// With `trace`, every step is recorded. `out` is kept up to date, so after an
+// exception it describes the completed steps.
+void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed, const RunSettings& settings,
+                   DerivedRun& out, const StepObserver& observer = {}, RunProgress* progress = nullptr,
+                   TraceRecorder* trace = nullptr);
 
 // Runs and writes the outputs. Returns the exit code: 0 done, 1 a run-time
 // error, a resource bound hit (elements, time, the default step limit when
@@ -62,10 +66,6 @@ DerivedRun deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, 
 // all; after an error only with `keepPartial` (the last completed step, and
 // the JSON's "stopped" says why).
 int runGrammar(const RunRequest& request, GrammarRun& grammar);
-
-// For compiled programs: reads the command line into a request. Returns an
-// exit code (0 after --help, 2 on a usage error) when the program should stop.
-std::optional<int> parseRunArguments(int argc, char** argv, const std::string& grammarFile, RunRequest& out);
 
 // `FILE:LINE:COL: error: MESSAGE`, the source line and a caret.
 std::string renderLocatedError(const SourceLocation& at, const std::string& message);

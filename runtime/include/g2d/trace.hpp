@@ -49,6 +49,7 @@ public:
 
 private:
     struct Pending {
+        std::string rule;
         std::uint32_t daughter;
         std::vector<std::uint32_t> nodes, edges;
     };

@@ -1,0 +1,162 @@
+#include "g2d/builtins.hpp"
+
+#include <array>
+#include <stdexcept>
+
+namespace g2d::rt {
+
+namespace {
+
+using B = Builtin;
+using C = BuiltinCall;
+
+constexpr std::array<BuiltinEntry, static_cast<std::size_t>(B::Normal) + 1> kTable = {{
+    {B::Sin, "sin", C::Pure, true},
+    {B::Cos, "cos", C::Pure, true},
+    {B::Tan, "tan", C::Pure, true},
+    {B::Asin, "asin", C::Pure, true},
+    {B::Acos, "acos", C::Pure, true},
+    {B::Atan, "atan", C::Pure, true},
+    {B::Atan2, "atan2", C::Pure, true},
+    {B::Sqrt, "sqrt", C::Pure, true},
+    {B::Abs, "abs", C::Pure, true},
+    {B::Min, "min", C::Variadic, false},
+    {B::Max, "max", C::Variadic, false},
+    {B::Floor, "floor", C::Pure, true},
+    {B::Ceil, "ceil", C::Pure, true},
+    {B::Round, "round", C::Pure, true},
+    {B::Pow, "pow", C::Pure, true},
+    {B::Exp, "exp", C::Pure, true},
+    {B::Log, "log", C::Pure, true},
+    {B::Clamp, "clamp", C::Pure, false},
+    {B::Sign, "sign", C::Pure, false},
+    {B::Radians, "radians", C::Pure, true},
+    {B::Degrees, "degrees", C::Pure, true},
+    {B::Hypot, "hypot", C::Pure, true},
+    {B::MakeVec2, "makeVec2", C::Pure, false},
+    {B::Dot, "dot", C::Pure, true},
+    {B::Cross, "cross", C::Pure, true},
+    {B::Length, "length", C::Pure, true},
+    {B::Distance, "distance", C::Pure, true},
+    {B::Normalize, "normalize", C::Pure, false},
+    {B::PerpLeft, "perpLeft", C::Pure, false},
+    {B::PerpRight, "perpRight", C::Pure, false},
+    {B::Rotate, "rotate", C::Pure, true},
+    {B::RotateAround, "rotateAround", C::Pure, true},
+    {B::Angle, "angle", C::Pure, false},
+    {B::AngleBetween, "angleBetween", C::Pure, true},
+    {B::Lerp, "lerp", C::Pure, true},
+    {B::ToInt, "toInt", C::Pure, true},
+    {B::ToFloat, "toFloat", C::Pure, true},
+    {B::ToStr, "str", C::Special, false},
+    {B::Format, "format", C::Special, true},
+    {B::Random, "random", C::Random, false},
+    {B::Uniform, "uniform", C::Random, true},
+    {B::RandInt, "randint", C::Random, true},
+    {B::Choice, "choice", C::Special, false},
+    {B::Normal, "normal", C::Random, true},
+}};
+
+constexpr bool tableInOrder() {
+    for (std::size_t i = 0; i < kTable.size(); ++i)
+        if (static_cast<std::size_t>(kTable[i].id) != i) return false;
+    return true;
+}
+static_assert(tableInOrder(), "kTable must list the built-ins in the order of enum Builtin");
+
+long long I(const Value& v) { return std::get<long long>(v); }
+double F(const Value& v) { return std::get<double>(v); }
+vec2 V(const Value& v) { return std::get<vec2>(v); }
+bool isInt(const Value& v) { return std::holds_alternative<long long>(v); }
+
+// The conversions take any scalar.
+template <class F>
+Value convert(const Value& v, F&& to) {
+    return std::visit(
+        [&](const auto& x) -> Value {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, long long> || std::is_same_v<T, double> || std::is_same_v<T, bool> ||
+                          std::is_same_v<T, std::string>)
+                return to(x);
+            else
+                throw std::logic_error("a conversion built-in called on a vector or an enum");
+        },
+        v);
+}
+
+}  // namespace
+
+const BuiltinEntry& builtinEntry(Builtin id) { return kTable.at(static_cast<std::size_t>(id)); }
+
+namespace fn {
+long long randint(Rng& rng, long long lo, long long hi) {
+    if (lo > hi) throw OpError("randint(" + std::to_string(lo) + ", " + std::to_string(hi) + "): empty range");
+    return rng.range(lo, hi);
+}
+}  // namespace fn
+
+Value callBuiltin(Builtin id, const Value* a, std::size_t n, Rng* rng) {
+    auto needRng = [&]() -> Rng& {
+        if (!rng) throw std::logic_error("a random built-in called without a generator");
+        return *rng;
+    };
+    switch (id) {
+    case B::Sin: return fn::sin(F(a[0]));
+    case B::Cos: return fn::cos(F(a[0]));
+    case B::Tan: return fn::tan(F(a[0]));
+    case B::Asin: return fn::asin(F(a[0]));
+    case B::Acos: return fn::acos(F(a[0]));
+    case B::Atan: return fn::atan(F(a[0]));
+    case B::Atan2: return fn::atan2(F(a[0]), F(a[1]));
+    case B::Sqrt: return fn::sqrt(F(a[0]));
+    case B::Exp: return fn::exp(F(a[0]));
+    case B::Log: return fn::log(F(a[0]));
+    case B::Pow: return fn::pow(F(a[0]), F(a[1]));
+    case B::Hypot: return fn::hypot(F(a[0]), F(a[1]));
+    case B::Floor: return fn::floor(F(a[0]));
+    case B::Ceil: return fn::ceil(F(a[0]));
+    case B::Round: return fn::round(F(a[0]));
+    case B::Radians: return fn::radians(F(a[0]));
+    case B::Degrees: return fn::degrees(F(a[0]));
+    case B::Abs: return isInt(a[0]) ? Value{fn::abs(I(a[0]))} : Value{fn::abs(F(a[0]))};
+    case B::Sign: return isInt(a[0]) ? Value{fn::sign(I(a[0]))} : Value{fn::sign(F(a[0]))};
+    case B::Clamp:
+        return isInt(a[0]) ? Value{fn::clamp(I(a[0]), I(a[1]), I(a[2]))} : Value{fn::clamp(F(a[0]), F(a[1]), F(a[2]))};
+    case B::Min:
+    case B::Max: {
+        Value best = a[0];
+        for (std::size_t i = 1; i < n; ++i) {
+            if (isInt(best)) best = id == B::Min ? fn::min(I(best), I(a[i])) : fn::max(I(best), I(a[i]));
+            else best = id == B::Min ? fn::min(F(best), F(a[i])) : fn::max(F(best), F(a[i]));
+        }
+        return best;
+    }
+    case B::MakeVec2: return fn::makeVec2(F(a[0]), F(a[1]));
+    case B::Dot: return fn::dot(V(a[0]), V(a[1]));
+    case B::Cross: return fn::cross(V(a[0]), V(a[1]));
+    case B::Length: return fn::length(V(a[0]));
+    case B::Distance: return fn::distance(V(a[0]), V(a[1]));
+    case B::Normalize: return fn::normalize(V(a[0]));
+    case B::PerpLeft: return fn::perpLeft(V(a[0]));
+    case B::PerpRight: return fn::perpRight(V(a[0]));
+    case B::Rotate: return fn::rotate(V(a[0]), F(a[1]));
+    case B::RotateAround: return fn::rotateAround(V(a[0]), F(a[1]), V(a[2]));
+    case B::Angle: return fn::angle(V(a[0]));
+    case B::AngleBetween: return fn::angleBetween(V(a[0]), V(a[1]));
+    case B::Lerp:
+        if (std::holds_alternative<vec2>(a[0])) return fn::lerp(V(a[0]), V(a[1]), F(a[2]));
+        return fn::lerp(F(a[0]), F(a[1]), F(a[2]));
+    case B::ToInt: return convert(a[0], [](const auto& x) { return Value{fn::toInt(x)}; });
+    case B::ToFloat: return convert(a[0], [](const auto& x) { return Value{fn::toFloat(x)}; });
+    case B::Random: return fn::random(needRng());
+    case B::Uniform: return fn::uniform(needRng(), F(a[0]), F(a[1]));
+    case B::RandInt: return fn::randint(needRng(), I(a[0]), I(a[1]));
+    case B::Normal: return fn::normal(needRng(), F(a[0]), F(a[1]));
+    case B::ToStr:
+    case B::Format:
+    case B::Choice: break;
+    }
+    throw std::logic_error(std::string("callBuiltin: `") + builtinEntry(id).cppName + "` is built by the back ends");
+}
+
+}  // namespace g2d::rt
