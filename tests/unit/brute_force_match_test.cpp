@@ -3,7 +3,7 @@
 // edges, element and cross-element conditions, negative conditions). The
 // brute force tries every injective assignment of pattern nodes, then of
 // pattern edges, and knows nothing of search plans, anchors or indexes.
-// A derivation on each graph then runs with G2D_VERIFY_MATCHES semantics
+// A derivation on each graph then runs with match verification on (test::verified())
 // (ctest sets it), so the incrementally kept sets are checked too.
 #include <catch2/catch.hpp>
 
@@ -232,7 +232,7 @@ TEST_CASE("the engine finds exactly the matches a brute-force matcher finds", "[
 TEST_CASE("incrementally kept matches equal a full search after every random rewrite", "[match][incremental]") {
     // Rules that add and delete edges and nodes at random on random graphs;
     // the derivation checks every rule's set against a full search after
-    // every step (G2D_VERIFY_MATCHES, which ctest sets).
+    // every step (test::verified()).
     std::mt19937 gen(7);
     for (int trial = 0; trial < 60; ++trial) {
         Case c = randomCase(gen);
@@ -322,7 +322,7 @@ std::string kindedGrammar(std::mt19937& gen) {
 TEST_CASE("sets left alone by steps that change no kind their rules read equal a full search", "[match][incremental]") {
     // Every step's changed kinds are checked against what each rule reads;
     // the derivation checks every rule's set against a full search after
-    // every step (G2D_VERIFY_MATCHES, which ctest sets), so a set wrongly
+    // every step (test::verified()), so a set wrongly
     // left alone fails the run.
     std::mt19937 gen(11);
     long long skipped = 0, repaired = 0;
