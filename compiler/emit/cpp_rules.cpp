@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "lower/rewrite_program.hpp"
+
 namespace g2d::emit {
 
 using ir::PlanStep;
@@ -24,8 +26,9 @@ public:
         out += repair();
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) out += nac(static_cast<int>(k));
         for (std::size_t d = 0; d < r_.daughters.size(); ++d) {
-            out += writeSet(static_cast<int>(d));
-            out += prepare(static_cast<int>(d));
+            const lower::RewriteProgram p = lower::lowerRewrite(prog_, r_, d);
+            out += writeSet(static_cast<int>(d), p);
+            out += prepare(static_cast<int>(d), p);
         }
         return out;
     }
@@ -333,237 +336,162 @@ private:
         return out + body + "        return false;\n    }\n\n";
     }
 
-    std::string writeSet(int di) {
-        const auto& d = r_.daughters[di];
+    std::string writeSet(int di, const lower::RewriteProgram& p) {
         std::string out = "    void writes_" + ri_ + "_" + str(di) + "(Match m, WriteSet& w) const {\n        (void)m;\n        (void)w;\n";
-        for (int n : d.deletedNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
-        for (int e : d.deletedEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
-        for (const auto& dn : d.nodes)
-            if (dn.motherNode >= 0 && (dn.position || !dn.assigns.empty() || !dn.styles.empty()))
-                out += "        w.nodes.push_back(m.nodes[" + str(dn.motherNode) + "]);\n";
-        for (const auto& de : d.edges) {
-            if (de.motherEdge < 0) continue;
-            const auto& me = r_.edges[de.motherEdge];
-            const bool rewired = d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst;
-            if (rewired || !de.assigns.empty() || !de.styles.empty())
-                out += "        w.edges.push_back(m.edges[" + str(de.motherEdge) + "]);\n";
-        }
+        for (int n : p.writtenNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
+        for (int e : p.writtenEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
         return out + "    }\n\n";
     }
 
-    // What a commit writes for attribute assignment `a` (the `index`th of
-    // an element whose kept values are named `prefix`_i): a literal as it
-    // is, anything else as prepare kept it.
-    static std::string assigned(const ir::AttrAssign& a, const std::string& prefix, std::size_t index) {
-        if (a.value.op == ir::ExprOp::Literal) return cppLiteral(a.value.value, a.value.type);
-        return prefix + "_" + str(static_cast<int>(index));
+    static std::string reg(int r) { return "r" + str(r); }
+    static std::string node(int h) { return "h" + str(h); }
+    static std::string edge(int h) { return "k" + str(h); }
+    // An attribute's value at commit time: a literal as it is, a register as prepare kept it.
+    static std::string attrValue(const lower::Operand& v) {
+        return v.reg >= 0 ? reg(v.reg) : cppLiteral(v.literal->value, v.literal->type);
     }
-    // What a commit passes for style assignment `s` whose value, unless it
-    // is a literal (a shared constant), prepare kept as `kept`.
-    std::string styleArg(const ir::StyleAssign& s, const std::string& kept) {
-        if (s.value.op == ir::ExprOp::Literal) return constants_.add(valueInit(s.value.type, cppLiteral(s.value.value, s.value.type)));
-        return valueOf(s.value.type, kept);
+    // A style's value: a literal is one shared constant of the grammar.
+    std::string styleValue(const lower::Operand& v) {
+        if (v.reg < 0) return constants_.add(valueInit(v.type, cppLiteral(v.literal->value, v.literal->type)));
+        return valueOf(v.type, reg(v.reg));
+    }
+    // A new element's attribute record: the kind's defaults, then the daughter's values.
+    std::string record(int kind, const std::vector<lower::AttrWrite>& attrs, const std::string& element, bool isEdge,
+                       const std::string& c) const {
+        if (prog_.kinds[kind].attrs.empty()) return "";
+        std::string out = c + "{\n" + c + "    Kind" + str(kind) + " rec = default_" + str(kind) + ";\n";
+        for (const auto& w : attrs) out += c + "    rec.a" + str(w.attr) + " = " + attrValue(w.value) + ";\n";
+        return out + c + "    G.set" + (isEdge ? "Edge" : "Node") + "Slot(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
     }
 
-    std::string prepare(int di) {
-        const auto& d = r_.daughters[di];
+    // prepare_R_D prints the program's prepare part; apply_R_D its commit part.
+    std::string prepare(int di, const lower::RewriteProgram& p) {
         const std::string in = "        ";
         const std::string rd = ri_ + "_" + str(di);
         std::string out = "    void prepare_" + rd + "(Match m, const Graph& g) {\n        (void)m;\n        (void)g;\n";
-        // What the rewrite needs at commit time: (type, name) of each value.
-        std::vector<std::pair<std::string, std::string>> kept;
         ExprContext ctx;
         ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
         ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
         ctx.nodeKind = [this](int i) { return r_.nodes[i].kind; };
         ctx.edgeKind = [this](int i) { return r_.edges[i].kind; };
-        for (const auto& l : r_.lets) {
-            const std::string v = gen_.gen(l.value, ctx, out, in);
-            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n" + in + "(void)L" + str(l.slot) + ";\n";
+        if (p.placement) out += in + "std::optional<vec2> placed[" + str(p.nodeHandles) + "];\n";
+        for (const auto& op : p.prepare) {
+            std::visit(lower::Overloaded{
+                           [&](const lower::EvalLocal& o) {
+                               const std::string v = gen_.gen(*o.value, ctx, out, in);
+                               const std::string l = "L" + str(o.slot);
+                               out += in + "const " + cppType(o.value->type) + " " + l + " = " + v + ";\n" + in + "(void)" + l + ";\n";
+                           },
+                           [&](const lower::Place& o) { out += placement(o, in); },
+                           [&](const lower::Eval& o) {
+                               const std::string v = gen_.gen(*o.value, ctx, out, in);
+                               out += in + "const auto " + reg(o.reg) + " = " + v + ";\n";
+                           },
+                           [&](const lower::EvalPosition& o) {
+                               const std::string v = gen_.gen(*o.value, ctx, out, in);
+                               out += in + "const vec2 " + reg(o.reg) + " = " + v + ";\n";
+                               out += in + "if (!std::isfinite(" + reg(o.reg) + ".x) || !std::isfinite(" + reg(o.reg) + ".y)) throw PlacedError(" +
+                                      str(places_.add(o.value->span)) + ", " + cppString(o.message) + ");\n";
+                           },
+                           [&](const lower::TakePlaced& o) { out += in + "const vec2 " + reg(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n"; },
+                       },
+                       op);
         }
-        for (const auto& l : d.lets) {
-            const std::string v = gen_.gen(l.value, ctx, out, in);
-            out += in + "const " + cppType(l.value.type) + " L" + str(l.slot) + " = " + v + ";\n" + in + "(void)L" + str(l.slot) + ";\n";
-        }
-        if (d.autoPlacement) {
-            out += in + "std::optional<vec2> placed[" + str(static_cast<int>(d.nodes.size())) + "];\n";
-            out += placement(d, in);
-        }
-        // Values, in the daughter's order (as the interpreter evaluates them).
-        std::string commit;
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            const std::string si = str(static_cast<int>(i));
-            if (dn.position) {
-                const std::string v = gen_.gen(*dn.position, ctx, out, in);
-                out += in + "const vec2 pos" + si + " = " + v + ";\n";
-                out += in + "if (!std::isfinite(pos" + si + ".x) || !std::isfinite(pos" + si + ".y)) throw PlacedError(" +
-                       str(places_.add(dn.position->span)) + ", " + cppString("position of `" + dn.name + "` is not finite") + ");\n";
-                kept.emplace_back("vec2", "pos" + si);
-            } else if (dn.motherNode < 0) {
-                out += in + "const vec2 pos" + si + " = *placed[" + si + "];\n";
-                kept.emplace_back("vec2", "pos" + si);
-            }
-            for (std::size_t a = 0; a < dn.assigns.size(); ++a) {
-                if (dn.assigns[a].value.op == ir::ExprOp::Literal) continue;   // written as it is (assigned)
-                const std::string v = gen_.gen(dn.assigns[a].value, ctx, out, in);
-                const std::string name = "nv" + si + "_" + str(static_cast<int>(a));
-                out += in + "const auto " + name + " = " + v + ";\n";
-                kept.emplace_back(cppType(dn.assigns[a].value.type), name);
-            }
-            for (std::size_t a = 0; a < dn.styles.size(); ++a) {
-                if (dn.styles[a].value.op == ir::ExprOp::Literal) continue;   // a constant (styleArg)
-                const std::string v = gen_.gen(dn.styles[a].value, ctx, out, in);
-                const std::string name = "ns" + si + "_" + str(static_cast<int>(a));
-                out += in + "const auto " + name + " = " + v + ";\n";
-                kept.emplace_back(cppType(dn.styles[a].value.type), name);
-            }
-        }
-        for (std::size_t i = 0; i < d.edges.size(); ++i) {
-            const auto& de = d.edges[i];
-            const std::string si = str(static_cast<int>(i));
-            for (std::size_t a = 0; a < de.assigns.size(); ++a) {
-                if (de.assigns[a].value.op == ir::ExprOp::Literal) continue;   // written as it is (assigned)
-                const std::string v = gen_.gen(de.assigns[a].value, ctx, out, in);
-                const std::string name = "ev" + si + "_" + str(static_cast<int>(a));
-                out += in + "const auto " + name + " = " + v + ";\n";
-                kept.emplace_back(cppType(de.assigns[a].value.type), name);
-            }
-            for (std::size_t a = 0; a < de.styles.size(); ++a) {
-                if (de.styles[a].value.op == ir::ExprOp::Literal) continue;   // a constant (styleArg)
-                const std::string v = gen_.gen(de.styles[a].value, ctx, out, in);
-                const std::string name = "es" + si + "_" + str(static_cast<int>(a));
-                out += in + "const auto " + name + " = " + v + ";\n";
-                kept.emplace_back(cppType(de.styles[a].value.type), name);
-            }
-        }
-        // The rewrite, applied at commit time, in the interpreter's order:
-        // deleted edges go; new nodes come; kept edges that change ends are
-        // reconnected; deleted nodes go; kept nodes change; edges are updated or made.
         const std::string c = "        ";
-        commit += c + "(void)step;\n" + c + "(void)G;\n";
-        for (int e : d.deletedEdges) commit += c + "G.removeEdge(m.edges[" + str(e) + "]);\n";
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            const std::string si = str(static_cast<int>(i));
-            if (dn.motherNode >= 0) {
-                commit += c + "const NodeId h" + si + " = m.nodes[" + str(dn.motherNode) + "];\n" + c + "(void)h" + si + ";\n";
-                continue;
-            }
-            commit += c + "const NodeId h" + si + " = G.addNode(" + str(dn.kind) + ", pos" + si + ", step);\n" + c + "(void)h" + si + ";\n";
-            if (!prog_.kinds[dn.kind].attrs.empty()) {
-                commit += c + "{\n" + c + "    Kind" + str(dn.kind) + " rec = default_" + str(dn.kind) + ";\n";
-                for (std::size_t a = 0; a < dn.assigns.size(); ++a)
-                    commit += c + "    rec.a" + str(dn.assigns[a].attr) + " = " + assigned(dn.assigns[a], "nv" + si, a) + ";\n";
-                commit += c + "    G.setNodeSlot(h" + si + ", store_" + str(dn.kind) + ".add(rec));\n" + c + "}\n";
-            }
-        }
-        for (const auto& de : d.edges) {
-            if (de.motherEdge < 0) continue;
-            const auto& me = r_.edges[de.motherEdge];
-            if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
-                commit += c + "G.reconnectEdge(m.edges[" + str(de.motherEdge) + "], h" + str(de.src) + ", h" + str(de.dst) + ");\n";
-        }
-        for (int n : d.deletedNodes) commit += c + "G.removeNode(m.nodes[" + str(n) + "]);\n";
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            const std::string si = str(static_cast<int>(i));
-            if (dn.motherNode >= 0) {
-                if (dn.position) commit += c + "G.setPos(h" + si + ", pos" + si + ");\n";
-                for (std::size_t a = 0; a < dn.assigns.size(); ++a)
-                    commit += c + gen_.attrAccess(dn.kind, "h" + si, false, dn.assigns[a].attr, "G") + " = " +
-                              assigned(dn.assigns[a], "nv" + si, a) + ";\n";
-                // Typed attributes change outside the graph: tell it, for incremental matching.
-                if (!dn.assigns.empty()) commit += c + "G.touchNodeValues(h" + si + ");\n";
-            }
-            for (std::size_t a = 0; a < dn.styles.size(); ++a)
-                commit += c + "G.setNodeStyle(h" + si + ", " + cppStyleProp(dn.styles[a]) + ", " +
-                          styleArg(dn.styles[a], "ns" + si + "_" + str(static_cast<int>(a))) + ");\n";
-        }
-        for (std::size_t i = 0; i < d.edges.size(); ++i) {
-            const auto& de = d.edges[i];
-            const std::string si = str(static_cast<int>(i));
-            const std::string src = "h" + str(de.src), dst = "h" + str(de.dst);
-            if (de.motherEdge >= 0) {
-                commit += c + "const EdgeId k" + si + " = m.edges[" + str(de.motherEdge) + "];\n" + c + "(void)k" + si + ";\n";
-                for (std::size_t a = 0; a < de.assigns.size(); ++a)
-                    commit += c + gen_.attrAccess(de.kind, "k" + si, true, de.assigns[a].attr, "G") + " = " +
-                              assigned(de.assigns[a], "ev" + si, a) + ";\n";
-                if (!de.assigns.empty()) commit += c + "G.touchEdgeItself(k" + si + ");\n";
-            } else {
-                commit += c + "const EdgeId k" + si + " = G.addEdge(" + str(de.kind) + ", " + src + ", " + dst + ", step);\n" + c + "(void)k" + si + ";\n";
-                if (!prog_.kinds[de.kind].attrs.empty()) {
-                    commit += c + "{\n" + c + "    Kind" + str(de.kind) + " rec = default_" + str(de.kind) + ";\n";
-                    for (std::size_t a = 0; a < de.assigns.size(); ++a)
-                        commit += c + "    rec.a" + str(de.assigns[a].attr) + " = " + assigned(de.assigns[a], "ev" + si, a) + ";\n";
-                    commit += c + "    G.setEdgeSlot(k" + si + ", store_" + str(de.kind) + ".add(rec));\n" + c + "}\n";
-                }
-            }
-            for (std::size_t a = 0; a < de.styles.size(); ++a)
-                commit += c + "G.setEdgeStyle(k" + si + ", " + cppStyleProp(de.styles[a]) + ", " +
-                          styleArg(de.styles[a], "es" + si + "_" + str(static_cast<int>(a))) + ");\n";
+        std::string commit = c + "(void)step;\n" + c + "(void)G;\n";
+        for (const auto& op : p.commit) {
+            std::visit(lower::Overloaded{
+                           [&](const lower::DeleteEdge& o) { commit += c + "G.removeEdge(m.edges[" + str(o.matchEdge) + "]);\n"; },
+                           [&](const lower::BindNode& o) {
+                               commit += c + "const NodeId " + node(o.handle) + " = m.nodes[" + str(o.matchNode) + "];\n" + c + "(void)" + node(o.handle) + ";\n";
+                           },
+                           [&](const lower::CreateNode& o) {
+                               commit += c + "const NodeId " + node(o.handle) + " = G.addNode(" + str(o.kind) + ", " + reg(o.posReg) + ", step);\n" + c +
+                                         "(void)" + node(o.handle) + ";\n" + record(o.kind, o.attrs, node(o.handle), false, c);
+                           },
+                           [&](const lower::Rewire& o) {
+                               commit += c + "G.reconnectEdge(m.edges[" + str(o.matchEdge) + "], " + node(o.src) + ", " + node(o.dst) + ");\n";
+                           },
+                           [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
+                           [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + reg(o.reg) + ");\n"; },
+                           [&](const lower::SetNodeAttr& o) {
+                               commit += c + gen_.attrAccess(o.kind, node(o.handle), false, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                           },
+                           [&](const lower::TouchNodeValues& o) { commit += c + "G.touchNodeValues(" + node(o.handle) + ");\n"; },
+                           [&](const lower::SetNodeStyle& o) {
+                               commit += c + "G.setNodeStyle(" + node(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                           },
+                           [&](const lower::BindEdge& o) {
+                               commit += c + "const EdgeId " + edge(o.handle) + " = m.edges[" + str(o.matchEdge) + "];\n" + c + "(void)" + edge(o.handle) + ";\n";
+                           },
+                           [&](const lower::SetEdgeAttr& o) {
+                               commit += c + gen_.attrAccess(o.kind, edge(o.handle), true, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                           },
+                           [&](const lower::TouchEdge& o) { commit += c + "G.touchEdgeItself(" + edge(o.handle) + ");\n"; },
+                           [&](const lower::CreateEdge& o) {
+                               commit += c + "const EdgeId " + edge(o.handle) + " = G.addEdge(" + str(o.kind) + ", " + node(o.src) + ", " + node(o.dst) +
+                                         ", step);\n" + c + "(void)" + edge(o.handle) + ";\n" + record(o.kind, o.attrs, edge(o.handle), true, c);
+                           },
+                           [&](const lower::SetEdgeStyle& o) {
+                               commit += c + "G.setEdgeStyle(" + edge(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                           },
+                       },
+                       op);
         }
         // Kept in a typed buffer until commit (no allocation once warm).
         const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));
         const std::string ne = str(static_cast<int>(std::max<std::size_t>(r_.edges.size(), 1)));
-        std::string record = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n";
-        for (const auto& [type, name] : kept) record += "        " + type + " " + name + ";\n";
+        std::string pending = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n";
+        for (std::size_t r = 0; r < p.registers.size(); ++r) pending += "        " + cppType(p.registers[r]) + " " + reg(static_cast<int>(r)) + ";\n";
         // A parallel step keeps one per match: plain records grow without copying.
-        record += "    };\n    GrowableArray<Pending_" + rd + "> pending_" + rd + "_;\n\n";
+        pending += "    };\n    GrowableArray<Pending_" + rd + "> pending_" + rd + "_;\n\n";
         out += in + "Pending_" + rd + "& p = pending_" + rd + "_.emplace_back();\n";
         out += in + "std::copy(m.nodes, m.nodes + " + str(static_cast<int>(r_.nodes.size())) + ", p.mn);\n";
         out += in + "std::copy(m.edges, m.edges + " + str(static_cast<int>(r_.edges.size())) + ", p.me);\n";
-        for (const auto& kv : kept) out += in + "p." + kv.second + " = " + kv.second + ";\n";
+        for (std::size_t r = 0; r < p.registers.size(); ++r) out += in + "p." + reg(static_cast<int>(r)) + " = " + reg(static_cast<int>(r)) + ";\n";
         out += in + "pendingOrder_.push_back(PendingRef{" + str(firstDaughter_ + di) + ", static_cast<std::uint32_t>(pending_" + rd +
                "_.size() - 1)});\n";
         out += "    }\n\n";
         std::string apply = "    void apply_" + rd + "(Graph& G, long long step, const Pending_" + rd + "& p) {\n";
         apply += "        const Match m{p.mn, p.me};\n        (void)m;\n";
-        for (const auto& kv : kept) apply += "        const auto& " + kv.second + " = p." + kv.second + ";\n";
-        return record + out + apply + commit + "    }\n\n";
+        for (std::size_t r = 0; r < p.registers.size(); ++r)
+            apply += "        const auto& " + reg(static_cast<int>(r)) + " = p." + reg(static_cast<int>(r)) + ";\n";
+        return pending + out + apply + commit + "    }\n\n";
     }
 
-    std::string placement(const ir::Daughter& d, const std::string& in) {
+    std::string placement(const lower::Place& o, const std::string& in) {
         std::string out = in + "{\n";
         const std::string b = in + "    ";
         // Fixed-size arrays: placement allocates nothing per step.
         std::string mother, host, refDaughter, refHost;
         auto item = [](std::string& list, const std::string& v) { list += (list.empty() ? "" : ", ") + v; };
-        for (std::size_t i = 0; i < r_.nodes.size(); ++i) {
-            const auto& sk = *r_.nodes[i].sketch;
-            item(mother, cppLiteral(ir::Value{ir::Vec2{sk.x, sk.y}}, ir::kVec2Type));
+        auto vec = [](const ir::Vec2& v) { return cppLiteral(ir::Value{v}, ir::kVec2Type); };
+        for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
+            item(mother, vec(o.motherSketch[i]));
             item(host, "g.pos(m.nodes[" + str(static_cast<int>(i)) + "])");
         }
-        int kept = 0;
-        for (const auto& dn : d.nodes)
-            if (dn.motherNode >= 0) {
-                ++kept;
-                item(refDaughter, cppLiteral(ir::Value{ir::Vec2{dn.sketch->x, dn.sketch->y}}, ir::kVec2Type));
-                item(refHost, "host[" + str(dn.motherNode) + "]");
-            }
-        const std::string nodes = str(static_cast<int>(r_.nodes.size()));
+        for (const auto& [sketch, node] : o.refs) {
+            item(refDaughter, vec(sketch));
+            item(refHost, "host[" + str(node) + "]");
+        }
+        const std::string nodes = str(static_cast<int>(o.motherSketch.size()));
         out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
         out += b + "const vec2 host[" + nodes + "] = {" + host + "};\n";
-        if (kept > 0) {
-            out += b + "const vec2 refDaughter[" + str(kept) + "] = {" + refDaughter + "};\n";
-            out += b + "const vec2 refHost[" + str(kept) + "] = {" + refHost + "};\n";
+        if (!o.refs.empty()) {
+            const std::string n = str(static_cast<int>(o.refs.size()));
+            out += b + "const vec2 refDaughter[" + n + "] = {" + refDaughter + "};\n";
+            out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
         } else {   // no node kept: the whole match is the reference
             out += b + "const auto& refDaughter = mother;\n" + b + "const auto& refHost = host;\n";
         }
-        std::string directed = "std::nullopt";
-        for (const auto& e : r_.edges)
-            if (prog_.kinds[e.kind].directed && e.src != e.dst) {
-                directed = "std::make_pair(" + str(e.src) + ", " + str(e.dst) + ")";
-                break;
-            }
+        const std::string directed =
+            o.directed ? "std::make_pair(" + str(o.directed->first) + ", " + str(o.directed->second) + ")" : "std::nullopt";
         out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost);\n";
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            if (dn.motherNode >= 0 || !dn.sketch) continue;
-            const std::string si = str(static_cast<int>(i));
-            out += b + "placed[" + si + "] = frame.place(" + cppLiteral(ir::Value{ir::Vec2{dn.sketch->x, dn.sketch->y}}, ir::kVec2Type) + ");\n";
+        for (const auto& t : o.targets) {
+            const std::string si = str(t.daughterNode);
+            out += b + "placed[" + si + "] = frame.place(" + vec(t.sketch) + ");\n";
             out += b + "if (!std::isfinite(placed[" + si + "]->x) || !std::isfinite(placed[" + si + "]->y)) throw PlacedError(" +
-                   str(places_.add(dn.span)) + ", " + cppString("automatic placement of `" + dn.name + "` gives a non-finite position") + ");\n";
+                   str(places_.add(t.span)) + ", " + cppString(t.message) + ");\n";
         }
         return out + in + "}\n";
     }

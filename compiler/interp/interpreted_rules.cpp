@@ -67,6 +67,8 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
             info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
         }
         infos_.push_back(std::move(info));
+        auto& rewrites = rewrites_.emplace_back();
+        for (std::size_t d = 0; d < r.daughters.size(); ++d) rewrites.push_back(lower::lowerRewrite(*st.prog, r, d));
         std::size_t nacNodes = 0, nacEdges = 0;
         for (const auto& n : r.nacs) {
             nacNodes = std::max(nacNodes, n.nodes.size());
@@ -238,36 +240,18 @@ bool InterpretedRules::keptByNewEdgeGate(const ir::Rule& r, const ir::NegativeCo
     return fresh;
 }
 
-// ---- rewriting ------------------------------------------------------------------
+// ---- rewriting: the lowered rewrite programs, operation by operation ------------
 
 void InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& w) const {
-    const ir::Rule& r = st_.prog->rules[rule];
-    const ir::Daughter& d = r.daughters[daughter];
-    for (int n : d.deletedNodes) w.nodes.push_back(m.nodes[n]);
-    for (int e : d.deletedEdges) w.edges.push_back(m.edges[e]);
-    for (const auto& dn : d.nodes)
-        if (dn.motherNode >= 0 && (dn.position || !dn.assigns.empty() || !dn.styles.empty()))
-            w.nodes.push_back(m.nodes[dn.motherNode]);
-    for (const auto& de : d.edges) {
-        if (de.motherEdge < 0) continue;
-        const auto& me = r.edges[de.motherEdge];
-        const bool rewired = d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst;
-        if (rewired || !de.assigns.empty() || !de.styles.empty()) w.edges.push_back(m.edges[de.motherEdge]);
-    }
-}
-
-void InterpretedRules::evaluateValues(const std::vector<ir::AttrAssign>& attrs,
-                                      const std::vector<ir::StyleAssign>& styles, EvalFrame& f, Values& v) {
-    v.attrs.clear();
-    v.styles.clear();
-    for (const auto& a : attrs) v.attrs.emplace_back(a.attr, evaluate(a.value, f));
-    for (const auto& s : styles) v.styles.emplace_back(static_cast<rt::StyleProp>(s.propId), evaluate(s.value, f));
+    const lower::RewriteProgram& p = rewrites_[rule][daughter];
+    for (int n : p.writtenNodes) w.nodes.push_back(m.nodes[n]);
+    for (int e : p.writtenEdges) w.edges.push_back(m.edges[e]);
 }
 
 void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
                                rt::Rng& rng, long long) {
     const ir::Rule& r = st_.prog->rules[rule];
-    const ir::Daughter& d = r.daughters[daughter];
+    const lower::RewriteProgram& program = rewrites_[rule][daughter];
     current_ = &r;
     locals_.assign(static_cast<std::size_t>(r.localSlots), rt::Value{});
     EvalFrame f = st_.frame(&rng);
@@ -275,8 +259,6 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     f.nodes = m.nodes;
     f.edges = m.edges;
     f.locals = &locals_;
-    for (const auto& l : r.lets) locals_[l.slot] = evaluate(l.value, f);
-    for (const auto& l : d.lets) locals_[l.slot] = evaluate(l.value, f);
 
     if (pendingCount_ == pending_.size()) pending_.emplace_back();
     Prepared& p = pending_[pendingCount_];
@@ -284,109 +266,85 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     p.daughter = daughter;
     p.nodes.assign(m.nodes, m.nodes + r.nodes.size());
     p.edges.assign(m.edges, m.edges + r.edges.size());
-    p.nodePos.clear();
-    p.nodeValues.resize(d.nodes.size());
-    p.edgeValues.resize(d.edges.size());
-    // Automatic positions first: `at` may refine them through `placed`.
-    auto& placed = placed_;
-    placed.assign(d.nodes.size(), std::nullopt);
-    if (d.autoPlacement) {
-        std::vector<rt::vec2> mother, host, refDaughter, refHost;
-        for (std::size_t i = 0; i < r.nodes.size(); ++i) {
-            mother.push_back({r.nodes[i].sketch->x, r.nodes[i].sketch->y});
-            host.push_back(g.pos(m.nodes[i]));
-        }
-        for (const auto& dn : d.nodes)
-            if (dn.motherNode >= 0) {
-                refDaughter.push_back({dn.sketch->x, dn.sketch->y});
-                refHost.push_back(host[dn.motherNode]);
-            }
-        if (refDaughter.empty()) {
-            refDaughter = mother;
-            refHost = host;
-        }
-        std::optional<std::pair<int, int>> directed;
-        for (const auto& e : r.edges)
-            if (st_.prog->kinds[e.kind].directed && e.src != e.dst) {
-                directed = std::make_pair(e.src, e.dst);
-                break;
-            }
-        const rt::PlacementFrame frame = rt::placementFrame(mother, host, directed, refDaughter, refHost);
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            if (dn.motherNode >= 0 || !dn.sketch) continue;
-            const rt::vec2 pos = frame.place({dn.sketch->x, dn.sketch->y});
-            if (!std::isfinite(pos.x) || !std::isfinite(pos.y))
-                throw EvalError(dn.span, "automatic placement of `" + dn.name + "` gives a non-finite position");
-            placed[i] = pos;
-        }
+    p.registers.assign(program.registers.size(), rt::Value{});
+    placed_.assign(static_cast<std::size_t>(program.nodeHandles), std::nullopt);
+    f.placed = &placed_;
+    for (const auto& op : program.prepare) {
+        std::visit(lower::Overloaded{
+                       [&](const lower::EvalLocal& o) { locals_[o.slot] = evaluate(*o.value, f); },
+                       [&](const lower::Place& o) { place(o, m, g); },
+                       [&](const lower::Eval& o) { p.registers[o.reg] = evaluate(*o.value, f); },
+                       [&](const lower::EvalPosition& o) {
+                           const rt::vec2 pos = evaluateVec(*o.value, f);
+                           if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(o.value->span, o.message);
+                           p.registers[o.reg] = pos;
+                       },
+                       [&](const lower::TakePlaced& o) { p.registers[o.reg] = *placed_[o.daughterNode]; },
+                   },
+                   op);
     }
-    f.placed = &placed;
-    for (const auto& dn : d.nodes) {
-        std::optional<rt::vec2> pos;
-        if (dn.position) {
-            pos = evaluateVec(*dn.position, f);
-            if (!std::isfinite(pos->x) || !std::isfinite(pos->y))
-                throw EvalError(dn.position->span, "position of `" + dn.name + "` is not finite");
-        }
-        p.nodePos.push_back(pos);
-        evaluateValues(dn.assigns, dn.styles, f, p.nodeValues[&dn - d.nodes.data()]);
-    }
-    for (std::size_t i = 0; i < d.edges.size(); ++i) evaluateValues(d.edges[i].assigns, d.edges[i].styles, f, p.edgeValues[i]);
-    for (std::size_t i = 0; i < d.nodes.size(); ++i)
-        if (!p.nodePos[i] && d.nodes[i].motherNode < 0) p.nodePos[i] = placed[i];
     ++pendingCount_;
 }
 
-// The order of a rewrite: deleted edges go; new nodes come; kept edges that
-// change ends are reconnected (before their old end nodes go, so they
-// survive); deleted nodes go with their remaining edges; then kept nodes
-// change, and edges are updated or created, in the daughter's order.
+void InterpretedRules::place(const lower::Place& o, rt::Match m, const rt::Graph& g) {
+    std::vector<rt::vec2> mother, host, refDaughter, refHost;
+    for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
+        mother.push_back({o.motherSketch[i].x, o.motherSketch[i].y});
+        host.push_back(g.pos(m.nodes[i]));
+    }
+    for (const auto& [sketch, node] : o.refs) {
+        refDaughter.push_back({sketch.x, sketch.y});
+        refHost.push_back(host[static_cast<std::size_t>(node)]);
+    }
+    if (refDaughter.empty()) {
+        refDaughter = mother;
+        refHost = host;
+    }
+    const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost);
+    for (const auto& t : o.targets) {
+        const rt::vec2 pos = frame.place({t.sketch.x, t.sketch.y});
+        if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(t.span, t.message);
+        placed_[t.daughterNode] = pos;
+    }
+}
+
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (std::size_t k = 0; k < pendingCount_; ++k) {
         Prepared& p = pending_[k];
-        const ir::Rule& r = st_.prog->rules[p.rule];
-        const ir::Daughter& d = r.daughters[p.daughter];
-        for (int e : d.deletedEdges) g.removeEdge(p.edges[e]);
-        auto& hostOf = hostOf_;
-        hostOf.assign(d.nodes.size(), kNoId);
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            if (dn.motherNode >= 0) {
-                hostOf[i] = p.nodes[dn.motherNode];
-                continue;
-            }
-            hostOf[i] = g.addNode(dn.kind, *p.nodePos[i], step);
-            for (auto& [attr, v] : p.nodeValues[i].attrs) g.setNodeAttr(hostOf[i], attr, std::move(v));
-        }
-        for (const auto& de : d.edges) {
-            if (de.motherEdge < 0) continue;
-            const auto& me = r.edges[de.motherEdge];
-            if (d.nodes[de.src].motherNode != me.src || d.nodes[de.dst].motherNode != me.dst)
-                g.reconnectEdge(p.edges[de.motherEdge], hostOf[de.src], hostOf[de.dst]);
-        }
-        for (int n : d.deletedNodes) g.removeNode(p.nodes[n]);
-        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
-            const auto& dn = d.nodes[i];
-            auto& values = p.nodeValues[i];
-            if (dn.motherNode >= 0) {
-                if (p.nodePos[i]) g.setPos(hostOf[i], *p.nodePos[i]);
-                for (auto& [attr, v] : values.attrs) g.setNodeAttr(hostOf[i], attr, std::move(v));
-            }
-            for (auto& [prop, v] : values.styles) g.setNodeStyle(hostOf[i], prop, std::move(v));
-        }
-        for (std::size_t i = 0; i < d.edges.size(); ++i) {
-            const auto& de = d.edges[i];
-            auto& values = p.edgeValues[i];
-            EdgeId h;
-            if (de.motherEdge >= 0) {
-                h = p.edges[de.motherEdge];
-                for (auto& [attr, v] : values.attrs) g.setEdgeAttr(h, attr, std::move(v));
-            } else {
-                h = g.addEdge(de.kind, hostOf[de.src], hostOf[de.dst], step);
-                for (auto& [attr, v] : values.attrs) g.initEdgeAttr(h, attr, std::move(v));
-            }
-            for (auto& [prop, v] : values.styles) g.setEdgeStyle(h, prop, std::move(v));
+        const lower::RewriteProgram& program = rewrites_[p.rule][p.daughter];
+        auto value = [&](const lower::Operand& v) { return v.reg >= 0 ? std::move(p.registers[v.reg]) : fromLiteral(v.literal->value); };
+        auto& nodes = hostOf_;
+        auto& edges = edgeOf_;
+        nodes.assign(static_cast<std::size_t>(program.nodeHandles), kNoId);
+        edges.assign(static_cast<std::size_t>(program.edgeHandles), kNoId);
+        for (const auto& op : program.commit) {
+            std::visit(lower::Overloaded{
+                           [&](const lower::DeleteEdge& o) { g.removeEdge(p.edges[o.matchEdge]); },
+                           [&](const lower::BindNode& o) { nodes[o.handle] = p.nodes[o.matchNode]; },
+                           [&](const lower::CreateNode& o) {
+                               nodes[o.handle] = g.addNode(o.kind, std::get<rt::vec2>(p.registers[o.posReg]), step);
+                               for (const auto& w : o.attrs) g.initNodeAttr(nodes[o.handle], w.attr, value(w.value));
+                           },
+                           [&](const lower::Rewire& o) { g.reconnectEdge(p.edges[o.matchEdge], nodes[o.src], nodes[o.dst]); },
+                           [&](const lower::DeleteNode& o) { g.removeNode(p.nodes[o.matchNode]); },
+                           [&](const lower::SetPos& o) { g.setPos(nodes[o.handle], std::get<rt::vec2>(p.registers[o.reg])); },
+                           [&](const lower::SetNodeAttr& o) { g.initNodeAttr(nodes[o.handle], o.write.attr, value(o.write.value)); },
+                           [&](const lower::TouchNodeValues& o) { g.touchNodeValues(nodes[o.handle]); },
+                           [&](const lower::SetNodeStyle& o) {
+                               g.setNodeStyle(nodes[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
+                           },
+                           [&](const lower::BindEdge& o) { edges[o.handle] = p.edges[o.matchEdge]; },
+                           [&](const lower::SetEdgeAttr& o) { g.initEdgeAttr(edges[o.handle], o.write.attr, value(o.write.value)); },
+                           [&](const lower::TouchEdge& o) { g.touchEdgeItself(edges[o.handle]); },
+                           [&](const lower::CreateEdge& o) {
+                               edges[o.handle] = g.addEdge(o.kind, nodes[o.src], nodes[o.dst], step);
+                               for (const auto& w : o.attrs) g.initEdgeAttr(edges[o.handle], w.attr, value(w.value));
+                           },
+                           [&](const lower::SetEdgeStyle& o) {
+                               g.setEdgeStyle(edges[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
+                           },
+                       },
+                       op);
         }
     }
     pendingCount_ = 0;

@@ -1,11 +1,12 @@
 #pragma once
 // The interpreter's rules: matching walks each rule's search plan over the
-// runtime's indexes; rewriting follows the daughter's IR.
+// runtime's indexes; rewriting executes the daughter's lowered rewrite program.
 #include <optional>
 #include <vector>
 
 #include "g2d/derivation.hpp"
 #include "interp/program_state.hpp"
+#include "lower/rewrite_program.hpp"
 
 namespace g2d::interp {
 
@@ -28,17 +29,12 @@ public:
     const ir::Rule* currentRule() const { return current_; }
 
 private:
-    struct Values {
-        std::vector<std::pair<int, rt::Value>> attrs;
-        std::vector<std::pair<rt::StyleProp, rt::Value>> styles;
-    };
     // One prepared application; kept in a pool so that its vectors are reused.
     struct Prepared {
         std::size_t rule = 0, daughter = 0;
         std::vector<rt::NodeId> nodes;                  // the match
         std::vector<rt::EdgeId> edges;
-        std::vector<std::optional<rt::vec2>> nodePos;   // per daughter node
-        std::vector<Values> nodeValues, edgeValues;
+        std::vector<rt::Value> registers;               // the rewrite program's
     };
 
     // Calls onComplete() for every way to finish binding `plan` from step
@@ -55,11 +51,11 @@ private:
     // While findAnchored keeps only matches binding a new edge: false once
     // every pattern edge is bound and none is new (RuleSet::findAnchored).
     bool keptByNewEdgeGate(const ir::Rule& r, const ir::NegativeCondition* nac) const;
-    void evaluateValues(const std::vector<ir::AttrAssign>& attrs, const std::vector<ir::StyleAssign>& styles,
-                        EvalFrame& f, Values& out);
+    void place(const lower::Place& o, rt::Match m, const rt::Graph& g);
 
     const ProgramState& st_;
     std::vector<rt::RuleInfo> infos_;
+    std::vector<std::vector<lower::RewriteProgram>> rewrites_;   // per rule, per daughter
     // Per rule, per pattern node: ir::Rule::neededEdgeKinds as a mask of
     // rt::Graph::edgeKindBit (0: no test), as generated code tests them.
     std::vector<std::vector<std::uint32_t>> neededEdgeKinds_;
@@ -69,7 +65,8 @@ private:
     }
     std::vector<Prepared> pending_;   // the first pendingCount_ are in use
     std::size_t pendingCount_ = 0;
-    std::vector<rt::NodeId> hostOf_;
+    std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles
+    std::vector<rt::EdgeId> edgeOf_;   // and edge handles
     std::vector<std::optional<rt::vec2>> placed_;
     std::vector<rt::NodeId> boundNodes_;
     std::vector<rt::EdgeId> boundEdges_;

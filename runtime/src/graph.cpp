@@ -123,8 +123,12 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
 }
 
 void Graph::setNodeAttr(NodeId n, int i, Value v) {
-    pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)] = std::move(v);
+    initNodeAttr(n, i, std::move(v));
     touchNodeValues(n);
+}
+
+void Graph::initNodeAttr(NodeId n, int i, Value v) {
+    pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)] = std::move(v);
 }
 
 void Graph::setEdgeAttr(EdgeId e, int i, Value v) {

@@ -140,6 +140,9 @@ public:
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
     void setNodeAttr(NodeId n, int i, Value v);
+    // The same without recording a change (a new node's, or a kept node's
+    // whose change the caller records with touchNodeValues).
+    void initNodeAttr(NodeId n, int i, Value v);
     // Valid until the next style is set on any element (the lists are pooled).
     StyleList nodeStyle(NodeId n) const;
     // A back end's own handle for the element's attributes (compiled grammars

@@ -1,0 +1,164 @@
+#include <algorithm>
+
+#include "lower/rewrite_program.hpp"
+
+namespace g2d::lower {
+
+namespace {
+
+class RewriteLowering {
+public:
+    RewriteLowering(const ir::Program& prog, const ir::Rule& rule, const ir::Daughter& d)
+        : prog_(prog), r_(rule), d_(d) {}
+
+    RewriteProgram lower() {
+        p_.nodeHandles = static_cast<int>(d_.nodes.size());
+        p_.edgeHandles = static_cast<int>(d_.edges.size());
+        prepare();
+        commit();
+        return std::move(p_);
+    }
+
+private:
+    int newRegister(ir::Type t) {
+        p_.registers.push_back(t);
+        return static_cast<int>(p_.registers.size() - 1);
+    }
+    // A literal is written as it is; anything else is evaluated by prepare.
+    Operand operand(const ir::Expr& value) {
+        if (value.op == ir::ExprOp::Literal) return Operand{-1, &value, value.type};
+        const int reg = newRegister(value.type);
+        p_.prepare.push_back(Eval{reg, &value});
+        return Operand{reg, nullptr, value.type};
+    }
+
+    // Everything is evaluated on the graph before the step, in the order the
+    // grammar is written: the lets, automatic placement (which `at` may read
+    // as `placed`), then per daughter node its position, attributes and
+    // styles, then per daughter edge its attributes and styles.
+    void prepare() {
+        for (const auto& l : r_.lets) p_.prepare.push_back(EvalLocal{l.slot, &l.value});
+        for (const auto& l : d_.lets) p_.prepare.push_back(EvalLocal{l.slot, &l.value});
+        if (d_.autoPlacement) place();
+        posReg_.assign(d_.nodes.size(), -1);
+        nodeAttrs_.resize(d_.nodes.size());
+        nodeStyles_.resize(d_.nodes.size());
+        for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
+            const auto& dn = d_.nodes[i];
+            if (dn.position) {
+                posReg_[i] = newRegister(ir::kVec2Type);
+                p_.prepare.push_back(EvalPosition{posReg_[i], &*dn.position, "position of `" + dn.name + "` is not finite"});
+            } else if (dn.motherNode < 0) {
+                posReg_[i] = newRegister(ir::kVec2Type);
+                p_.prepare.push_back(TakePlaced{posReg_[i], static_cast<int>(i)});
+            }
+            for (const auto& a : dn.assigns) nodeAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
+            for (const auto& s : dn.styles) nodeStyles_[i].emplace_back(&s, operand(s.value));
+        }
+        edgeAttrs_.resize(d_.edges.size());
+        edgeStyles_.resize(d_.edges.size());
+        for (std::size_t i = 0; i < d_.edges.size(); ++i) {
+            for (const auto& a : d_.edges[i].assigns) edgeAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
+            for (const auto& s : d_.edges[i].styles) edgeStyles_[i].emplace_back(&s, operand(s.value));
+        }
+    }
+
+    void place() {
+        Place pl;
+        for (const auto& n : r_.nodes) pl.motherSketch.push_back(*n.sketch);
+        for (const auto& dn : d_.nodes)
+            if (dn.motherNode >= 0) pl.refs.emplace_back(*dn.sketch, dn.motherNode);
+        for (const auto& e : r_.edges)
+            if (prog_.kinds[e.kind].directed && e.src != e.dst) {
+                pl.directed = std::make_pair(e.src, e.dst);
+                break;
+            }
+        for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
+            const auto& dn = d_.nodes[i];
+            if (dn.motherNode >= 0 || !dn.sketch) continue;
+            pl.targets.push_back(Place::Target{static_cast<int>(i), *dn.sketch, dn.span,
+                                               "automatic placement of `" + dn.name + "` gives a non-finite position"});
+        }
+        p_.prepare.push_back(std::move(pl));
+        p_.placement = true;
+    }
+
+    bool rewired(const ir::DaughterEdge& de) const {
+        const auto& me = r_.edges[de.motherEdge];
+        return d_.nodes[de.src].motherNode != me.src || d_.nodes[de.dst].motherNode != me.dst;
+    }
+
+    // The order of the updates: deleted edges go; new nodes come; kept edges
+    // that change ends are reconnected (before their old end nodes go, so
+    // they survive); deleted nodes go with their remaining edges; then kept
+    // nodes change, and edges are updated or created, in the daughter's order.
+    void commit() {
+        auto& c = p_.commit;
+        for (int e : d_.deletedEdges) c.push_back(DeleteEdge{e});
+        for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
+            const auto& dn = d_.nodes[i];
+            const int h = static_cast<int>(i);
+            if (dn.motherNode >= 0) c.push_back(BindNode{h, dn.motherNode});
+            else c.push_back(CreateNode{h, dn.kind, posReg_[i], nodeAttrs_[i]});
+        }
+        for (const auto& de : d_.edges)
+            if (de.motherEdge >= 0 && rewired(de)) c.push_back(Rewire{de.motherEdge, de.src, de.dst});
+        for (int n : d_.deletedNodes) c.push_back(DeleteNode{n});
+        for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
+            const auto& dn = d_.nodes[i];
+            const int h = static_cast<int>(i);
+            if (dn.motherNode >= 0) {
+                if (dn.position) c.push_back(SetPos{h, posReg_[i]});
+                for (const auto& w : nodeAttrs_[i]) c.push_back(SetNodeAttr{h, dn.kind, w});
+                // Attributes live outside the graph's records: tell it, for incremental matching.
+                if (!nodeAttrs_[i].empty()) c.push_back(TouchNodeValues{h});
+            }
+            for (const auto& [style, value] : nodeStyles_[i]) c.push_back(SetNodeStyle{h, style, value});
+        }
+        for (std::size_t i = 0; i < d_.edges.size(); ++i) {
+            const auto& de = d_.edges[i];
+            const int h = static_cast<int>(i);
+            if (de.motherEdge >= 0) {
+                c.push_back(BindEdge{h, de.motherEdge});
+                for (const auto& w : edgeAttrs_[i]) c.push_back(SetEdgeAttr{h, de.kind, w});
+                if (!edgeAttrs_[i].empty()) c.push_back(TouchEdge{h});
+            } else {
+                c.push_back(CreateEdge{h, de.kind, de.src, de.dst, edgeAttrs_[i]});
+            }
+            for (const auto& [style, value] : edgeStyles_[i]) c.push_back(SetEdgeStyle{h, style, value});
+        }
+        writeSet();
+    }
+
+    // Deleted elements, and kept ones that move, change ends or are written.
+    void writeSet() {
+        p_.writtenNodes = d_.deletedNodes;
+        p_.writtenEdges = d_.deletedEdges;
+        for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
+            const auto& dn = d_.nodes[i];
+            if (dn.motherNode >= 0 && (dn.position || !nodeAttrs_[i].empty() || !nodeStyles_[i].empty()))
+                p_.writtenNodes.push_back(dn.motherNode);
+        }
+        for (std::size_t i = 0; i < d_.edges.size(); ++i) {
+            const auto& de = d_.edges[i];
+            if (de.motherEdge >= 0 && (rewired(de) || !edgeAttrs_[i].empty() || !edgeStyles_[i].empty()))
+                p_.writtenEdges.push_back(de.motherEdge);
+        }
+    }
+
+    const ir::Program& prog_;
+    const ir::Rule& r_;
+    const ir::Daughter& d_;
+    RewriteProgram p_;
+    std::vector<int> posReg_;
+    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_;
+    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_;
+};
+
+}  // namespace
+
+RewriteProgram lowerRewrite(const ir::Program& prog, const ir::Rule& rule, std::size_t daughter) {
+    return RewriteLowering(prog, rule, rule.daughters.at(daughter)).lower();
+}
+
+}  // namespace g2d::lower

@@ -1,0 +1,101 @@
+#include <string>
+
+#include "g2d/value.hpp"
+#include "lower/rewrite_program.hpp"
+
+namespace g2d::lower {
+
+namespace {
+
+std::string at(const Span& s) { return std::to_string(s.line) + ":" + std::to_string(s.col); }
+
+std::string literal(const ir::Value& v) {
+    return std::visit(
+        [](const auto& x) -> std::string {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, long long>) return std::to_string(x);
+            else if constexpr (std::is_same_v<T, double>) return rt::formatNumber(x);
+            else if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
+            else if constexpr (std::is_same_v<T, std::string>) return "\"" + x + "\"";
+            else if constexpr (std::is_same_v<T, ir::Vec2>) return "(" + rt::formatNumber(x.x) + ", " + rt::formatNumber(x.y) + ")";
+            else return "enum " + std::to_string(x.enumId) + "." + std::to_string(x.index);
+        },
+        v);
+}
+
+std::string operand(const Operand& o) { return o.reg >= 0 ? "r" + std::to_string(o.reg) : literal(o.literal->value); }
+std::string vec(const ir::Vec2& v) { return "(" + rt::formatNumber(v.x) + ", " + rt::formatNumber(v.y) + ")"; }
+std::string h(int handle) { return "h" + std::to_string(handle); }
+std::string k(int handle) { return "k" + std::to_string(handle); }
+
+std::string attrs(const ir::Program& prog, int kind, const std::vector<AttrWrite>& ws) {
+    std::string out;
+    for (const auto& w : ws) out += (out.empty() ? " {" : ", ") + prog.kinds[kind].attrs[w.attr].name + " = " + operand(w.value);
+    return out.empty() ? "" : out + "}";
+}
+
+}  // namespace
+
+std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const RewriteProgram& p) {
+    std::string out = "prepare\n";
+    for (const auto& op : p.prepare) {
+        out += "  " + std::visit(
+                          [&](const auto& o) -> std::string {
+                              using T = std::decay_t<decltype(o)>;
+                              if constexpr (std::is_same_v<T, EvalLocal>) return "let L" + std::to_string(o.slot) + " <- expr " + at(o.value->span);
+                              else if constexpr (std::is_same_v<T, Place>) {
+                                  std::string s = "place";
+                                  for (const auto& t : o.targets) s += " " + h(t.daughterNode) + "@" + vec(t.sketch);
+                                  return s;
+                              } else if constexpr (std::is_same_v<T, Eval>) return "r" + std::to_string(o.reg) + " <- expr " + at(o.value->span);
+                              else if constexpr (std::is_same_v<T, EvalPosition>)
+                                  return "r" + std::to_string(o.reg) + " <- finite position " + at(o.value->span);
+                              else {
+                                  static_assert(std::is_same_v<T, TakePlaced>, "an operation the printer does not know");
+                                  return "r" + std::to_string(o.reg) + " <- placed " + h(o.daughterNode);
+                              }
+                          },
+                          op) +
+               "\n";
+    }
+    out += "commit\n";
+    for (const auto& op : p.commit) {
+        out += "  " + std::visit(
+                          [&](const auto& o) -> std::string {
+                              using T = std::decay_t<decltype(o)>;
+                              if constexpr (std::is_same_v<T, DeleteEdge>) return "delete edge " + rule.edges[o.matchEdge].name;
+                              else if constexpr (std::is_same_v<T, BindNode>) return h(o.handle) + " = " + rule.nodes[o.matchNode].name;
+                              else if constexpr (std::is_same_v<T, CreateNode>)
+                                  return h(o.handle) + " = new " + prog.kinds[o.kind].name + " at r" + std::to_string(o.posReg) +
+                                         attrs(prog, o.kind, o.attrs);
+                              else if constexpr (std::is_same_v<T, Rewire>)
+                                  return "rewire " + rule.edges[o.matchEdge].name + " " + h(o.src) + " -> " + h(o.dst);
+                              else if constexpr (std::is_same_v<T, DeleteNode>) return "delete node " + rule.nodes[o.matchNode].name;
+                              else if constexpr (std::is_same_v<T, SetPos>) return h(o.handle) + ".pos = r" + std::to_string(o.reg);
+                              else if constexpr (std::is_same_v<T, SetNodeAttr>)
+                                  return h(o.handle) + "." + prog.kinds[o.kind].attrs[o.write.attr].name + " = " + operand(o.write.value);
+                              else if constexpr (std::is_same_v<T, TouchNodeValues>) return "touch values " + h(o.handle);
+                              else if constexpr (std::is_same_v<T, SetNodeStyle>)
+                                  return h(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              else if constexpr (std::is_same_v<T, BindEdge>) return k(o.handle) + " = " + rule.edges[o.matchEdge].name;
+                              else if constexpr (std::is_same_v<T, SetEdgeAttr>)
+                                  return k(o.handle) + "." + prog.kinds[o.kind].attrs[o.write.attr].name + " = " + operand(o.write.value);
+                              else if constexpr (std::is_same_v<T, TouchEdge>) return "touch edge " + k(o.handle);
+                              else if constexpr (std::is_same_v<T, CreateEdge>)
+                                  return k(o.handle) + " = new " + prog.kinds[o.kind].name + " " + h(o.src) + " -> " + h(o.dst) +
+                                         attrs(prog, o.kind, o.attrs);
+                              else {
+                                  static_assert(std::is_same_v<T, SetEdgeStyle>, "an operation the printer does not know");
+                                  return k(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              }
+                          },
+                          op) +
+               "\n";
+    }
+    std::string w;
+    for (int n : p.writtenNodes) w += " " + rule.nodes[n].name;
+    for (int e : p.writtenEdges) w += " " + rule.edges[e].name;
+    return out + "writes" + w + "\n";
+}
+
+}  // namespace g2d::lower

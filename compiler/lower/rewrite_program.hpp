@@ -1,0 +1,123 @@
+#pragma once
+// A daughter's rewrite as an ordered program: what both back ends do, decided
+// once. The interpreter executes it operation by operation; the C++ emitter
+// prints each operation as code. Neither decides anything the program does
+// not say: the order of evaluation (which random draws and which error come
+// first), the checks and their messages, the order of the graph updates, and
+// which changes are recorded for incremental matching.
+//
+// A rewrite has two parts, the contract of rt::RuleSet (prepare, commit):
+//   prepare  reads the graph before the step: evaluates every value into a
+//            register (typed, written once), in the daughter's order;
+//   commit   writes the graph: reads only the match, registers and literals.
+// Operands are numbers (match slots, registers, handles), never names.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ir/ir.hpp"
+
+namespace g2d::lower {
+
+// A value a commit writes: a register prepare filled, or a literal of the
+// grammar written as it is.
+struct Operand {
+    int reg = -1;                       // >= 0: a register
+    const ir::Expr* literal = nullptr;  // else: an ir::ExprOp::Literal
+    ir::Type type;
+};
+
+// ---- prepare -----------------------------------------------------------------
+struct EvalLocal {          // a `let` (the rule's, then the daughter's), into the rule's local slot
+    int slot;
+    const ir::Expr* value;
+};
+// Automatic placement (rt::placementFrame): the frame from the mother's sketch
+// to the match, then each target's sketch through it, checked finite.
+struct Place {
+    struct Target {
+        int daughterNode;
+        ir::Vec2 sketch;
+        Span span;
+        std::string message;            // when the position is not finite
+    };
+    std::vector<ir::Vec2> motherSketch;           // per pattern node
+    std::vector<std::pair<ir::Vec2, int>> refs;   // kept node: (daughter sketch, pattern node); empty: the whole match
+    std::optional<std::pair<int, int>> directed;  // the first directed non-loop pattern edge (src, dst)
+    std::vector<Target> targets;
+};
+struct Eval {               // reg <- value
+    int reg;
+    const ir::Expr* value;
+};
+struct EvalPosition {       // reg <- value, which must be a finite vector
+    int reg;
+    const ir::Expr* value;
+    std::string message;    // at value->span when it is not
+};
+struct TakePlaced {         // reg <- the automatic position of a daughter node
+    int reg;
+    int daughterNode;
+};
+using PrepareOp = std::variant<EvalLocal, Place, Eval, EvalPosition, TakePlaced>;
+
+// ---- commit --------------------------------------------------------------------
+// Nodes of the daughter are addressed by handle (= daughter node index), its
+// edges by edge handle (= daughter edge index).
+struct AttrWrite {
+    int attr;
+    Operand value;
+};
+struct DeleteEdge { int matchEdge; };
+struct BindNode { int handle; int matchNode; };          // a kept node
+struct CreateNode {
+    int handle, kind;
+    int posReg;
+    std::vector<AttrWrite> attrs;                        // the rest keep the kind's defaults
+};
+struct Rewire { int matchEdge; int src, dst; };          // node handles
+struct DeleteNode { int matchNode; };                    // with its remaining edges
+struct SetPos { int handle; int reg; };
+struct SetNodeAttr { int handle, kind; AttrWrite write; };   // a kept node's attribute (no change recorded)
+struct TouchNodeValues { int handle; };                  // record that a kept node's attributes changed
+struct SetNodeStyle { int handle; const ir::StyleAssign* style; Operand value; };
+struct BindEdge { int handle; int matchEdge; };          // a kept edge
+struct SetEdgeAttr { int handle, kind; AttrWrite write; };   // a kept edge's attribute (no change recorded)
+struct TouchEdge { int handle; };                        // record that a kept edge changed (its ends)
+struct CreateEdge {
+    int handle, kind;
+    int src, dst;                                        // node handles
+    std::vector<AttrWrite> attrs;
+};
+struct SetEdgeStyle { int handle; const ir::StyleAssign* style; Operand value; };
+using CommitOp = std::variant<DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetNodeAttr, TouchNodeValues,
+                              SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle>;
+
+struct RewriteProgram {
+    std::vector<PrepareOp> prepare;
+    std::vector<CommitOp> commit;
+    std::vector<ir::Type> registers;
+    int nodeHandles = 0, edgeHandles = 0;
+    bool placement = false;             // prepare has a Place (the `placed` positions exist)
+    // What the rewrite deletes or changes, as pattern slots (parallel steps
+    // keep rewrites that write what others read apart: rt::WriteSet).
+    std::vector<int> writtenNodes, writtenEdges;
+};
+
+// For std::visit with one overload per operation and no catch-all: an
+// operation a back end does not handle is a compile error there.
+template <class... Fs>
+struct Overloaded : Fs... {
+    using Fs::operator()...;
+};
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;
+
+// The rewrite of daughter `daughter` of `rule`.
+RewriteProgram lowerRewrite(const ir::Program& prog, const ir::Rule& rule, std::size_t daughter);
+
+// The program as text, one operation a line (tests, and reading what a rule does).
+std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const RewriteProgram& p);
+
+}  // namespace g2d::lower
