@@ -4,6 +4,7 @@
 
 #include "emit/cpp_expr.hpp"
 #include "emit/cpp_rules.hpp"
+#include "lower/rule_facts.hpp"
 
 #include <algorithm>
 
@@ -29,13 +30,50 @@ std::string vectorLiteral(const std::vector<T>& v) {
     return out + "}";
 }
 
-std::string incidenceName(ir::IncidenceRead r) {
+std::string incidenceName(rt::Incidence r) {
     switch (r) {
-    case ir::IncidenceRead::None: return "Incidence::None";
-    case ir::IncidenceRead::PatternEdges: return "Incidence::PatternEdges";
-    case ir::IncidenceRead::AllEdges: return "Incidence::AllEdges";
+    case rt::Incidence::None: return "Incidence::None";
+    case rt::Incidence::PatternEdges: return "Incidence::PatternEdges";
+    case rt::Incidence::AllEdges: return "Incidence::AllEdges";
     }
     return "Incidence::AllEdges";
+}
+
+template <class T>
+std::string listOf(const std::vector<T>& v, std::string (*item)(T)) {
+    std::string out = "{";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + item(v[i]);
+    return out + "}";
+}
+std::string byteText(std::uint8_t b) { return std::to_string(static_cast<int>(b)); }
+
+// `RuleInfo info` as the lowering made it (lower::ruleFacts), field by field:
+// the generated grammar holds the same data the interpreter computes.
+std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
+    std::string out = in + "RuleInfo info;\n";
+    out += in + "info.name = " + cppString(i.name) + ";\n";
+    out += in + "info.priority = " + cppLiteral(ir::Value{i.priority}, ir::kIntType) + ";\n";
+    out += in + "info.pick = " + (i.pick == rt::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
+    out += in + "info.parallel = " + (i.parallel ? "true" : "false") + ";\n";
+    out += in + "info.weights = {";
+    for (std::size_t d = 0; d < i.weights.size(); ++d) out += (d ? ", " : "") + cppLiteral(ir::Value{i.weights[d]}, ir::kFloatType);
+    out += "};\n";
+    out += in + "info.radius = " + str(i.radius) + ";\n";
+    out += in + "info.readsIncidence = " + listOf(i.readsIncidence, incidenceName) + ";\n";
+    out += in + "info.readDirections = " + listOf(i.readDirections, byteText) + ";\n";
+    out += in + "info.newHostAddsNothing = " + listOf(i.newHostAddsNothing, byteText) + ";\n";
+    out += in + "info.edgeCount = " + str(i.edgeCount) + ";\n";
+    out += in + "info.nodeKinds = " + vectorLiteral(i.nodeKinds) + ";\n";
+    out += in + "info.kindsKnown = " + (i.kindsKnown ? "true" : "false") + ";\n";
+    out += in + "info.readKinds = " + vectorLiteral(i.readKinds) + ";\n";
+    out += in + "info.readsDegrees = " + (i.readsDegrees ? "true" : "false") + ";\n";
+    out += in + "info.readValues = " + vectorLiteral(i.readValues) + ";\n";
+    for (std::size_t d = 0; d < i.changedKinds.size(); ++d) {
+        out += in + "info.changedKinds.push_back(" + vectorLiteral(i.changedKinds[d]) + ");\n";
+        out += in + "info.changedValues.push_back(" + vectorLiteral(i.changedValues[d]) + ");\n";
+    }
+    out += in + "info.deletesNodes = " + listOf(i.deletesNodes, byteText) + ";\n";
+    return out;
 }
 
 std::string paramType(const ir::Type& t) {
@@ -257,41 +295,15 @@ private:
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";
         for (const auto& r : prog_.rules) {
-            const auto prio = prog_.priorities.find(r.priority);
-            const bool parallel = r.parallel || (prio != prog_.priorities.end() && prio->second.parallel);
-            out += in + "{\n" + in + "    RuleInfo info;\n" + in + "    info.priority = " + cppLiteral(ir::Value{r.priority}, ir::kIntType) + ";\n";
-            out += in + "    info.name = " + cppString(r.name) + ";\n";
-            out += in + "    info.pick = " + (r.pick == ir::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
-            out += in + "    info.parallel = " + (parallel ? "true" : "false") + ";\n";
-            out += in + "    info.radius = " + str(r.repairRadius) + ";\n";
-            out += in + "    info.readsIncidence = {";
-            for (std::size_t i = 0; i < r.readsIncidence.size(); ++i) out += (i ? ", " : "") + incidenceName(r.readsIncidence[i]);
-            out += "};\n";
-            out += in + "    info.readDirections = {";
-            for (std::size_t i = 0; i < r.readDirections.size(); ++i) out += (i ? ", " : "") + str(static_cast<long long>(r.readDirections[i]));
-            out += "};\n";
-            out += in + "    info.edgeCount = " + str(static_cast<long long>(r.edges.size())) + ";\n";
-            out += in + "    info.nodeKinds = {";
-            for (std::size_t i = 0; i < r.nodes.size(); ++i) out += (i ? ", " : "") + str(r.nodes[i].kind);
-            out += "};\n";
-            out += in + "    info.kindsKnown = true;\n";
-            out += in + "    info.readKinds = " + vectorLiteral(r.readKinds) + ";\n";
-            out += in + "    info.readsDegrees = " + (r.readsDegrees ? "true" : "false") + ";\n";
-            out += in + "    info.readValues = " + vectorLiteral(r.readValues) + ";\n";
-            for (const auto& d : r.daughters) {
-                out += in + "    info.changedKinds.push_back(" + vectorLiteral(d.changedKinds) + ");\n";
-                out += in + "    info.changedValues.push_back(" + vectorLiteral(d.changedValues) + ");\n";
-                out += in + "    info.deletesNodes.push_back(" + (d.deletedNodes.empty() ? "0" : "1") + ");\n";
-            }
-            for (const auto& d : r.daughters) {
-                if (d.weight) {
-                    out += in + "    info.weights.push_back(" + cppLiteral(ir::Value{*d.weight}, ir::kFloatType) + ");\n";
-                } else {
-                    const std::string w = gen_.gen(*d.weightExpr, noElements(), out, in + "    ");
-                    out += in + "    if (!(" + w + " > 0) || !std::isfinite(" + w + ")) throw PlacedError(" +
-                           str(places_.add(d.weightExpr->span)) + ", \"a weight must be positive, but this is \" + formatNumber(" + w + "));\n";
-                    out += in + "    info.weights.push_back(" + w + ");\n";
-                }
+            const lower::RuleFacts facts = lower::ruleFacts(prog_, r);
+            out += in + "{\n" + ruleInfo(facts.info, in + "    ");
+            for (std::size_t d = 0; d < facts.weightExprs.size(); ++d) {
+                const ir::Expr* expr = facts.weightExprs[d];
+                if (!expr) continue;
+                const std::string w = gen_.gen(*expr, noElements(), out, in + "    ");
+                out += in + "    if (!(" + w + " > 0) || !std::isfinite(" + w + ")) throw PlacedError(" + str(places_.add(expr->span)) +
+                       ", \"a weight must be positive, but this is \" + formatNumber(" + w + "));\n";
+                out += in + "    info.weights[" + str(static_cast<long long>(d)) + "] = " + w + ";\n";
             }
             out += in + "    infos_.push_back(std::move(info));\n" + in + "}\n";
         }

@@ -4,10 +4,7 @@
 #include <cmath>
 
 #include "g2d/placement.hpp"
-
-// The IR's edge-list bits are the runtime's (ir::Rule::readDirections is
-// handed over as is, and generated code writes the same numbers).
-static_assert(g2d::ir::kReadsOutEdges == g2d::rt::RepairArea::kOut && g2d::ir::kReadsInEdges == g2d::rt::RepairArea::kIn);
+#include "lower/rule_facts.hpp"
 
 namespace g2d::interp {
 
@@ -16,55 +13,18 @@ using rt::EdgeId;
 using rt::kNoId;
 using rt::NodeId;
 
-namespace {
-
-rt::Incidence incidence(ir::IncidenceRead r) {
-    switch (r) {
-    case ir::IncidenceRead::None: return rt::Incidence::None;
-    case ir::IncidenceRead::PatternEdges: return rt::Incidence::PatternEdges;
-    case ir::IncidenceRead::AllEdges: return rt::Incidence::AllEdges;
-    }
-    return rt::Incidence::AllEdges;
-}
-
-}  // namespace
-
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     std::size_t maxNodes = 0, maxEdges = 0;
     for (const auto& r : st.prog->rules) {
-        rt::RuleInfo info;
-        info.name = r.name;
-        info.priority = r.priority;
-        info.pick = r.pick == ir::Pick::Oldest ? rt::Pick::Oldest : rt::Pick::Random;
-        auto prio = st.prog->priorities.find(r.priority);
-        info.parallel = r.parallel || (prio != st.prog->priorities.end() && prio->second.parallel);
-        for (const auto& d : r.daughters) {
-            double w = 1;
-            if (d.weight) {
-                w = *d.weight;
-            } else if (d.weightExpr) {
-                EvalFrame f = st.frame(nullptr);
-                rt::Value v = evaluate(*d.weightExpr, f);
-                w = std::get<double>(v);
-                if (!(w > 0) || !std::isfinite(w))
-                    throw EvalError(d.weightExpr->span, "a weight must be positive, but this is " + rt::formatNumber(w));
-            }
-            info.weights.push_back(w);
-        }
-        info.radius = r.repairRadius;
-        for (ir::IncidenceRead read : r.readsIncidence) info.readsIncidence.push_back(incidence(read));
-        info.readDirections = r.readDirections;
-        for (bool nothing : r.newHostAddsNothing) info.newHostAddsNothing.push_back(nothing ? 1 : 0);
-        for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
-        info.edgeCount = static_cast<int>(r.edges.size());
-        info.kindsKnown = true;
-        info.readKinds = r.readKinds;
-        info.readsDegrees = r.readsDegrees;
-        info.readValues = r.readValues;
-        for (const auto& d : r.daughters) {
-            info.changedKinds.push_back(d.changedKinds);
-            info.changedValues.push_back(d.changedValues);
-            info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
+        lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);
+        rt::RuleInfo& info = facts.info;
+        for (std::size_t d = 0; d < facts.weightExprs.size(); ++d) {
+            if (!facts.weightExprs[d]) continue;
+            EvalFrame f = st.frame(nullptr);
+            const double w = std::get<double>(evaluate(*facts.weightExprs[d], f));
+            if (!(w > 0) || !std::isfinite(w))
+                throw EvalError(facts.weightExprs[d]->span, "a weight must be positive, but this is " + rt::formatNumber(w));
+            info.weights[d] = w;
         }
         infos_.push_back(std::move(info));
         auto& rewrites = rewrites_.emplace_back();

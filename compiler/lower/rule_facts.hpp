@@ -1,0 +1,20 @@
+#pragma once
+// What the runtime's scheduler and incremental matching know of a rule
+// (rt::RuleInfo), decided once from the IR for both back ends: the
+// interpreter uses it as it is, the emitter prints it as data. A weight
+// given by an expression of parameters is the one thing left to the run.
+#include <vector>
+
+#include "g2d/derivation.hpp"
+#include "ir/ir.hpp"
+
+namespace g2d::lower {
+
+struct RuleFacts {
+    rt::RuleInfo info;                          // weights: the known ones, 0 where weightExprs has one
+    std::vector<const ir::Expr*> weightExprs;   // per daughter: the weight's expression, null when known
+};
+
+RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& rule);
+
+}  // namespace g2d::lower
