@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   antlr4 libantlr4-runtime-dev
-  libfmt-dev libglm-dev libcli11-dev catch2
+  libglm-dev libcli11-dev catch2
   nlohmann-json3-dev
   libxml2-utils
   python3-networkx

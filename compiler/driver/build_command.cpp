@@ -6,7 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 #include "emit/cpp_emitter.hpp"
 #include "g2d/atomic_file.hpp"
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <unistd.h>
 
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 
 namespace g2d {
 

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 #include "g2d/run_options.hpp"
 #include "interp/interpreted_run.hpp"
 

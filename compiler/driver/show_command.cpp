@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 #include "g2d/atomic_file.hpp"
 #include "show/production_diagram.hpp"
 

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 #include "lsp/json_rpc.hpp"
 #include "lsp/keywords.hpp"
 #include "lsp/positions.hpp"

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "g2d/atomic_file.hpp"
+#include "g2d/trace.hpp"
 #include "g2d/source_excerpt.hpp"
 
 namespace g2d::rt {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "driver/big_stack.hpp"
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 #include "g2d/json_writer.hpp"
 #include "g2d/run_driver.hpp"
 #include "g2d/svg_writer.hpp"

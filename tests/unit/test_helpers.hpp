@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/rng.hpp"
 #include "g2d/run_driver.hpp"

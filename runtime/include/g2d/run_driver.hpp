@@ -7,10 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "g2d/derivation.hpp"
 #include "g2d/grammar_run.hpp"
-#include "g2d/trace.hpp"
 
 namespace g2d::rt {
+
+class TraceRecorder;   // --trace (runtime-internal)
 
 inline constexpr long long kDefaultStepLimit = 10000;
 

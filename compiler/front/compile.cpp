@@ -1,4 +1,4 @@
-#include "driver/compile.hpp"
+#include "front/compile.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -5,7 +5,7 @@
 
 #include "ast/ast.hpp"
 #include "diag/diagnostic.hpp"
-#include "driver/loader.hpp"
+#include "front/loader.hpp"
 #include "ir/ir.hpp"
 
 namespace g2d {

@@ -1,4 +1,4 @@
-#include "driver/loader.hpp"
+#include "front/loader.hpp"
 
 #include <cerrno>
 #include <cstdlib>
