@@ -194,7 +194,7 @@ private:
     std::string emitConstructor() {
         std::string out = "    Grammar() : graph_(std::vector<KindInfo>{";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
-            out += (k ? ", " : "") + std::string("KindInfo{") + (prog_.kinds[k].cls == ir::ElemClass::Edge ? "true" : "false") +
+            out += (k ? ", " : "") + std::string("KindInfo{") + (prog_.kinds[k].cls == ir::ElemClass::Edge ? "ElemClass::Edge" : "ElemClass::Node") +
                    ", " + (prog_.kinds[k].directed ? "true" : "false") + "}";
         out += "}, std::vector<std::string>{";
         for (std::size_t i = 0; i < prog_.styleProps.size(); ++i) out += (i ? ", " : "") + cppString(prog_.styleProps[i]);
@@ -420,7 +420,7 @@ private:
     }
 
     std::string emitAttribute() {
-        std::string out = "    Value attribute(bool isEdge, std::uint32_t id, int attr) const override {\n";
+        std::string out = "    Value attribute(ElemClass cls, std::uint32_t id, int attr) const override {\n        const bool isEdge = cls == ElemClass::Edge;\n";
         out += "        const int kind = isEdge ? graph_.edgeKind(id) : graph_.nodeKind(id);\n";
         out += "        const std::uint32_t slot = isEdge ? graph_.edgeSlot(id) : graph_.nodeSlot(id);\n        (void)slot; (void)attr;\n";
         out += "        switch (kind) {\n";
@@ -440,11 +440,10 @@ private:
         std::string out;
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             const auto& kind = prog_.kinds[k];
-            const bool isEdge = kind.cls == ir::ElemClass::Edge;
             out += "    void style_" + str(static_cast<long long>(k)) + "(DrawItem& it, std::uint32_t self) {\n        (void)it; (void)self;\n";
             ExprContext ctx;
             ctx.self = "self";
-            ctx.selfIsEdge = isEdge;
+            ctx.selfClass = kind.cls;
             ctx.selfKind = static_cast<int>(k);
             ctx.graph = "graph_";
             for (const auto& p : kind.style) {
@@ -468,7 +467,7 @@ private:
                "        }\n    }\n\n";
         out += "    std::vector<DrawItem> drawItems() override {\n        std::vector<DrawItem> items;\n        try {\n";
         out += "            for (EdgeId e = 0; e < graph_.edgeCapacity(); ++e) {\n                if (!graph_.edgeAlive(e)) continue;\n"
-               "                DrawItem it;\n                it.isEdge = true;\n                it.id = e;\n"
+               "                DrawItem it;\n                it.cls = ElemClass::Edge;\n                it.id = e;\n"
                "                it.a = graph_.pos(graph_.source(e));\n                it.b = graph_.pos(graph_.target(e));\n"
                "                switch (graph_.edgeKind(e)) {\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)

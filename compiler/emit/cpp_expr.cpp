@@ -95,8 +95,8 @@ std::string cppLiteral(const ir::Value& v, const ir::Type& t) {
     return std::to_string(std::get<ir::EnumValue>(v).index);
 }
 
-std::string ExprGen::attrAccess(int kind, const std::string& id, bool isEdge, int attr, const std::string& graph) const {
-    return "store_" + std::to_string(kind) + "[" + graph + (isEdge ? ".edgeSlot(" : ".nodeSlot(") + id + ")].a" +
+std::string ExprGen::attrAccess(int kind, const std::string& id, ir::ElemClass cls, int attr, const std::string& graph) const {
+    return "store_" + std::to_string(kind) + "[" + graph + (cls == ir::ElemClass::Edge ? ".edgeSlot(" : ".nodeSlot(") + id + ")].a" +
            std::to_string(attr);
     (void)prog_;
 }
@@ -106,8 +106,8 @@ std::string ExprGen::place(const ir::Expr& e, std::string& out, const std::strin
     return "";
 }
 
-std::string ExprGen::fact(const ir::Expr& e, const std::string& id, bool isEdge, const std::string& g) {
-    if (isEdge) return e.fact == ir::ElemFact::Age ? g + ".edgeAge(" + id + ")" : "static_cast<long long>(" + id + ")";
+std::string ExprGen::fact(const ir::Expr& e, const std::string& id, ir::ElemClass cls, const std::string& g) {
+    if (cls == ir::ElemClass::Edge) return e.fact == ir::ElemFact::Age ? g + ".edgeAge(" + id + ")" : "static_cast<long long>(" + id + ")";
     switch (e.fact) {
     case ir::ElemFact::Pos: return g + ".pos(" + id + ")";
     case ir::ElemFact::Age: return g + ".nodeAge(" + id + ")";
@@ -140,14 +140,14 @@ std::string ExprGen::gen(const ir::Expr& e, const ExprContext& ctx, std::string&
         const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
         const std::string id = isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index);
         const int kind = isEdge ? ctx.edgeKind(e.elem.index) : ctx.nodeKind(e.elem.index);
-        return bind(attrAccess(kind, id, isEdge, e.index, ctx.graph));
+        return bind(attrAccess(kind, id, e.elem.cls, e.index, ctx.graph));
     }
-    case ExprOp::SelfAttr: return bind(attrAccess(ctx.selfKind, ctx.self, ctx.selfIsEdge, e.index, ctx.graph));
+    case ExprOp::SelfAttr: return bind(attrAccess(ctx.selfKind, ctx.self, ctx.selfClass, e.index, ctx.graph));
     case ExprOp::Fact: {
         const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
-        return bind(fact(e, isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index), isEdge, ctx.graph));
+        return bind(fact(e, isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index), e.elem.cls, ctx.graph));
     }
-    case ExprOp::SelfFact: return bind(fact(e, ctx.self, ctx.selfIsEdge, ctx.graph));
+    case ExprOp::SelfFact: return bind(fact(e, ctx.self, ctx.selfClass, ctx.graph));
     case ExprOp::Placed: return bind("*placed[" + std::to_string(e.index) + "]");
     case ExprOp::VecX: return bind("(" + gen(e.args[0], ctx, out, in) + ").x");
     case ExprOp::VecY: return bind("(" + gen(e.args[0], ctx, out, in) + ").y");

@@ -54,7 +54,7 @@ struct ExprContext {
     std::function<int(int)> nodeKind;           // kind of pattern node i
     std::function<int(int)> edgeKind;           // kind of pattern edge i
     std::string self;                           // host id of the styled element
-    bool selfIsEdge = false;
+    ir::ElemClass selfClass = ir::ElemClass::Node;
     int selfKind = -1;
     std::string graph = "g";                    // the graph read
 };
@@ -68,14 +68,14 @@ public:
     std::string gen(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& indent);
 
     // C++ that reads attribute `attr` of a node or edge of kind `kind`.
-    std::string attrAccess(int kind, const std::string& id, bool isEdge, int attr, const std::string& graph) const;
+    std::string attrAccess(int kind, const std::string& id, ir::ElemClass cls, int attr, const std::string& graph) const;
 
 private:
     std::string temp() { return "t" + std::to_string(next_++); }
     std::string place(const ir::Expr& e, std::string& out, const std::string& indent);
     std::string call(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& indent);
     std::string binary(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& indent);
-    std::string fact(const ir::Expr& e, const std::string& id, bool isEdge, const std::string& graph);
+    std::string fact(const ir::Expr& e, const std::string& id, ir::ElemClass cls, const std::string& graph);
     std::string display(const std::string& value, const ir::Type& t);
 
     const ir::Program& prog_;

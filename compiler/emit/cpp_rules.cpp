@@ -356,12 +356,12 @@ private:
         return valueOf(v.type, reg(v.reg));
     }
     // A new element's attribute record: the kind's defaults, then the daughter's values.
-    std::string record(int kind, const std::vector<lower::AttrWrite>& attrs, const std::string& element, bool isEdge,
+    std::string record(int kind, const std::vector<lower::AttrWrite>& attrs, const std::string& element, ir::ElemClass cls,
                        const std::string& c) const {
         if (prog_.kinds[kind].attrs.empty()) return "";
         std::string out = c + "{\n" + c + "    Kind" + str(kind) + " rec = default_" + str(kind) + ";\n";
         for (const auto& w : attrs) out += c + "    rec.a" + str(w.attr) + " = " + attrValue(w.value) + ";\n";
-        return out + c + "    G.set" + (isEdge ? "Edge" : "Node") + "Slot(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
+        return out + c + "    G.set" + (cls == ir::ElemClass::Edge ? "Edge" : "Node") + "Slot(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
     }
 
     // prepare_R_D prints the program's prepare part; apply_R_D its commit part.
@@ -407,7 +407,7 @@ private:
                            },
                            [&](const lower::CreateNode& o) {
                                commit += c + "const NodeId " + node(o.handle) + " = G.addNode(" + str(o.kind) + ", " + reg(o.posReg) + ", step);\n" + c +
-                                         "(void)" + node(o.handle) + ";\n" + record(o.kind, o.attrs, node(o.handle), false, c);
+                                         "(void)" + node(o.handle) + ";\n" + record(o.kind, o.attrs, node(o.handle), ir::ElemClass::Node, c);
                            },
                            [&](const lower::Rewire& o) {
                                commit += c + "G.reconnectEdge(m.edges[" + str(o.matchEdge) + "], " + node(o.src) + ", " + node(o.dst) + ");\n";
@@ -415,7 +415,7 @@ private:
                            [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
                            [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + reg(o.reg) + ");\n"; },
                            [&](const lower::SetNodeAttr& o) {
-                               commit += c + gen_.attrAccess(o.kind, node(o.handle), false, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                               commit += c + gen_.attrAccess(o.kind, node(o.handle), ir::ElemClass::Node, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
                            },
                            [&](const lower::TouchNodeValues& o) { commit += c + "G.touchNodeValues(" + node(o.handle) + ");\n"; },
                            [&](const lower::SetNodeStyle& o) {
@@ -425,12 +425,12 @@ private:
                                commit += c + "const EdgeId " + edge(o.handle) + " = m.edges[" + str(o.matchEdge) + "];\n" + c + "(void)" + edge(o.handle) + ";\n";
                            },
                            [&](const lower::SetEdgeAttr& o) {
-                               commit += c + gen_.attrAccess(o.kind, edge(o.handle), true, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                               commit += c + gen_.attrAccess(o.kind, edge(o.handle), ir::ElemClass::Edge, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
                            },
                            [&](const lower::TouchEdge& o) { commit += c + "G.touchEdgeItself(" + edge(o.handle) + ");\n"; },
                            [&](const lower::CreateEdge& o) {
                                commit += c + "const EdgeId " + edge(o.handle) + " = G.addEdge(" + str(o.kind) + ", " + node(o.src) + ", " + node(o.dst) +
-                                         ", step);\n" + c + "(void)" + edge(o.handle) + ";\n" + record(o.kind, o.attrs, edge(o.handle), true, c);
+                                         ", step);\n" + c + "(void)" + edge(o.handle) + ";\n" + record(o.kind, o.attrs, edge(o.handle), ir::ElemClass::Edge, c);
                            },
                            [&](const lower::SetEdgeStyle& o) {
                                commit += c + "G.setEdgeStyle(" + edge(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";

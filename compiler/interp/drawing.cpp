@@ -32,11 +32,11 @@ std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) 
     for (rt::EdgeId e = 0; e < g.edgeCapacity(); ++e) {
         if (!g.edgeAlive(e)) continue;
         rt::DrawItem item;
-        item.isEdge = true;
+        item.cls = rt::ElemClass::Edge;
         item.id = e;
         item.a = g.pos(g.source(e));
         item.b = g.pos(g.target(e));
-        f.selfIsEdge = true;
+        f.selfClass = ir::ElemClass::Edge;
         f.self = e;
         resolve(item, prog.kinds[g.edgeKind(e)], g.edgeStyle(e), g, f, prog);
         items.push_back(std::move(item));
@@ -46,7 +46,7 @@ std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) 
         rt::DrawItem item;
         item.id = n;
         item.a = g.pos(n);
-        f.selfIsEdge = false;
+        f.selfClass = ir::ElemClass::Node;
         f.self = n;
         resolve(item, prog.kinds[g.nodeKind(n)], g.nodeStyle(n), g, f, prog);
         items.push_back(std::move(item));

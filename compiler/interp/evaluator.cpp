@@ -113,9 +113,9 @@ Value arith(const ir::Expr& e, const Value& l, const Value& r) {
     throw rt::OpError("unsupported operation");
 }
 
-Value fact(const ir::Expr& e, EvalFrame& f, bool isEdge, std::uint32_t id) {
+Value fact(const ir::Expr& e, EvalFrame& f, ir::ElemClass cls, std::uint32_t id) {
     const rt::Graph& g = *f.graph;
-    if (isEdge) {
+    if (cls == ir::ElemClass::Edge) {
         if (e.fact == ir::ElemFact::Age) return g.edgeAge(id);
         return static_cast<long long>(id);
     }
@@ -143,12 +143,12 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
         if (e.elem.cls == ir::ElemClass::Edge) return f.graph->edgeAttr(f.edges[e.elem.index], e.index);
         return f.graph->nodeAttr(f.nodes[e.elem.index], e.index);
     case ExprOp::SelfAttr:
-        return f.selfIsEdge ? f.graph->edgeAttr(f.self, e.index) : f.graph->nodeAttr(f.self, e.index);
+        return f.selfClass == ir::ElemClass::Edge ? f.graph->edgeAttr(f.self, e.index) : f.graph->nodeAttr(f.self, e.index);
     case ExprOp::Fact: {
-        const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
-        return fact(e, f, isEdge, isEdge ? f.edges[e.elem.index] : f.nodes[e.elem.index]);
+        const ir::ElemClass cls = e.elem.cls;
+        return fact(e, f, cls, cls == ir::ElemClass::Edge ? f.edges[e.elem.index] : f.nodes[e.elem.index]);
     }
-    case ExprOp::SelfFact: return fact(e, f, f.selfIsEdge, f.self);
+    case ExprOp::SelfFact: return fact(e, f, f.selfClass, f.self);
     case ExprOp::Placed: return *(*f.placed)[e.index];
     case ExprOp::VecX: return V(evaluate(e.args[0], f)).x;
     case ExprOp::VecY: return V(evaluate(e.args[0], f)).y;

@@ -29,7 +29,7 @@ struct EvalFrame {
     const rt::EdgeId* edges = nullptr;
     rt::Rng* rng = nullptr;
     const std::vector<std::optional<rt::vec2>>* placed = nullptr;  // automatic positions, by daughter node
-    bool selfIsEdge = false;                          // kind style expressions
+    ir::ElemClass selfClass = ir::ElemClass::Node;    // kind style expressions
     std::uint32_t self = rt::kNoId;
 };
 

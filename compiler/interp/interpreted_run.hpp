@@ -22,7 +22,7 @@ public:
     std::vector<rt::DrawItem> drawItems() override;
     const std::vector<std::string>& svgDefs() const override { return prog_.svgDefs; }
     const rt::JsonSchema& jsonSchema() const override { return schema_; }
-    rt::Value attribute(bool isEdge, std::uint32_t id, int attr) const override;
+    rt::Value attribute(rt::ElemClass cls, std::uint32_t id, int attr) const override;
     std::optional<rt::SourceLocation> locate(const std::exception& e) const override;
     std::string currentRule() const override;
 

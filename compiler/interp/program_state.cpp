@@ -32,7 +32,7 @@ ProgramState initState(const ir::Program& prog, std::vector<rt::Value> params, r
 
 std::vector<rt::KindInfo> kindInfos(const ir::Program& prog) {
     std::vector<rt::KindInfo> out;
-    for (const auto& k : prog.kinds) out.push_back(rt::KindInfo{k.cls == ir::ElemClass::Edge, k.directed});
+    for (const auto& k : prog.kinds) out.push_back(rt::KindInfo{k.cls, k.directed});
     return out;
 }
 

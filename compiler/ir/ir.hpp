@@ -14,6 +14,7 @@
 
 #include "diag/source.hpp"
 #include "g2d/builtins.hpp"
+#include "g2d/elem_class.hpp"
 
 namespace g2d::ir {
 
@@ -49,7 +50,7 @@ struct EnumValue {
 using Value = std::variant<long long, double, bool, std::string, Vec2, EnumValue>;
 
 // ---- elements ------------------------------------------------------------------
-enum class ElemClass { Node, Edge };
+using ElemClass = rt::ElemClass;   // g2d/elem_class.hpp
 
 struct ElemRef {
     ElemClass cls = ElemClass::Node;

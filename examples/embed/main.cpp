@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
     std::printf("koch: %lld steps, %zu nodes, %zu edges\n", result.steps, graph.nodeCount(), graph.edgeCount());
     long long deepest = 0;
     for (g2d::rt::EdgeId e = 0; e < graph.edgeCapacity(); ++e)
-        if (graph.edgeAlive(e)) deepest = std::max(deepest, std::get<long long>(koch.attribute(true, e, "lod")));
+        if (graph.edgeAlive(e)) deepest = std::max(deepest, std::get<long long>(koch.attribute(g2d::rt::ElemClass::Edge, e, "lod")));
     std::printf("koch: deepest lod %lld\n", deepest);
 
     g2d::Grammar sierpinski(g2d_grammar_sierpinski(), "sierpinski.g2d");

@@ -48,12 +48,13 @@ rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
     return last_;
 }
 
-rt::Value Grammar::attribute(bool isEdge, std::uint32_t id, const std::string& name) const {
+rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::string& name) const {
+    const bool isEdge = cls == rt::ElemClass::Edge;
     const rt::Graph& g = run_->graph();
     const int kind = isEdge ? g.edgeKind(id) : g.nodeKind(id);
     const auto& names = run_->jsonSchema().attrNames.at(static_cast<std::size_t>(kind));
     for (std::size_t a = 0; a < names.size(); ++a)
-        if (names[a] == name) return run_->attribute(isEdge, id, static_cast<int>(a));
+        if (names[a] == name) return run_->attribute(cls, id, static_cast<int>(a));
     throw std::invalid_argument("kind `" + run_->jsonSchema().kindNames.at(static_cast<std::size_t>(kind)) +
                                 "` has no attribute `" + name + "`");
 }
@@ -67,7 +68,7 @@ std::string Grammar::json() {
         {"steps", last_.steps},
         {"stopped", std::string(last_.stopped == rt::StopReason::Terminal ? "terminal" : "step_limit")}};
     return rt::writeJson(run_->graph(), run_->jsonSchema(), meta,
-                         [&](bool isEdge, std::uint32_t id, int a) { return run_->attribute(isEdge, id, a); });
+                         [&](rt::ElemClass cls, std::uint32_t id, int a) { return run_->attribute(cls, id, a); });
 }
 
 }  // namespace g2d

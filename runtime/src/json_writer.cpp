@@ -59,8 +59,8 @@ std::string attributeJson(const Value& v, const JsonSchema& schema, const char* 
 
 std::string writeJson(const Graph& g, const JsonSchema& schema,
                       const std::vector<std::pair<std::string, Value>>& graphAttrs, const AttributeReader& reader) {
-    const AttributeReader attr = reader ? reader : AttributeReader([&](bool isEdge, std::uint32_t id, int a) {
-        return isEdge ? g.edgeAttr(id, a) : g.nodeAttr(id, a);
+    const AttributeReader attr = reader ? reader : AttributeReader([&](ElemClass cls, std::uint32_t id, int a) {
+        return cls == ElemClass::Edge ? g.edgeAttr(id, a) : g.nodeAttr(id, a);
     });
     std::string out = "{\"directed\": true, \"multigraph\": true, \"graph\": {";
     for (std::size_t i = 0; i < graphAttrs.size(); ++i)
@@ -77,7 +77,7 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
                formatNumber(g.pos(n).x) + ", " + formatNumber(g.pos(n).y) + "], \"age\": " + std::to_string(g.nodeAge(n));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
             out += ", " + jsonString(schema.attrNames[k][a]) + ": " +
-                   attributeJson(attr(false, n, static_cast<int>(a)), schema, "node", n, schema.attrNames[k][a]);
+                   attributeJson(attr(ElemClass::Node, n, static_cast<int>(a)), schema, "node", n, schema.attrNames[k][a]);
         out += "}";
     }
     out += "],\n\"links\": [";
@@ -95,7 +95,7 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
                ", \"age\": " + std::to_string(g.edgeAge(e));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
             out += ", " + jsonString(schema.attrNames[k][a]) + ": " +
-                   attributeJson(attr(true, e, static_cast<int>(a)), schema, "edge", e, schema.attrNames[k][a]);
+                   attributeJson(attr(ElemClass::Edge, e, static_cast<int>(a)), schema, "edge", e, schema.attrNames[k][a]);
         out += "}";
     }
     out += "]}\n";

@@ -214,7 +214,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                 {"steps", result.steps},
                 {"stopped", stopped}};
             jsonFile->commit(writeJson(graph, grammar.jsonSchema(), meta,
-                                       [&](bool isEdge, std::uint32_t id, int a) { return grammar.attribute(isEdge, id, a); }));
+                                       [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); }));
         }
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "

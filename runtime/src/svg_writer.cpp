@@ -114,7 +114,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     std::stable_sort(items.begin(), items.end(), [](const DrawItem& a, const DrawItem& b) {
         const double za = styleNumber(a, "z", 0), zb = styleNumber(b, "z", 0);
         if (za != zb) return za < zb;
-        if (a.isEdge != b.isEdge) return a.isEdge;
+        if (a.cls != b.cls) return a.cls == ElemClass::Edge;
         return a.id < b.id;
     });
     Box box;
@@ -122,14 +122,15 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     bool arrows = false;
     std::string body;
     for (const auto& it : items) {
-        const std::string tag = styleText(it, "tag", it.isEdge ? "line" : "circle");
+        const bool isEdge = it.cls == ElemClass::Edge;
+        const std::string tag = styleText(it, "tag", isEdge ? "line" : "circle");
         if (tag == "none") continue;
-        const double stroke = styleNumber(it, "stroke_width", it.isEdge ? 0.05 : 0.02);
+        const double stroke = styleNumber(it, "stroke_width", isEdge ? 0.05 : 0.02);
         maxStroke = std::max(maxStroke, stroke);
-        const vec2 c = it.isEdge ? (it.a + it.b) * 0.5 : it.a;
+        const vec2 c = isEdge ? (it.a + it.b) * 0.5 : it.a;
         const double rotate = styleNumber(it, "rotate", 0);
         std::string rotation = rotate != 0 ? " transform=\"rotate(" + num(rotate) + " " + num(c.x) + " " + num(c.y) + ")\"" : "";
-        if (tag == "line" && it.isEdge) {
+        if (tag == "line" && isEdge) {
             box.add(it.a, 0);
             box.add(it.b, 0);
             std::string marker;
@@ -137,7 +138,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
             body += "<line x1=\"" + num(it.a.x) + "\" y1=\"" + num(it.a.y) + "\" x2=\"" + num(it.b.x) + "\" y2=\"" +
                     num(it.b.y) + "\"" + passThrough(it, {{"stroke", "black"}, {"stroke-width", "0.05"}}) + marker +
                     "/>\n";
-        } else if (tag == "circle" || (tag == "line" && !it.isEdge)) {
+        } else if (tag == "circle" || (tag == "line" && !isEdge)) {
             const double r = styleNumber(it, "r", 0.1);
             box.add(c, r);
             body += "<circle cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\" r=\"" + num(r) + "\"" +
@@ -149,12 +150,12 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
                     "\" height=\"" + num(h) + "\"" + rotation + passThrough(it, {}) + "/>\n";
         } else if (tag == "path") {
             box.add(it.a, 0);
-            if (it.isEdge) box.add(it.b, 0);
+            if (isEdge) box.add(it.b, 0);
             body += "<path d=\"" + xmlEscape(styleText(it, "d", "")) + "\"" +
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.05"}}) + "/>\n";
         } else if (tag == "polyline") {
             box.add(it.a, 0);
-            if (it.isEdge) box.add(it.b, 0);
+            if (isEdge) box.add(it.b, 0);
             body += "<polyline points=\"" + xmlEscape(styleText(it, "points", "")) + "\"" +
                     passThrough(it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.05"}}) + "/>\n";
         } else if (tag == "image") {

@@ -38,9 +38,9 @@ std::string edges(const std::vector<TraceEdge>& v) {
 // How a kind is drawn in the player: the resolved style of one of its
 // elements (tag, stroke, stroke width, fill, radius).
 std::string kindStyle(const DrawItem& it) {
-    return "{\"tag\":" + jsonString(styleText(it, "tag", it.isEdge ? "line" : "circle")) +
+    return "{\"tag\":" + jsonString(styleText(it, "tag", it.cls == ElemClass::Edge ? "line" : "circle")) +
            ",\"stroke\":" + jsonString(styleText(it, "stroke", "black")) +
-           ",\"stroke_width\":" + num(styleNumber(it, "stroke_width", it.isEdge ? 0.05 : 0.02)) +
+           ",\"stroke_width\":" + num(styleNumber(it, "stroke_width", it.cls == ElemClass::Edge ? 0.05 : 0.02)) +
            ",\"fill\":" + jsonString(styleText(it, "fill", "none")) + ",\"r\":" + num(styleNumber(it, "r", 0.1)) + "}";
 }
 
@@ -126,7 +126,7 @@ std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t se
     const Graph& g = grammar_.graph();
     auto note = [&](const std::vector<DrawItem>& items) {
         for (const auto& it : items) {
-            const int kind = it.isEdge ? g.edgeKind(it.id) : g.nodeKind(it.id);
+            const int kind = it.cls == ElemClass::Edge ? g.edgeKind(it.id) : g.nodeKind(it.id);
             styles.emplace(kind, kindStyle(it));
         }
     };
@@ -136,10 +136,10 @@ std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t se
                       ",\"stopped\":" + jsonString(stopped) + ",\"kinds\":[";
     for (std::size_t k = 0; k < kinds.size(); ++k) {
         DrawItem fallback;
-        fallback.isEdge = kinds[k].isEdge;
+        fallback.cls = kinds[k].cls;
         const auto it = styles.find(static_cast<int>(k));
         out += std::string(k ? "," : "") + "{\"name\":" + jsonString(k < schema.kindNames.size() ? schema.kindNames[k] : "") +
-               ",\"edge\":" + (kinds[k].isEdge ? "true" : "false") + ",\"directed\":" + (kinds[k].directed ? "true" : "false") +
+               ",\"edge\":" + (kinds[k].cls == ElemClass::Edge ? "true" : "false") + ",\"directed\":" + (kinds[k].directed ? "true" : "false") +
                ",\"style\":" + (it != styles.end() ? it->second : kindStyle(fallback)) + "}";
     }
     out += "],\"axiom\":{\"nodes\":" + nodes(axiomNodes_) + ",\"edges\":" + edges(axiomEdges_) + "},\"steps\":[";

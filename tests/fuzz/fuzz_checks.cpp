@@ -96,7 +96,7 @@ void checkInterpreterHere(const std::uint8_t* data, std::size_t size) {
     try {
         (void)rt::writeSvg(run.drawItems(), run.svgDefs());
         (void)rt::writeJson(run.graph(), run.jsonSchema(), {},
-                            [&](bool isEdge, std::uint32_t id, int a) { return run.attribute(isEdge, id, a); });
+                            [&](rt::ElemClass cls, std::uint32_t id, int a) { return run.attribute(cls, id, a); });
     } catch (const std::exception& e) {
         if (auto wrong = unexpectedRunFailure(e, run)) violated("while drawing: " + *wrong);
     }

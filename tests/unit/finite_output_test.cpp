@@ -29,11 +29,11 @@ TEST_CASE("random draws that overflow are run-time errors, not infinities", "[ru
 }
 
 TEST_CASE("the JSON writer never writes a non-finite number", "[json][finite]") {
-    rt::Graph g({rt::KindInfo{false, false}});
+    rt::Graph g({rt::KindInfo{rt::ElemClass::Node, false}});
     g.addNode(0, {0, 0}, 0);
     const rt::JsonSchema schema{{"P"}, {{"f"}}, {}};
     auto reading = [](double x) {
-        return [x](bool, std::uint32_t, int) { return rt::Value{x}; };
+        return [x](rt::ElemClass, std::uint32_t, int) { return rt::Value{x}; };
     };
     CHECK_THAT(rt::writeJson(g, schema, {}, reading(1.5)), Catch::Contains("\"f\": 1.5"));
     CHECK_THROWS_WITH(rt::writeJson(g, schema, {}, reading(std::numeric_limits<double>::infinity())),

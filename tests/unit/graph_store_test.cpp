@@ -10,8 +10,8 @@ using namespace g2d::rt;
 
 TEST_CASE("a node's edge kinds gain a bit per linked kind and keep it", "[graph]") {
     // Kinds 0: node, 1 and 2: edges, 33: an edge kind sharing kind 1's bit.
-    std::vector<KindInfo> kinds(34, KindInfo{true, true});
-    kinds[0] = KindInfo{false, false};
+    std::vector<KindInfo> kinds(34, KindInfo{ElemClass::Edge, true});
+    kinds[0] = KindInfo{ElemClass::Node, false};
     Graph g(kinds);
     const NodeId a = g.addNode(0, {0, 0}, 0), b = g.addNode(0, {1, 0}, 0), c = g.addNode(0, {2, 0}, 0);
     CHECK(g.edgeKindsAt(a) == 0);
@@ -30,7 +30,7 @@ TEST_CASE("a node's edge kinds gain a bit per linked kind and keep it", "[graph]
 }
 
 TEST_CASE("allNodes lists the live nodes by id", "[graph]") {
-    Graph g({KindInfo{false, false}, KindInfo{false, false}, KindInfo{true, false}});
+    Graph g({KindInfo{ElemClass::Node, false}, KindInfo{ElemClass::Node, false}, KindInfo{ElemClass::Edge, false}});
     for (int i = 0; i < 6; ++i) g.addNode(i % 2, {0, 0}, 0);
     g.addEdge(2, 0, 1, 0);
     g.removeNode(0);

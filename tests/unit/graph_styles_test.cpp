@@ -12,7 +12,7 @@
 using namespace g2d::rt;
 
 namespace {
-Graph twoKinds() { return Graph({KindInfo{false, false}, KindInfo{true, true}}); }
+Graph twoKinds() { return Graph({KindInfo{ElemClass::Node, false}, KindInfo{ElemClass::Edge, true}}); }
 std::string text(const Value& v) { return std::get<std::string>(v); }
 
 // An element's overrides as (name, value) pairs, in their order.
@@ -61,7 +61,7 @@ TEST_CASE("style overrides belong to their element and go with it", "[graph][sty
 }
 
 TEST_CASE("style properties are numbered in the program's order, new names after", "[graph][style]") {
-    Graph g({KindInfo{false, false}}, {"tag", "fill", "d"});
+    Graph g({KindInfo{ElemClass::Node, false}}, {"tag", "fill", "d"});
     CHECK(g.styleProp("tag") == 0);
     CHECK(g.styleProp("d") == 2);
     CHECK(g.styleProp("stroke") == 3);

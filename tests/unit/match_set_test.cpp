@@ -50,7 +50,7 @@ struct OldestModel {
 
 void exercise(std::uint64_t seed, int ageSpread) {
     Rng rng(seed);
-    Graph g({KindInfo{false, false}, KindInfo{true, true}});
+    Graph g({KindInfo{ElemClass::Node, false}, KindInfo{ElemClass::Edge, true}});
     std::vector<NodeId> nodes;
     for (int i = 0; i < 30; ++i)
         nodes.push_back(g.addNode(0, {0, 0}, static_cast<long long>(rng.below(static_cast<std::uint64_t>(ageSpread)))));

@@ -17,7 +17,7 @@ DrawItem node(std::uint32_t id, vec2 p, std::vector<StyleOverride> props) {
 
 DrawItem edge(std::uint32_t id, vec2 a, vec2 b, std::vector<StyleOverride> props) {
     DrawItem it = node(id, a, std::move(props));
-    it.isEdge = true;
+    it.cls = ElemClass::Edge;
     it.b = b;
     return it;
 }

@@ -38,7 +38,7 @@ public:
     rt::DerivationResult derive(std::optional<long long> steps = std::nullopt);
 
     const rt::Graph& graph() const { return run_->graph(); }
-    rt::Value attribute(bool isEdge, std::uint32_t id, const std::string& name) const;
+    rt::Value attribute(rt::ElemClass cls, std::uint32_t id, const std::string& name) const;
     std::string svg();
     std::string json();
 

@@ -47,7 +47,7 @@ public:
     virtual std::vector<DrawItem> drawItems() = 0;
     virtual const std::vector<std::string>& svgDefs() const = 0;
     virtual const JsonSchema& jsonSchema() const = 0;
-    virtual Value attribute(bool isEdge, std::uint32_t id, int attr) const = 0;
+    virtual Value attribute(ElemClass cls, std::uint32_t id, int attr) const = 0;
 
     // For a failure thrown by start() or the rules: where in the source, if
     // known, and the rule being applied ("" outside rules).

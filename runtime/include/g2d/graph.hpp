@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "g2d/elem_class.hpp"
 #include "g2d/grow_array.hpp"
 #include "g2d/prefetch.hpp"
 #include "g2d/style_store.hpp"
@@ -35,7 +36,7 @@ inline constexpr std::uint32_t kNoId = 0xffffffffu;
 inline constexpr std::size_t kMaxKinds = 32767;
 
 struct KindInfo {
-    bool isEdge = false;
+    ElemClass cls = ElemClass::Node;
     bool directed = false;
 };
 

@@ -20,7 +20,7 @@ struct JsonSchema {
 };
 
 // Reads attribute `attr` of a node or edge (back ends store them their own way).
-using AttributeReader = std::function<Value(bool isEdge, std::uint32_t id, int attr)>;
+using AttributeReader = std::function<Value(ElemClass cls, std::uint32_t id, int attr)>;
 
 // `graphAttrs` become the "graph" object (e.g. steps, seed). Without a reader,
 // attributes are read from the graph's own slots.

@@ -23,7 +23,7 @@
 namespace g2d::rt {
 
 struct DrawItem {
-    bool isEdge = false;
+    ElemClass cls = ElemClass::Node;
     std::uint32_t id = 0;
     vec2 a{0, 0}, b{0, 0};                 // node position, or edge endpoints
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
