@@ -301,9 +301,8 @@ private:
                 const ir::Expr* expr = facts.weightExprs[d];
                 if (!expr) continue;
                 const std::string w = gen_.gen(*expr, noElements(), out, in + "    ");
-                out += in + "    if (!(" + w + " > 0) || !std::isfinite(" + w + ")) throw PlacedError(" + str(places_.add(expr->span)) +
-                       ", \"a weight must be positive, but this is \" + formatNumber(" + w + "));\n";
-                out += in + "    info.weights[" + str(static_cast<long long>(d)) + "] = " + w + ";\n";
+                out += in + "    try {\n" + in + "        info.weights[" + str(static_cast<long long>(d)) + "] = checkedWeight(" + w + ");\n" + in +
+                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
             }
             out += in + "    infos_.push_back(std::move(info));\n" + in + "}\n";
         }

@@ -21,10 +21,11 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         for (std::size_t d = 0; d < facts.weightExprs.size(); ++d) {
             if (!facts.weightExprs[d]) continue;
             EvalFrame f = st.frame(nullptr);
-            const double w = std::get<double>(evaluate(*facts.weightExprs[d], f));
-            if (!(w > 0) || !std::isfinite(w))
-                throw EvalError(facts.weightExprs[d]->span, "a weight must be positive, but this is " + rt::formatNumber(w));
-            info.weights[d] = w;
+            try {
+                info.weights[d] = rt::checkedWeight(std::get<double>(evaluate(*facts.weightExprs[d], f)));
+            } catch (const rt::OpError& e) {
+                throw EvalError(facts.weightExprs[d]->span, e.what());
+            }
         }
         infos_.push_back(std::move(info));
         auto& rewrites = rewrites_.emplace_back();

@@ -1,5 +1,7 @@
 #include "parse/ast_builder.hpp"
 
+#include <stdexcept>
+
 #include <cstdlib>
 
 namespace g2d {
@@ -99,9 +101,11 @@ public:
                 if (auto* l = dynamic_cast<P::PriorityLimitContext*>(o)) {
                     if (d.limit) d.repeatedOptions.push_back(span(o));
                     d.limit = expr(l->expr());
-                } else {
+                } else if (dynamic_cast<P::PriorityParallelContext*>(o)) {
                     if (d.parallel) d.repeatedOptions.push_back(span(o));
                     d.parallel = true;
+                } else {
+                    throw std::logic_error("a priority option of the grammar the AST builder does not know: " + o->getText());
                 }
             }
             return Decl{std::move(d)};
@@ -229,8 +233,10 @@ public:
                 opt.pick = ident(k->ID());
             } else if (dynamic_cast<P::RuleOrderedContext*>(o)) {
                 opt.kind = RuleOption::Kind::Ordered;
-            } else {
+            } else if (dynamic_cast<P::RuleParallelContext*>(o)) {
                 opt.kind = RuleOption::Kind::Parallel;
+            } else {
+                throw std::logic_error("a rule option of the grammar the AST builder does not know: " + o->getText());
             }
             r.options.push_back(std::move(opt));
         }

@@ -209,9 +209,7 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
 
 bool usesRandom(const Expr& e, const ir::Program& prog) {
     return any(e, prog, [](const Expr& x) {
-        return x.op == ExprOp::Call && (x.builtin == Builtin::Random || x.builtin == Builtin::Uniform ||
-                                        x.builtin == Builtin::RandInt || x.builtin == Builtin::Choice ||
-                                        x.builtin == Builtin::Normal);
+        return x.op == ExprOp::Call && rt::builtinEntry(x.builtin).drawsRandom;
     });
 }
 

@@ -1,6 +1,5 @@
 #include "g2d/builtins.hpp"
 
-#include <array>
 #include <stdexcept>
 
 namespace g2d::rt {
@@ -10,59 +9,11 @@ namespace {
 using B = Builtin;
 using C = BuiltinCall;
 
-constexpr std::array<BuiltinEntry, static_cast<std::size_t>(B::Normal) + 1> kTable = {{
-    {B::Sin, "sin", C::Pure, true},
-    {B::Cos, "cos", C::Pure, true},
-    {B::Tan, "tan", C::Pure, true},
-    {B::Asin, "asin", C::Pure, true},
-    {B::Acos, "acos", C::Pure, true},
-    {B::Atan, "atan", C::Pure, true},
-    {B::Atan2, "atan2", C::Pure, true},
-    {B::Sqrt, "sqrt", C::Pure, true},
-    {B::Abs, "abs", C::Pure, true},
-    {B::Min, "min", C::Variadic, false},
-    {B::Max, "max", C::Variadic, false},
-    {B::Floor, "floor", C::Pure, true},
-    {B::Ceil, "ceil", C::Pure, true},
-    {B::Round, "round", C::Pure, true},
-    {B::Pow, "pow", C::Pure, true},
-    {B::Exp, "exp", C::Pure, true},
-    {B::Log, "log", C::Pure, true},
-    {B::Clamp, "clamp", C::Pure, false},
-    {B::Sign, "sign", C::Pure, false},
-    {B::Radians, "radians", C::Pure, true},
-    {B::Degrees, "degrees", C::Pure, true},
-    {B::Hypot, "hypot", C::Pure, true},
-    {B::MakeVec2, "makeVec2", C::Pure, false},
-    {B::Dot, "dot", C::Pure, true},
-    {B::Cross, "cross", C::Pure, true},
-    {B::Length, "length", C::Pure, true},
-    {B::Distance, "distance", C::Pure, true},
-    {B::Normalize, "normalize", C::Pure, false},
-    {B::PerpLeft, "perpLeft", C::Pure, false},
-    {B::PerpRight, "perpRight", C::Pure, false},
-    {B::Rotate, "rotate", C::Pure, true},
-    {B::RotateAround, "rotateAround", C::Pure, true},
-    {B::Angle, "angle", C::Pure, false},
-    {B::AngleBetween, "angleBetween", C::Pure, true},
-    {B::Lerp, "lerp", C::Pure, true},
-    {B::ToInt, "toInt", C::Pure, true},
-    {B::ToFloat, "toFloat", C::Pure, true},
-    {B::ToStr, "str", C::Special, false},
-    {B::Format, "format", C::Special, true},
-    {B::Random, "random", C::Random, false},
-    {B::Uniform, "uniform", C::Random, true},
-    {B::RandInt, "randint", C::Random, true},
-    {B::Choice, "choice", C::Special, false},
-    {B::Normal, "normal", C::Random, true},
-}};
-
-constexpr bool tableInOrder() {
-    for (std::size_t i = 0; i < kTable.size(); ++i)
-        if (static_cast<std::size_t>(kTable[i].id) != i) return false;
-    return true;
-}
-static_assert(tableInOrder(), "kTable must list the built-ins in the order of enum Builtin");
+constexpr BuiltinEntry kTable[] = {
+#define G2D_BUILTIN_ROW(id, fn, call, fails, draws) {B::id, #fn, C::call, fails, draws},
+    G2D_BUILTINS(G2D_BUILTIN_ROW)
+#undef G2D_BUILTIN_ROW
+};
 
 long long I(const Value& v) { return std::get<long long>(v); }
 double F(const Value& v) { return std::get<double>(v); }
@@ -86,7 +37,7 @@ Value convert(const Value& v, F&& to) {
 
 }  // namespace
 
-const BuiltinEntry& builtinEntry(Builtin id) { return kTable.at(static_cast<std::size_t>(id)); }
+const BuiltinEntry& builtinEntry(Builtin id) { return kTable[static_cast<std::size_t>(id)]; }
 
 namespace fn {
 long long randint(Rng& rng, long long lo, long long hi) {

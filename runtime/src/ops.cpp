@@ -31,6 +31,11 @@ double modFloat(double a, double b) {
     return finite(fmodFloor(a, b));
 }
 
+double checkedWeight(double w) {
+    if (!(w > 0) || !std::isfinite(w)) throw OpError("a weight must be positive, but this is " + formatNumber(w));
+    return w;
+}
+
 long long floatToInt(double x) {
     if (!std::isfinite(x) || x >= 9.2233720368547758e18 || x < -9.2233720368547758e18)
         throw OpError("cannot convert " + formatNumber(x) + " to int: out of range");

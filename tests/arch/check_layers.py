@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The stages depend on each other in one direction only (docs/architecture.md):
-every quoted #include of compiler/, runtime/ and the tests' helpers must name
-a stage this file allows for the including one. A new folder must be listed.
+every quoted #include of compiler/ must name a stage this file allows for
+the including one. A new folder must be listed.
 Also: the runtime's public headers (runtime/include, installed) include no
 internal ones, and the runtime includes nothing of the compiler.
 

@@ -65,6 +65,9 @@ def grammar(seed: int) -> str:
     w(f"limit {r.randint(20, 60)};")
     if r.random() < 0.5:
         w(f"priority 1 limit {r.randint(3, 10)};")
+    # Parallel rules rewrite every match at once: a few such steps only, or
+    # the graph doubles each step and the run ends at the element bound.
+    w("priority 3 limit 4;")
 
     for ri in range(r.randint(2, 5)):
         opts = [f"priority {r.randint(0, 2)}"]
@@ -72,6 +75,7 @@ def grammar(seed: int) -> str:
             opts.append("pick oldest")
         parallel = r.random() < 0.2
         if parallel:
+            opts[0] = "priority 3"
             opts.append("parallel")
         sketched = r.random() < 0.5
         ordered = sketched and r.random() < 0.3

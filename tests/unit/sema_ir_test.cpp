@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "sema/builtins.hpp"
 #include "test_helpers.hpp"
 
 using namespace g2d;
@@ -197,4 +198,27 @@ rule Guard { match { x: *; b: B; x -[E]-> b; not { y: C; x -[U]- y; } } produce 
     CHECK(rule("Count").daughters[0].deletedNodes.size() == 1);
     // A wildcard reads every node kind; a negative condition's kinds are read too.
     CHECK(rule("Guard").readKinds == kinds({"A", "B", "C", "E", "U"}));
+}
+
+TEST_CASE("the checker's random built-ins are the runtime's", "[sema][builtins]") {
+    // sema::BuiltinInfo::random keeps random draws out of constants and
+    // parameter defaults; the runtime's table (rt::BuiltinEntry::drawsRandom)
+    // says which built-ins draw. Every name resolves to built-ins of one kind.
+    const std::vector<std::pair<std::string, std::vector<ir::Type>>> calls = {
+        {"random", {}}, {"uniform", {ir::kFloatType, ir::kFloatType}}, {"randint", {ir::kIntType, ir::kIntType}},
+        {"choice", {ir::kIntType, ir::kIntType}}, {"normal", {ir::kFloatType, ir::kFloatType}},
+        {"sin", {ir::kFloatType}}, {"min", {ir::kIntType, ir::kIntType}}, {"str", {ir::kIntType}},
+        {"format", {ir::kStringType}}, {"int", {ir::kFloatType}}, {"lerp", {ir::kFloatType, ir::kFloatType, ir::kFloatType}}};
+    ir::Program prog;
+    for (const auto& [name, args] : calls) {
+        INFO(name);
+        const auto* info = sema::findBuiltin(name);
+        REQUIRE(info);
+        auto res = sema::resolveBuiltin(name, args, prog);
+        REQUIRE(std::holds_alternative<sema::BuiltinResolution>(res));
+        CHECK(info->random == rt::builtinEntry(std::get<sema::BuiltinResolution>(res).builtin).drawsRandom);
+    }
+    std::size_t random = 0;
+    for (const auto& b : sema::builtinFunctions()) random += b.random;
+    CHECK(random == 5);
 }

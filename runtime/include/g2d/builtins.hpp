@@ -1,7 +1,7 @@
 #pragma once
 // The language's built-in functions, each defined once. The interpreter and
 // the constant folder call them through callBuiltin(); generated code calls
-// them by the names in builtinTable(). So a fold, a run and a compiled run
+// them by the names builtinEntry() gives. So a fold, a run and a compiled run
 // give the same bits and fail with the same words (rt::OpError).
 #include <algorithm>
 #include <cmath>
@@ -15,18 +15,66 @@
 
 namespace g2d::rt {
 
+// Every built-in once: its id, its function in namespace fn (below), how it
+// is called (BuiltinCall), whether it can fail and whether it draws from the
+// run's generator. The enum and the table
+// (builtinEntry) are both made from this list, so they cannot disagree.
+#define G2D_BUILTINS(X)                               \
+    /* math */                                        \
+    X(Sin, sin, Pure, true, false)                    \
+    X(Cos, cos, Pure, true, false)                    \
+    X(Tan, tan, Pure, true, false)                    \
+    X(Asin, asin, Pure, true, false)                  \
+    X(Acos, acos, Pure, true, false)                  \
+    X(Atan, atan, Pure, true, false)                  \
+    X(Atan2, atan2, Pure, true, false)                \
+    X(Sqrt, sqrt, Pure, true, false)                  \
+    X(Abs, abs, Pure, true, false)                    \
+    X(Min, min, Variadic, false, false)               \
+    X(Max, max, Variadic, false, false)               \
+    X(Floor, floor, Pure, true, false)                \
+    X(Ceil, ceil, Pure, true, false)                  \
+    X(Round, round, Pure, true, false)                \
+    X(Pow, pow, Pure, true, false)                    \
+    X(Exp, exp, Pure, true, false)                    \
+    X(Log, log, Pure, true, false)                    \
+    X(Clamp, clamp, Pure, false, false)               \
+    X(Sign, sign, Pure, false, false)                 \
+    X(Radians, radians, Pure, true, false)            \
+    X(Degrees, degrees, Pure, true, false)            \
+    X(Hypot, hypot, Pure, true, false)                \
+    /* vectors */                                     \
+    X(MakeVec2, makeVec2, Pure, false, false)         \
+    X(Dot, dot, Pure, true, false)                    \
+    X(Cross, cross, Pure, true, false)                \
+    X(Length, length, Pure, true, false)              \
+    X(Distance, distance, Pure, true, false)          \
+    X(Normalize, normalize, Pure, false, false)       \
+    X(PerpLeft, perpLeft, Pure, false, false)         \
+    X(PerpRight, perpRight, Pure, false, false)       \
+    X(Rotate, rotate, Pure, true, false)              \
+    X(RotateAround, rotateAround, Pure, true, false)  \
+    X(Angle, angle, Pure, false, false)               \
+    X(AngleBetween, angleBetween, Pure, true, false)  \
+    X(Lerp, lerp, Pure, true, false)                  \
+    /* conversions and strings */                     \
+    X(ToInt, toInt, Pure, true, false)                \
+    X(ToFloat, toFloat, Pure, true, false)            \
+    X(ToStr, str, Special, false, false)              \
+    X(Format, format, Special, true, false)           \
+    /* randomness (drawn from the run's generator) */ \
+    X(Random, random, Random, false, true)            \
+    X(Uniform, uniform, Random, true, true)           \
+    X(RandInt, randint, Random, true, true)           \
+    X(Choice, choice, Special, false, true)           \
+    X(Normal, normal, Random, true, true)
+
 enum class Builtin {
-    // math
-    Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Min, Max, Floor, Ceil, Round, Pow, Exp, Log,
-    Clamp, Sign, Radians, Degrees, Hypot,
-    // vectors
-    MakeVec2, Dot, Cross, Length, Distance, Normalize, PerpLeft, PerpRight, Rotate, RotateAround,
-    Angle, AngleBetween, Lerp,
-    // conversions and strings
-    ToInt, ToFloat, ToStr, Format,
-    // randomness (drawn from the run's generator)
-    Random, Uniform, RandInt, Choice, Normal,
+#define G2D_BUILTIN_ID(id, fn, call, fails, draws) id,
+    G2D_BUILTINS(G2D_BUILTIN_ID)
+#undef G2D_BUILTIN_ID
 };
+
 
 // How each built-in is reached.
 enum class BuiltinCall {
@@ -36,11 +84,13 @@ enum class BuiltinCall {
     Special,   // str, format, choice: the back ends build their arguments themselves
 };
 
+
 struct BuiltinEntry {
     Builtin id;
     const char* cppName;   // in namespace g2d::rt::fn
     BuiltinCall call;
     bool mayFail;          // can throw OpError (generated code records the call's place first)
+    bool drawsRandom;      // reads the run's generator (never folded; a constant using it is drawn per run)
 };
 
 // Indexed by Builtin.

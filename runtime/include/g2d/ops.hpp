@@ -63,6 +63,9 @@ inline vec2 divVec(vec2 v, double s) {
     return finite(v / s);
 }
 
+// A daughter's weight, when a parameter gives it: positive and finite.
+double checkedWeight(double w);
+
 long long floatToInt(double x);                 // truncation; throws when out of range
 long long floorToInt(double x);
 long long ceilToInt(double x);
