@@ -3,6 +3,7 @@
 #include "g2d/deadline.hpp"
 
 #include <charconv>
+#include <stdexcept>
 #include <climits>
 #include <cmath>
 
@@ -34,8 +35,6 @@ std::string display(const Value& v, const ir::Program& prog) {
 
 namespace {
 
-long long I(const Value& v) { return std::get<long long>(v); }
-double F(const Value& v) { return std::get<double>(v); }
 bool B(const Value& v) { return std::get<bool>(v); }
 vec2 V(const Value& v) { return std::get<vec2>(v); }
 const std::string& S(const Value& v) { return std::get<std::string>(v); }
@@ -68,50 +67,6 @@ Value call(const ir::Expr& e, EvalFrame& f) {
     }
 }
 
-Value arith(const ir::Expr& e, const Value& l, const Value& r) {
-    const auto lk = e.args[0].type.kind, rk = e.args[1].type.kind;
-    using K = ir::TypeKind;
-    if (lk == K::Int && rk == K::Int) {
-        const long long a = I(l), b = I(r);
-        switch (e.op) {
-        case ExprOp::Add: return rt::addInt(a, b);
-        case ExprOp::Sub: return rt::subInt(a, b);
-        case ExprOp::Mul: return rt::mulInt(a, b);
-        case ExprOp::Mod: return rt::modInt(a, b);
-        case ExprOp::Lt: return a < b;
-        case ExprOp::Le: return a <= b;
-        case ExprOp::Gt: return a > b;
-        case ExprOp::Ge: return a >= b;
-        default: break;
-        }
-    } else if (lk == K::Float && rk == K::Float) {
-        const double a = F(l), b = F(r);
-        switch (e.op) {
-        case ExprOp::Add: return rt::finite(a + b);
-        case ExprOp::Sub: return rt::finite(a - b);
-        case ExprOp::Mul: return rt::finite(a * b);
-        case ExprOp::Div: return rt::divFloat(a, b);
-        case ExprOp::Mod: return rt::modFloat(a, b);
-        case ExprOp::Lt: return a < b;
-        case ExprOp::Le: return a <= b;
-        case ExprOp::Gt: return a > b;
-        case ExprOp::Ge: return a >= b;
-        default: break;
-        }
-    } else if (lk == K::Vec2 && rk == K::Vec2) {
-        if (e.op == ExprOp::Add) return rt::finite(V(l) + V(r));
-        if (e.op == ExprOp::Sub) return rt::finite(V(l) - V(r));
-    } else if (lk == K::Vec2 && rk == K::Float) {
-        if (e.op == ExprOp::Mul) return rt::finite(V(l) * F(r));
-        if (e.op == ExprOp::Div) return rt::divVec(V(l), F(r));
-    } else if (lk == K::Float && rk == K::Vec2 && e.op == ExprOp::Mul) {
-        return rt::finite(F(l) * V(r));
-    }
-    if (e.op == ExprOp::Add) return S(l) + S(r);
-    if (e.op == ExprOp::Eq) return l == r;
-    if (e.op == ExprOp::Ne) return l != r;
-    throw rt::OpError("unsupported operation");
-}
 
 Value fact(const ir::Expr& e, EvalFrame& f, ir::ElemClass cls, std::uint32_t id) {
     const rt::Graph& g = *f.graph;
@@ -175,7 +130,9 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     default: {
         Value l = evaluate(e.args[0], f);
         Value r = evaluate(e.args[1], f);
-        return arith(e, l, r);
+        const auto op = ir::binaryOperator(e.op);
+        if (!op) throw std::logic_error("the evaluator has no case for an expression operation");
+        return rt::binaryOp(*op, l, r);
     }
     }
 }

@@ -17,4 +17,21 @@ std::string typeName(const Type& t, const Program& p) {
     return "?";
 }
 
+std::optional<rt::BinaryOp> binaryOperator(ExprOp op) {
+    switch (op) {
+    case ExprOp::Add: return rt::BinaryOp::Add;
+    case ExprOp::Sub: return rt::BinaryOp::Sub;
+    case ExprOp::Mul: return rt::BinaryOp::Mul;
+    case ExprOp::Div: return rt::BinaryOp::Div;
+    case ExprOp::Mod: return rt::BinaryOp::Mod;
+    case ExprOp::Lt: return rt::BinaryOp::Lt;
+    case ExprOp::Le: return rt::BinaryOp::Le;
+    case ExprOp::Gt: return rt::BinaryOp::Gt;
+    case ExprOp::Ge: return rt::BinaryOp::Ge;
+    case ExprOp::Eq: return rt::BinaryOp::Eq;
+    case ExprOp::Ne: return rt::BinaryOp::Ne;
+    default: return std::nullopt;
+    }
+}
+
 }  // namespace g2d::ir

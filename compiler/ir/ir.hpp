@@ -15,6 +15,7 @@
 #include "diag/source.hpp"
 #include "g2d/builtins.hpp"
 #include "g2d/elem_class.hpp"
+#include "g2d/operators.hpp"
 
 namespace g2d::ir {
 
@@ -87,6 +88,9 @@ enum class ExprOp {
     Call,        // builtin, args
     CallFn,      // index into Program::functions, args
 };
+
+// The runtime's operator for Add … Ne (rt::binaryOp); nullopt for the others.
+std::optional<rt::BinaryOp> binaryOperator(ExprOp op);
 
 struct Expr {
     ExprOp op = ExprOp::Literal;

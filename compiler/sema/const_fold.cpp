@@ -66,54 +66,14 @@ std::optional<Value> foldCall(const Expr& e, const std::vector<Value>& a, std::s
     }
 }
 
-// The same checked operations as at run time; a failure is a compile-time error.
-std::optional<Value> foldArith(ExprOp op, const Expr& e, const Value& l, const Value& r, std::string* error) {
-    const TypeKind lk = e.args[0].type.kind, rk = e.args[1].type.kind;
+// The runtime's own operators; a failure is a compile-time error.
+std::optional<Value> foldArith(ExprOp op, const Value& l, const Value& r, std::string* error) {
     try {
-        if (lk == TypeKind::Int && rk == TypeKind::Int) {
-            const long long a = std::get<long long>(l), b = std::get<long long>(r);
-            switch (op) {
-            case ExprOp::Add: return Value{rt::addInt(a, b)};
-            case ExprOp::Sub: return Value{rt::subInt(a, b)};
-            case ExprOp::Mul: return Value{rt::mulInt(a, b)};
-            case ExprOp::Mod: return Value{rt::modInt(a, b)};
-            case ExprOp::Lt: return Value{a < b};
-            case ExprOp::Le: return Value{a <= b};
-            case ExprOp::Gt: return Value{a > b};
-            case ExprOp::Ge: return Value{a >= b};
-            default: break;
-            }
-        } else if (lk == TypeKind::Float && rk == TypeKind::Float) {
-            const double a = std::get<double>(l), b = std::get<double>(r);
-            switch (op) {
-            case ExprOp::Add: return Value{rt::finite(a + b)};
-            case ExprOp::Sub: return Value{rt::finite(a - b)};
-            case ExprOp::Mul: return Value{rt::finite(a * b)};
-            case ExprOp::Div: return Value{rt::divFloat(a, b)};
-            case ExprOp::Mod: return Value{rt::modFloat(a, b)};
-            case ExprOp::Lt: return Value{a < b};
-            case ExprOp::Le: return Value{a <= b};
-            case ExprOp::Gt: return Value{a > b};
-            case ExprOp::Ge: return Value{a >= b};
-            default: break;
-            }
-        } else if (lk == TypeKind::Vec2 && rk == TypeKind::Vec2) {
-            if (op == ExprOp::Add) return fromVec(rt::finite(asVec(l) + asVec(r)));
-            if (op == ExprOp::Sub) return fromVec(rt::finite(asVec(l) - asVec(r)));
-        } else if (lk == TypeKind::Vec2 && rk == TypeKind::Float) {
-            if (op == ExprOp::Mul) return fromVec(rt::finite(asVec(l) * std::get<double>(r)));
-            if (op == ExprOp::Div) return fromVec(rt::divVec(asVec(l), std::get<double>(r)));
-        } else if (lk == TypeKind::Float && rk == TypeKind::Vec2 && op == ExprOp::Mul) {
-            return fromVec(rt::finite(std::get<double>(l) * asVec(r)));
-        }
+        return fromRuntime(rt::binaryOp(*ir::binaryOperator(op), toRuntime(l), toRuntime(r)));
     } catch (const rt::OpError& err) {
         if (error && error->empty()) *error = err.what();
         return std::nullopt;
     }
-    if (op == ExprOp::Add && lk == TypeKind::String) return Value{std::get<std::string>(l) + std::get<std::string>(r)};
-    if (op == ExprOp::Eq) return Value{l == r};
-    if (op == ExprOp::Ne) return Value{l != r};
-    return std::nullopt;
 }
 
 // Each function body and constant is looked into once (a chain of functions
@@ -201,7 +161,7 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
         auto l = fold(e.args[0], prog, error);
         auto r = fold(e.args[1], prog, error);
         if (!l || !r) return std::nullopt;
-        return foldArith(e.op, e, *l, *r, error);
+        return foldArith(e.op, *l, *r, error);
     }
     default: return std::nullopt;
     }
