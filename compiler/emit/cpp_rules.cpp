@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
+#include "lower/match_program.hpp"
 #include "lower/rewrite_program.hpp"
 
 namespace g2d::emit {
 
-using ir::PlanStep;
 
 namespace {
 
@@ -17,7 +17,7 @@ public:
     RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places,
                 ConstantValues& constants)
         : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen), places_(places),
-          constants_(constants) {}
+          constants_(constants), match_(lower::lowerMatch(prog, r)) {}
 
     std::string emit() {
         std::string out;
@@ -49,24 +49,21 @@ private:
         return c;
     }
 
-    // The `ordered` test for node `k` against the nodes bound before it.
-    std::string orderedTest(int k, const std::vector<int>& bound) const {
-        if (!r_.ordered || k >= static_cast<int>(r_.nodes.size())) return "";
+    // The lowering's `ordered` comparisons for node `k`, as a C++ test ("" for none).
+    static std::string orderedTest(int k, const std::vector<lower::OrderCheck>& checks) {
         std::string test;
-        const auto& si = *r_.nodes[k].sketch;
-        for (int j : bound) {
-            if (j >= static_cast<int>(r_.nodes.size())) continue;
-            const auto& sj = *r_.nodes[j].sketch;
-            auto add = [&](bool cond, const std::string& t) {
-                if (cond) test += (test.empty() ? "" : " && ") + t;
-            };
-            const std::string hi = "g.pos(n[" + str(k) + "])", hj = "g.pos(n[" + str(j) + "])";
-            add(si.x < sj.x, "!(" + hi + ".x > " + hj + ".x)");
-            add(si.x > sj.x, "!(" + hi + ".x < " + hj + ".x)");
-            add(si.y < sj.y, "!(" + hi + ".y > " + hj + ".y)");
-            add(si.y > sj.y, "!(" + hi + ".y < " + hj + ".y)");
+        for (const auto& c : checks) {
+            const char* axis = c.axis == 0 ? ".x" : ".y";
+            const std::string hi = "g.pos(n[" + str(k) + "])" + axis, hj = "g.pos(n[" + str(c.other) + "])" + axis;
+            test += (test.empty() ? "" : " && ") + std::string("!(") + hi + (c.before ? " > " : " < ") + hj + ")";
         }
         return test;
+    }
+    // The test that host `h` has had every edge kind of `mask` ("" for none).
+    static std::string hasEdgeKinds(std::uint32_t mask, const std::string& h) {
+        if (mask == 0) return "";
+        const std::string need = str(static_cast<int>(mask)) + "u";
+        return "(g.edgeKindsAt(" + h + ") & " + need + ") == " + need;
     }
 
     // Nested blocks for plan[i..]; `onComplete` is the innermost code.
@@ -85,108 +82,87 @@ private:
         return in + "if (" + newEdgeGate_ + ") continue;\n";
     }
 
-    void steps(const std::vector<PlanStep>& plan, std::size_t i, const ir::NegativeCondition* nac,
-               std::vector<int> boundNodes, std::vector<int> boundEdges, const std::string& onComplete,
+    // Nested blocks for ops[i..]; `onComplete` is the innermost code. `nac`
+    // names the negative condition the list searches (for its slots' kinds
+    // in expressions), null for the pattern.
+    void steps(const lower::MatchList& ops, std::size_t i, const ir::NegativeCondition* nac, const std::string& onComplete,
                std::string& out, const std::string& in) {
-        if (i == plan.size()) {
+        if (i == ops.size()) {
             out += onComplete;
             return;
         }
-        const PlanStep& s = plan[i];
         const std::string next = in + "    ";
-        auto notUsedNode = [&](const std::string& h) {
+        const std::string body = next + "    ";
+        auto notUsed = [](const std::string& h, const std::vector<int>& slots, const char* array) {
             std::string t;
-            for (int b : boundNodes) t += " && " + h + " != n[" + str(b) + "]";
+            for (int b : slots) t += " && " + h + " != " + array + "[" + str(b) + "]";
             return t;
         };
-        auto notUsedEdge = [&](const std::string& h) {
-            std::string t;
-            for (int b : boundEdges) t += " && " + h + " != e[" + str(b) + "]";
-            return t;
-        };
-        switch (s.op) {
-        case PlanStep::Op::Check: {
-            const auto& cond = nac ? nac->conditions[s.condition] : r_.conditions[s.condition];
-            out += in + "{\n";
-            const std::string v = gen_.gen(cond.expr, matchContext(nac), out, next);
-            out += next + "if (" + v + ") {\n";
-            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, next + "    ");
-            out += next + "}\n" + in + "}\n";
-            return;
-        }
-        case PlanStep::Op::ScanNodes: {
-            const int kind = nodeKind(s.node, nac);
-            const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
-            const std::string body = next + "    ";
-            if (kind >= 0) {
-                out += in + "{\n" + next + "const auto " + l + " = g.nodesOfKind(" + str(kind) + ");\n";
-                out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
-                out += body + "n[" + str(s.node) + "] = " + l + "[" + c + "];\n";
-            } else {   // a wildcard: every live node, by id
-                out += in + "{\n" + next + "for (const NodeId " + c + " : g.allNodes()) {\n";
-                out += body + "n[" + str(s.node) + "] = " + c + ";\n";
-            }
-            std::string test = "true" + notUsedNode("n[" + str(s.node) + "]");
-            if (!nac)
-                if (const std::string kinds = hasEdgeKinds(s.node, "n[" + str(s.node) + "]"); !kinds.empty()) test += " && " + kinds;
-            const std::string ord = orderedTest(s.node, boundNodes);
-            if (!ord.empty()) test += " && " + ord;
-            boundNodes.push_back(s.node);
-            out += body + "if (" + test + ") {\n";
-            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
-            out += body + "}\n" + next + "}\n" + in + "}\n";
-            return;
-        }
-        case PlanStep::Op::ExtendEdge: {
-            const auto& pe = edgeOf(s.edge, nac);
-            const bool directed = prog_.kinds[pe.kind].directed;
-            const int farKind = nodeKind(s.node, nac);
-            const std::string from = "n[" + str(s.from) + "]";
-            const std::string ed = "e[" + str(s.edge) + "]", nd = "n[" + str(s.node) + "]";
-            const std::string body = next + "    ";
-            out += in + "{\n" + edgeLoop(static_cast<int>(i), from, ed, directed, s.fromIsSource, next);
-            const std::string used = notUsedEdge(ed);
-            out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
-                   ") continue;\n";
-            out += gate(nac, boundEdges, body);
-            if (directed)
-                out += body + nd + " = " + (s.fromIsSource ? "g.target(" : "g.source(") + ed + ");\n";
-            else
-                out += body + nd + " = g.source(" + ed + ") == " + from + " ? g.target(" + ed + ") : g.source(" + ed + ");\n";
-            std::string test = farKind >= 0 ? "g.nodeKind(" + nd + ") == " + str(farKind) : "true";
-            test += notUsedNode(nd);
-            const std::string ord = orderedTest(s.node, boundNodes);
-            if (!ord.empty()) test += " && " + ord;
-            boundNodes.push_back(s.node);
-            boundEdges.push_back(s.edge);
-            out += body + "if (" + test + ") {\n";
-            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
-            out += body + "}\n" + next + "}\n" + in + "}\n";
-            return;
-        }
-        case PlanStep::Op::ConnectEdge: {
-            const auto& pe = edgeOf(s.edge, nac);
-            const bool directed = prog_.kinds[pe.kind].directed;
-            const std::string hs = "n[" + str(s.from) + "]", hd = "n[" + str(s.node) + "]";
-            const std::string ed = "e[" + str(s.edge) + "]";
-            const std::string body = next + "    ";
-            out += in + "{\n" + edgeLoop(static_cast<int>(i), hs, ed, directed, true, next);
-            std::string used = notUsedEdge(ed);
-            out += body + "if (g.edgeKind(" + ed + ") != " + str(pe.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
-                   ") continue;\n";
-            const std::string a = "g.source(" + ed + ")", b = "g.target(" + ed + ")";
-            const std::string fits = directed ? "(" + b + " == " + hd + ")"
-                                              : "((" + a + " == " + hs + " && " + b + " == " + hd + ") || (" + a +
-                                                    " == " + hd + " && " + b + " == " + hs + "))";
-            out += body + "if (!" + fits + ") continue;\n";
-            out += gate(nac, boundEdges, body);
-            boundEdges.push_back(s.edge);
-            out += body + "{\n";
-            steps(plan, i + 1, nac, boundNodes, boundEdges, onComplete, out, body + "    ");
-            out += body + "}\n" + next + "}\n" + in + "}\n";
-            return;
-        }
-        }
+        auto gate = [&](bool here) { return here && !newEdgeGate_.empty() ? body + "if (" + newEdgeGate_ + ") continue;\n" : std::string(); };
+        std::visit(lower::Overloaded{
+                       [&](const lower::Filter& o) {
+                           out += in + "{\n";
+                           const std::string v = gen_.gen(*o.condition, matchContext(nac), out, next);
+                           out += next + "if (" + v + ") {\n";
+                           steps(ops, i + 1, nac, onComplete, out, next + "    ");
+                           out += next + "}\n" + in + "}\n";
+                       },
+                       [&](const lower::ScanNodes& o) {
+                           const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
+                           const std::string nd = "n[" + str(o.node) + "]";
+                           if (o.kind >= 0) {
+                               out += in + "{\n" + next + "const auto " + l + " = g.nodesOfKind(" + str(o.kind) + ");\n";
+                               out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
+                               out += body + nd + " = " + l + "[" + c + "];\n";
+                           } else {   // a wildcard: every live node, by id
+                               out += in + "{\n" + next + "for (const NodeId " + c + " : g.allNodes()) {\n";
+                               out += body + nd + " = " + c + ";\n";
+                           }
+                           std::string test = "true" + notUsed(nd, o.distinctNodes, "n");
+                           if (const std::string kinds = hasEdgeKinds(o.edgeKinds, nd); !kinds.empty()) test += " && " + kinds;
+                           if (const std::string ord = orderedTest(o.node, o.ordered); !ord.empty()) test += " && " + ord;
+                           out += body + "if (" + test + ") {\n";
+                           steps(ops, i + 1, nac, onComplete, out, body + "    ");
+                           out += body + "}\n" + next + "}\n" + in + "}\n";
+                       },
+                       [&](const lower::ExtendEdge& o) {
+                           const std::string from = "n[" + str(o.from) + "]";
+                           const std::string ed = "e[" + str(o.edge) + "]", nd = "n[" + str(o.node) + "]";
+                           out += in + "{\n" + edgeLoop(static_cast<int>(i), from, ed, o.directed, o.fromIsSource, next);
+                           const std::string used = notUsed(ed, o.distinctEdges, "e");
+                           out += body + "if (g.edgeKind(" + ed + ") != " + str(o.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
+                                  ") continue;\n";
+                           out += gate(o.newEdgeGate);
+                           if (o.directed)
+                               out += body + nd + " = " + (o.fromIsSource ? "g.target(" : "g.source(") + ed + ");\n";
+                           else
+                               out += body + nd + " = g.source(" + ed + ") == " + from + " ? g.target(" + ed + ") : g.source(" + ed + ");\n";
+                           std::string test = o.nodeKind >= 0 ? "g.nodeKind(" + nd + ") == " + str(o.nodeKind) : "true";
+                           test += notUsed(nd, o.distinctNodes, "n");
+                           if (const std::string ord = orderedTest(o.node, o.ordered); !ord.empty()) test += " && " + ord;
+                           out += body + "if (" + test + ") {\n";
+                           steps(ops, i + 1, nac, onComplete, out, body + "    ");
+                           out += body + "}\n" + next + "}\n" + in + "}\n";
+                       },
+                       [&](const lower::ConnectEdge& o) {
+                           const std::string hs = "n[" + str(o.from) + "]", hd = "n[" + str(o.to) + "]";
+                           const std::string ed = "e[" + str(o.edge) + "]";
+                           out += in + "{\n" + edgeLoop(static_cast<int>(i), hs, ed, o.directed, true, next);
+                           const std::string used = notUsed(ed, o.distinctEdges, "e");
+                           out += body + "if (g.edgeKind(" + ed + ") != " + str(o.kind) + (used.empty() ? "" : " || !(true" + used + ")") +
+                                  ") continue;\n";
+                           const std::string a = "g.source(" + ed + ")", b = "g.target(" + ed + ")";
+                           const std::string fits = o.directed ? "(" + b + " == " + hd + ")"
+                                                               : "((" + a + " == " + hs + " && " + b + " == " + hd + ") || (" + a +
+                                                                     " == " + hd + " && " + b + " == " + hs + "))";
+                           out += body + "if (!" + fits + ") continue;\n";
+                           out += gate(o.newEdgeGate);
+                           out += body + "{\n";
+                           steps(ops, i + 1, nac, onComplete, out, body + "    ");
+                           out += body + "}\n" + next + "}\n" + in + "}\n";
+                       },
+                   },
+                   ops[i]);
     }
 
     // The loop header over the edges at `from` that may bind `ed`: a directed
@@ -207,15 +183,7 @@ private:
                ") == g.target(" + x + ")) continue;\n" + in + "    " + ed + " = " + x + ";\n";
     }
 
-    std::string arrays() const {
-        std::size_t maxNodes = r_.nodes.size(), maxEdges = r_.edges.size();
-        for (const auto& n : r_.nacs) {
-            maxNodes = std::max(maxNodes, r_.nodes.size() + n.nodes.size());
-            maxEdges = std::max(maxEdges, r_.edges.size() + n.edges.size());
-        }
-        return str(static_cast<int>(std::max<std::size_t>(maxNodes, 1))) + "], e[" +
-               str(static_cast<int>(std::max<std::size_t>(maxEdges, 1)));
-    }
+    std::string arrays() const { return str(match_.nodeSlots) + "], e[" + str(match_.edgeSlots); }
 
     // The full matcher (anchor -1), or the one with pattern node `anchor` bound to `host`.
     std::string matcher(int anchor) {
@@ -226,18 +194,19 @@ private:
         out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
         if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
         if (anchor >= 0)
-            if (const std::string kinds = hasEdgeKinds(anchor, "host"); !kinds.empty()) out += "        if (!(" + kinds + ")) return;\n";
+            if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(anchor)], "host"); !kinds.empty())
+                out += "        if (!(" + kinds + ")) return;\n";
         std::string complete = "";
         std::string nacTest = "true";
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
         const std::string push = "out.add(n, e);";
         std::string body;
         if (anchor < 0) {
-            steps(r_.plan, 0, nullptr, {}, {}, "@@COMPLETE@@", body, "        ");
+            steps(match_.full, 0, nullptr, "@@COMPLETE@@", body, "        ");
         } else {
             out += "        (void)newFrom;\n";
             newEdgeGate_ = "newFrom != kNoId && !(" + bindsNewEdge("newFrom") + ")";
-            steps(r_.anchoredPlans[anchor], 0, nullptr, {anchor}, {}, "@@COMPLETE@@", body, "        ");
+            steps(match_.anchored[static_cast<std::size_t>(anchor)], 0, nullptr, "@@COMPLETE@@", body, "        ");
             newEdgeGate_.clear();
         }
         // The innermost code, indented where it lands.
@@ -247,21 +216,6 @@ private:
         (void)indent;
         body.replace(at, 12, "if (" + nacTest + ") " + push + "\n");
         return out + body + "    }\n\n";
-    }
-
-    // The edge kinds a host of pattern node `p` must have had
-    // (ir::Rule::neededEdgeKinds) as a C++ expression; "" for none.
-    std::string neededEdgeKinds(int p) const {
-        if (static_cast<std::size_t>(p) >= r_.neededEdgeKinds.size()) return "";
-        std::string need;
-        for (int k : r_.neededEdgeKinds[static_cast<std::size_t>(p)])
-            need += (need.empty() ? "" : " | ") + std::string("Graph::edgeKindBit(") + str(k) + ")";
-        return need.empty() ? "" : "(" + need + ")";
-    }
-    // The test that host `h` has every edge kind pattern node `p` needs ("" for none).
-    std::string hasEdgeKinds(int p, const std::string& h) const {
-        const std::string need = neededEdgeKinds(p);
-        return need.empty() ? "" : "(g.edgeKindsAt(" + h + ") & " + need + ") == " + need;
     }
 
     // As MatchSet reads RuleInfo::readsIncidence: any other size means every
@@ -295,7 +249,8 @@ private:
                                : lists != 0 ? "(full || (area.edgeChanges(h) & " + str(lists) + ") != 0)"
                                             : "full";
             if (r_.nodes[p].kind >= 0) cond += " && hk == " + str(r_.nodes[p].kind);
-            if (const std::string kinds = hasEdgeKinds(p, "h"); !kinds.empty()) cond += " && " + kinds;
+            if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(p)], "h"); !kinds.empty())
+                cond += " && " + kinds;
             // At a node the step created, an earlier pattern node adds every match (ir::Rule::newHostAddsNothing).
             if (static_cast<std::size_t>(p) < r_.newHostAddsNothing.size() && r_.newHostAddsNothing[static_cast<std::size_t>(p)])
                 cond += " && h < area.newNodesFrom";
@@ -316,7 +271,7 @@ private:
             // soon as the last edge is bound.
             if (reads(p) == ir::IncidenceRead::PatternEdges) newEdgeGate_ = "!full && !(" + fresh + ")";
             std::string body;
-            steps(r_.anchoredPlans[p], 0, nullptr, {p}, {}, "@@COMPLETE@@", body, "                ");
+            steps(match_.anchored[static_cast<std::size_t>(p)], 0, nullptr, "@@COMPLETE@@", body, "                ");
             newEdgeGate_.clear();
             body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, g);\n");
             out += body + "            }\n";
@@ -327,11 +282,8 @@ private:
     std::string nac(int k) {
         const auto& n = r_.nacs[k];
         std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e) {\n";
-        std::vector<int> outerNodes, outerEdges;
-        for (int i = 0; i < n.outerNodes; ++i) outerNodes.push_back(i);
-        for (int i = 0; i < n.outerEdges; ++i) outerEdges.push_back(i);
         std::string body;
-        steps(n.plan, 0, &n, outerNodes, outerEdges, "@@COMPLETE@@", body, "        ");
+        steps(match_.negatives[static_cast<std::size_t>(k)], 0, &n, "@@COMPLETE@@", body, "        ");
         body.replace(body.find("@@COMPLETE@@"), 12, "return true;\n");
         return out + body + "        return false;\n    }\n\n";
     }
@@ -503,6 +455,7 @@ private:
     ExprGen& gen_;
     Places& places_;
     ConstantValues& constants_;
+    lower::MatchProgram match_;
 };
 
 }  // namespace

@@ -8,7 +8,6 @@
 
 namespace g2d::interp {
 
-using ir::PlanStep;
 using rt::EdgeId;
 using rt::kNoId;
 using rt::NodeId;
@@ -30,175 +29,156 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         infos_.push_back(std::move(info));
         auto& rewrites = rewrites_.emplace_back();
         for (std::size_t d = 0; d < r.daughters.size(); ++d) rewrites.push_back(lower::lowerRewrite(*st.prog, r, d));
-        std::size_t nacNodes = 0, nacEdges = 0;
-        for (const auto& n : r.nacs) {
-            nacNodes = std::max(nacNodes, n.nodes.size());
-            nacEdges = std::max(nacEdges, n.edges.size());
-        }
-        maxNodes = std::max(maxNodes, r.nodes.size() + nacNodes);
-        maxEdges = std::max(maxEdges, r.edges.size() + nacEdges);
-        auto& need = neededEdgeKinds_.emplace_back(r.nodes.size(), 0);
-        for (std::size_t i = 0; i < r.neededEdgeKinds.size() && i < need.size(); ++i)
-            for (int k : r.neededEdgeKinds[i]) need[i] |= rt::Graph::edgeKindBit(k);
+        const lower::MatchProgram& m = matches_.emplace_back(lower::lowerMatch(*st.prog, r));
+        maxNodes = std::max(maxNodes, static_cast<std::size_t>(m.nodeSlots));
+        maxEdges = std::max(maxEdges, static_cast<std::size_t>(m.edgeSlots));
     }
     boundNodes_.assign(maxNodes, kNoId);
     boundEdges_.assign(maxEdges, kNoId);
 }
 
-// ---- matching ------------------------------------------------------------------
+// ---- matching: the lowered match lists, operation by operation -------------------
 
-bool InterpretedRules::orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const {
-    if (!r.ordered || node >= static_cast<int>(r.nodes.size())) return true;
-    const auto& si = *r.nodes[node].sketch;
+bool InterpretedRules::orderedOk(const rt::Graph& g, int node, const std::vector<lower::OrderCheck>& checks) const {
+    if (checks.empty()) return true;
     const rt::vec2 hi = g.pos(boundNodes_[node]);
-    for (std::size_t j = 0; j < r.nodes.size(); ++j) {
-        if (static_cast<int>(j) == node || boundNodes_[j] == kNoId) continue;
-        const auto& sj = *r.nodes[j].sketch;
-        const rt::vec2 hj = g.pos(boundNodes_[j]);
-        // As the thesis's tool: a node drawn left of another must not match one
-        // right of it (ties are allowed), and likewise for y.
-        if (si.x < sj.x && hi.x > hj.x) return false;
-        if (si.x > sj.x && hi.x < hj.x) return false;
-        if (si.y < sj.y && hi.y > hj.y) return false;
-        if (si.y > sj.y && hi.y < hj.y) return false;
+    for (const auto& c : checks) {
+        const rt::vec2 hj = g.pos(boundNodes_[c.other]);
+        const double a = c.axis == 0 ? hi.x : hi.y, b = c.axis == 0 ? hj.x : hj.y;
+        if (c.before ? a > b : a < b) return false;
     }
     return true;
 }
 
-template <class OnComplete>
-bool InterpretedRules::search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                              const std::vector<PlanStep>& plan, std::size_t i, OnComplete& onComplete) {
-    if (i == plan.size()) return onComplete();
-    const PlanStep& s = plan[i];
-    auto nodeKind = [&](int idx) {
-        return idx < static_cast<int>(r.nodes.size()) ? r.nodes[idx].kind : nac->nodes[idx - nac->outerNodes].kind;
-    };
-    auto nodeUsed = [&](NodeId h) { return std::find(boundNodes_.begin(), boundNodes_.end(), h) != boundNodes_.end(); };
-
-    switch (s.op) {
-    case PlanStep::Op::Check: {
-        EvalFrame f = st_.frame(nullptr);
-        f.graph = &g;
-        f.nodes = boundNodes_.data();
-        f.edges = boundEdges_.data();
-        const auto& cond = nac ? nac->conditions[s.condition] : r.conditions[s.condition];
-        return evaluateBool(cond.expr, f) && search(g, r, nac, plan, i + 1, onComplete);
-    }
-    case PlanStep::Op::ScanNodes: {
-        const int kind = nodeKind(s.node);
-        const auto rule = static_cast<std::size_t>(&r - st_.prog->rules.data());
-        auto tryHost = [&](NodeId h) {
-            if (nodeUsed(h) || (!nac && !hasEdgeKinds(g, rule, s.node, h))) return false;
-            boundNodes_[s.node] = h;
-            const bool stop = orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
-            boundNodes_[s.node] = kNoId;
-            return stop;
-        };
-        if (kind < 0) {
-            for (NodeId h : g.allNodes())
-                if (tryHost(h)) return true;
-            return false;
-        }
-        const auto candidates = g.nodesOfKind(kind);
-        for (std::size_t c = 0; c < candidates.size(); ++c)
-            if (tryHost(candidates[c])) return true;
-        return false;
-    }
-    case PlanStep::Op::ExtendEdge:
-    case PlanStep::Op::ConnectEdge: {
-        // A directed edge is looked for among the bound end's outgoing or
-        // incoming edges only; an undirected one among both.
-        const auto& pe = s.edge < static_cast<int>(r.edges.size()) ? r.edges[s.edge] : nac->edges[s.edge - nac->outerEdges];
-        const NodeId from = boundNodes_[s.from];
-        const bool outgoing = s.op == PlanStep::Op::ConnectEdge || s.fromIsSource;
-        if (!g.kinds()[pe.kind].directed || outgoing)
-            for (EdgeId e = g.firstOut(from); e != kNoId; e = g.nextOut(e))
-                if (tryEdge(g, r, nac, plan, i, onComplete, e)) return true;
-        if (!g.kinds()[pe.kind].directed || !outgoing)
-            for (EdgeId e = g.firstIn(from); e != kNoId; e = g.nextIn(e))
-                if (g.source(e) != g.target(e) && tryEdge(g, r, nac, plan, i, onComplete, e)) return true;
-        return false;
-    }
-    }
+bool InterpretedRules::keptByNewEdgeGate(bool gateHere) const {
+    if (!gateHere || newEdgesFrom_ == kNoId) return true;
+    for (std::size_t k = 0; k < current_->edges.size(); ++k)
+        if (boundEdges_[k] >= newEdgesFrom_) return true;
     return false;
 }
 
-// One candidate edge for an ExtendEdge or ConnectEdge step.
 template <class OnComplete>
-bool InterpretedRules::tryEdge(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                               const std::vector<PlanStep>& plan, std::size_t i, OnComplete& onComplete, EdgeId e) {
-    const PlanStep& s = plan[i];
-    const auto& pe = s.edge < static_cast<int>(r.edges.size()) ? r.edges[s.edge] : nac->edges[s.edge - nac->outerEdges];
-    if (g.edgeKind(e) != pe.kind) return false;
-    if (std::find(boundEdges_.begin(), boundEdges_.end(), e) != boundEdges_.end()) return false;
-    const bool directed = g.kinds()[pe.kind].directed;
-    const NodeId from = boundNodes_[s.from];
-    if (s.op == PlanStep::Op::ConnectEdge) {
-        const NodeId hd = boundNodes_[s.node];
-        const NodeId a = g.source(e), b = g.target(e);
-        const bool fits = directed ? (a == from && b == hd) : ((a == from && b == hd) || (a == hd && b == from));
-        if (!fits) return false;
-        boundEdges_[s.edge] = e;
-        const bool stop = keptByNewEdgeGate(r, nac) && search(g, r, nac, plan, i + 1, onComplete);
-        boundEdges_[s.edge] = kNoId;
-        return stop;
-    }
-    if (directed && (s.fromIsSource ? g.source(e) != from : g.target(e) != from)) return false;
-    const NodeId other = g.source(e) == from ? g.target(e) : g.source(e);
-    const int farKind = s.node < static_cast<int>(r.nodes.size()) ? r.nodes[s.node].kind
-                                                                   : nac->nodes[s.node - nac->outerNodes].kind;
-    if (farKind >= 0 && g.nodeKind(other) != farKind) return false;
-    if (std::find(boundNodes_.begin(), boundNodes_.end(), other) != boundNodes_.end()) return false;
-    boundEdges_[s.edge] = e;
-    boundNodes_[s.node] = other;
-    const bool stop = keptByNewEdgeGate(r, nac) && orderedOk(g, r, s.node) && search(g, r, nac, plan, i + 1, onComplete);
-    boundNodes_[s.node] = kNoId;
-    boundEdges_[s.edge] = kNoId;
-    return stop;
+bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, std::size_t i, OnComplete& onComplete) {
+    if (i == ops.size()) return onComplete();
+    auto usedNode = [&](const std::vector<int>& slots, NodeId h) {
+        for (int s : slots)
+            if (boundNodes_[s] == h) return true;
+        return false;
+    };
+    auto usedEdge = [&](const std::vector<int>& slots, EdgeId e) {
+        for (int s : slots)
+            if (boundEdges_[s] == e) return true;
+        return false;
+    };
+    return std::visit(
+        lower::Overloaded{
+            [&](const lower::Filter& o) {
+                EvalFrame f = st_.frame(nullptr);
+                f.graph = &g;
+                f.nodes = boundNodes_.data();
+                f.edges = boundEdges_.data();
+                return evaluateBool(*o.condition, f) && search(g, ops, i + 1, onComplete);
+            },
+            [&](const lower::ScanNodes& o) {
+                auto tryHost = [&](NodeId h) {
+                    if (usedNode(o.distinctNodes, h) || (g.edgeKindsAt(h) & o.edgeKinds) != o.edgeKinds) return false;
+                    boundNodes_[o.node] = h;
+                    const bool stop = orderedOk(g, o.node, o.ordered) && search(g, ops, i + 1, onComplete);
+                    boundNodes_[o.node] = kNoId;
+                    return stop;
+                };
+                if (o.kind < 0) {
+                    for (NodeId h : g.allNodes())
+                        if (tryHost(h)) return true;
+                    return false;
+                }
+                const auto candidates = g.nodesOfKind(o.kind);
+                for (std::size_t c = 0; c < candidates.size(); ++c)
+                    if (tryHost(candidates[c])) return true;
+                return false;
+            },
+            [&](const lower::ExtendEdge& o) {
+                const NodeId from = boundNodes_[o.from];
+                auto tryEdge = [&](EdgeId e) {
+                    if (g.edgeKind(e) != o.kind || usedEdge(o.distinctEdges, e)) return false;
+                    if (o.directed && (o.fromIsSource ? g.source(e) != from : g.target(e) != from)) return false;
+                    const NodeId other = g.source(e) == from ? g.target(e) : g.source(e);
+                    if ((o.nodeKind >= 0 && g.nodeKind(other) != o.nodeKind) || usedNode(o.distinctNodes, other)) return false;
+                    boundEdges_[o.edge] = e;
+                    boundNodes_[o.node] = other;
+                    const bool stop = keptByNewEdgeGate(o.newEdgeGate) && orderedOk(g, o.node, o.ordered) &&
+                                      search(g, ops, i + 1, onComplete);
+                    boundNodes_[o.node] = kNoId;
+                    boundEdges_[o.edge] = kNoId;
+                    return stop;
+                };
+                return eachEdgeAt(g, from, o.directed, o.fromIsSource, tryEdge);
+            },
+            [&](const lower::ConnectEdge& o) {
+                const NodeId from = boundNodes_[o.from], to = boundNodes_[o.to];
+                auto tryEdge = [&](EdgeId e) {
+                    if (g.edgeKind(e) != o.kind || usedEdge(o.distinctEdges, e)) return false;
+                    const NodeId a = g.source(e), b = g.target(e);
+                    const bool fits = o.directed ? (a == from && b == to) : ((a == from && b == to) || (a == to && b == from));
+                    if (!fits) return false;
+                    boundEdges_[o.edge] = e;
+                    const bool stop = keptByNewEdgeGate(o.newEdgeGate) && search(g, ops, i + 1, onComplete);
+                    boundEdges_[o.edge] = kNoId;
+                    return stop;
+                };
+                return eachEdgeAt(g, from, o.directed, true, tryEdge);
+            },
+        },
+        ops[i]);
 }
 
-bool InterpretedRules::nacsHold(const rt::Graph& g, const ir::Rule& r) {
+// The edges at `from` that may bind a pattern edge: a directed one among
+// `from`'s outgoing (or incoming) edges only, an undirected one among both
+// (outgoing first, self-loops once). Stops when `each` returns true.
+template <class Each>
+bool InterpretedRules::eachEdgeAt(const rt::Graph& g, NodeId from, bool directed, bool outgoing, Each& each) {
+    if (!directed || outgoing)
+        for (EdgeId e = g.firstOut(from); e != kNoId; e = g.nextOut(e))
+            if (each(e)) return true;
+    if (!directed || !outgoing)
+        for (EdgeId e = g.firstIn(from); e != kNoId; e = g.nextIn(e))
+            if (g.source(e) != g.target(e) && each(e)) return true;
+    return false;
+}
+
+bool InterpretedRules::negativesHold(const rt::Graph& g, const lower::MatchProgram& m) {
     auto found = [] { return true; };
-    for (const auto& nac : r.nacs)
-        if (search(g, r, &nac, nac.plan, 0, found)) return false;
+    for (const auto& nac : m.negatives)
+        if (search(g, nac, 0, found)) return false;
     return true;
 }
 
-void InterpretedRules::collect(const rt::Graph& g, const ir::Rule& r, const std::vector<PlanStep>& plan,
+void InterpretedRules::collect(const rt::Graph& g, const lower::MatchProgram& m, const lower::MatchList& ops,
                                rt::MatchBuffer& out) {
     auto record = [&] {
-        if (nacsHold(g, r)) out.add(boundNodes_.data(), boundEdges_.data());
+        if (negativesHold(g, m)) out.add(boundNodes_.data(), boundEdges_.data());
         return false;  // enumerate them all
     };
-    search(g, r, nullptr, plan, 0, record);
+    search(g, ops, 0, record);
 }
 
 void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) {
-    const ir::Rule& r = st_.prog->rules[rule];
-    current_ = &r;
-    collect(g, r, r.plan, out);
+    current_ = &st_.prog->rules[rule];
+    const lower::MatchProgram& m = matches_[rule];
+    collect(g, m, m.full, out);
 }
 
 void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
                                     rt::MatchBuffer& out, rt::EdgeId newEdgesFrom) {
-    const ir::Rule& r = st_.prog->rules[rule];
-    if (!hasEdgeKinds(g, rule, node, host)) return;
-    current_ = &r;
+    const lower::MatchProgram& m = matches_[rule];
+    const std::uint32_t need = m.anchorEdgeKinds[static_cast<std::size_t>(node)];
+    if ((g.edgeKindsAt(host) & need) != need) return;
+    current_ = &st_.prog->rules[rule];
     boundNodes_[node] = host;
     newEdgesFrom_ = newEdgesFrom;
-    collect(g, r, r.anchoredPlans[node], out);
+    collect(g, m, m.anchored[static_cast<std::size_t>(node)], out);
     newEdgesFrom_ = kNoId;
     boundNodes_[node] = kNoId;
-}
-
-bool InterpretedRules::keptByNewEdgeGate(const ir::Rule& r, const ir::NegativeCondition* nac) const {
-    if (nac || newEdgesFrom_ == kNoId) return true;
-    bool fresh = false;
-    for (std::size_t k = 0; k < r.edges.size(); ++k) {
-        if (boundEdges_[k] == kNoId) return true;   // not all bound yet
-        fresh = fresh || boundEdges_[k] >= newEdgesFrom_;
-    }
-    return fresh;
 }
 
 // ---- rewriting: the lowered rewrite programs, operation by operation ------------

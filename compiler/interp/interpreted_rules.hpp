@@ -1,11 +1,12 @@
 #pragma once
-// The interpreter's rules: matching walks each rule's search plan over the
-// runtime's indexes; rewriting executes the daughter's lowered rewrite program.
+// The interpreter's rules: matching walks each rule's lowered match lists over
+// the runtime's indexes; rewriting executes the daughter's lowered rewrite program.
 #include <optional>
 #include <vector>
 
 #include "g2d/derivation.hpp"
 #include "interp/program_state.hpp"
+#include "lower/match_program.hpp"
 #include "lower/rewrite_program.hpp"
 
 namespace g2d::interp {
@@ -37,32 +38,24 @@ private:
         std::vector<rt::Value> registers;               // the rewrite program's
     };
 
-    // Calls onComplete() for every way to finish binding `plan` from step
-    // `step` on; stops early when it returns true.
+    // Calls onComplete() for every way to finish binding `ops` from
+    // operation `i` on; stops early when it returns true.
     template <class OnComplete>
-    bool search(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                const std::vector<ir::PlanStep>& plan, std::size_t step, OnComplete& onComplete);
-    template <class OnComplete>
-    bool tryEdge(const rt::Graph& g, const ir::Rule& r, const ir::NegativeCondition* nac,
-                 const std::vector<ir::PlanStep>& plan, std::size_t step, OnComplete& onComplete, rt::EdgeId e);
-    void collect(const rt::Graph& g, const ir::Rule& r, const std::vector<ir::PlanStep>& plan, rt::MatchBuffer& out);
-    bool orderedOk(const rt::Graph& g, const ir::Rule& r, int node) const;
-    bool nacsHold(const rt::Graph& g, const ir::Rule& r);
-    // While findAnchored keeps only matches binding a new edge: false once
-    // every pattern edge is bound and none is new (RuleSet::findAnchored).
-    bool keptByNewEdgeGate(const ir::Rule& r, const ir::NegativeCondition* nac) const;
+    bool search(const rt::Graph& g, const lower::MatchList& ops, std::size_t i, OnComplete& onComplete);
+    template <class Each>
+    static bool eachEdgeAt(const rt::Graph& g, rt::NodeId from, bool directed, bool outgoing, Each& each);
+    void collect(const rt::Graph& g, const lower::MatchProgram& m, const lower::MatchList& ops, rt::MatchBuffer& out);
+    bool orderedOk(const rt::Graph& g, int node, const std::vector<lower::OrderCheck>& checks) const;
+    bool negativesHold(const rt::Graph& g, const lower::MatchProgram& m);
+    // While findAnchored keeps only matches binding a new edge: false where
+    // the lowering placed the test and no bound pattern edge is new.
+    bool keptByNewEdgeGate(bool gateHere) const;
     void place(const lower::Place& o, rt::Match m, const rt::Graph& g);
 
     const ProgramState& st_;
     std::vector<rt::RuleInfo> infos_;
     std::vector<std::vector<lower::RewriteProgram>> rewrites_;   // per rule, per daughter
-    // Per rule, per pattern node: ir::Rule::neededEdgeKinds as a mask of
-    // rt::Graph::edgeKindBit (0: no test), as generated code tests them.
-    std::vector<std::vector<std::uint32_t>> neededEdgeKinds_;
-    bool hasEdgeKinds(const rt::Graph& g, std::size_t rule, int node, rt::NodeId h) const {
-        const std::uint32_t need = neededEdgeKinds_[rule][static_cast<std::size_t>(node)];
-        return (g.edgeKindsAt(h) & need) == need;
-    }
+    std::vector<lower::MatchProgram> matches_;   // per rule
     std::vector<Prepared> pending_;   // the first pendingCount_ are in use
     std::size_t pendingCount_ = 0;
     std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles

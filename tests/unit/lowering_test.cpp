@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "lower/match_program.hpp"
 #include "lower/rewrite_program.hpp"
 #include "test_helpers.hpp"
 
@@ -92,4 +93,41 @@ TEST_CASE("kept elements: moves, rewiring, attribute writes recorded once, liter
           "  touch edge k0\n"
           "  k1 = new U h2 -> h0\n"
           "writes a b u x\n");
+}
+
+TEST_CASE("match lists carry every decision: kinds, distinct slots, order, the new-edge gate", "[lower]") {
+    const std::string src = "node P; node Q;\nedge E directed;\nedge F;\n"
+                            "axiom { a: P at (0, 0); b: P at (1, 0); a -[E]-> b; }\n"
+                            "rule R ordered {\n"
+                            "    match { a: P @ (0, 0); b: P @ (1, 1); x: a -[E]-> b; not { q: Q; b -[E]-> q; } }\n"
+                            "    produce { a; b; x; }\n"
+                            "}\n";
+    auto c = test::compile(src);
+    INFO(test::firstError(c));
+    REQUIRE(c.program);
+    const lower::MatchProgram m = lower::lowerMatch(*c.program, c.program->rules.at(0));
+    REQUIRE(m.full.size() == 2);
+    const auto& scan = std::get<lower::ScanNodes>(m.full[0]);
+    CHECK(scan.node == 0);
+    CHECK(scan.distinctNodes.empty());
+    CHECK(scan.edgeKinds != 0);   // a needs an E edge
+    const auto& extend = std::get<lower::ExtendEdge>(m.full[1]);
+    CHECK((extend.from == 0 && extend.node == 1 && extend.directed && extend.fromIsSource));
+    CHECK(extend.distinctNodes == std::vector<int>{0});
+    CHECK(extend.newEdgeGate);    // the pattern's only edge
+    // b is drawn right of and above a: its host must be neither left of nor below a's.
+    REQUIRE(extend.ordered.size() == 2);
+    CHECK((extend.ordered[0].other == 0 && extend.ordered[0].axis == 0 && !extend.ordered[0].before));
+    CHECK((extend.ordered[1].other == 0 && extend.ordered[1].axis == 1 && !extend.ordered[1].before));
+    // The negative condition: its slots after the pattern's, no gate, no order, no edge-kind pretest.
+    REQUIRE(m.negatives.size() == 1);
+    const auto& nac = std::get<lower::ExtendEdge>(m.negatives[0][0]);
+    CHECK((nac.from == 1 && nac.node == 2 && nac.edge == 1));
+    CHECK(nac.distinctNodes == std::vector<int>{0, 1});
+    CHECK(nac.distinctEdges == std::vector<int>{0});
+    CHECK_FALSE(nac.newEdgeGate);
+    CHECK(nac.ordered.empty());
+    CHECK(m.anchored.size() == 2);
+    CHECK(m.nodeSlots == 3);
+    CHECK(m.edgeSlots == 2);
 }

@@ -1,0 +1,111 @@
+#include <algorithm>
+
+#include "g2d/graph.hpp"
+#include "lower/match_program.hpp"
+
+namespace g2d::lower {
+
+namespace {
+
+class MatchLowering {
+public:
+    MatchLowering(const ir::Program& prog, const ir::Rule& rule) : prog_(prog), r_(rule) {}
+
+    MatchProgram lower() {
+        MatchProgram p;
+        p.full = list(r_.plan, nullptr, {}, {});
+        for (std::size_t a = 0; a < r_.nodes.size(); ++a) {
+            const int anchor = static_cast<int>(a);
+            p.anchored.push_back(list(r_.anchoredPlans[a], nullptr, {anchor}, {}));
+            p.anchorEdgeKinds.push_back(edgeKindsNeeded(anchor));
+        }
+        std::size_t nodes = r_.nodes.size(), edges = r_.edges.size();
+        for (const auto& nac : r_.nacs) {
+            std::vector<int> outerNodes, outerEdges;
+            for (int i = 0; i < nac.outerNodes; ++i) outerNodes.push_back(i);
+            for (int i = 0; i < nac.outerEdges; ++i) outerEdges.push_back(i);
+            p.negatives.push_back(list(nac.plan, &nac, outerNodes, outerEdges));
+            nodes = std::max(nodes, r_.nodes.size() + nac.nodes.size());
+            edges = std::max(edges, r_.edges.size() + nac.edges.size());
+        }
+        p.nodeSlots = static_cast<int>(std::max<std::size_t>(nodes, 1));
+        p.edgeSlots = static_cast<int>(std::max<std::size_t>(edges, 1));
+        return p;
+    }
+
+private:
+    int nodeKind(int i, const ir::NegativeCondition* nac) const {
+        return i < static_cast<int>(r_.nodes.size()) ? r_.nodes[i].kind : nac->nodes[i - nac->outerNodes].kind;
+    }
+    const ir::PatternEdge& edgeOf(int i, const ir::NegativeCondition* nac) const {
+        return i < static_cast<int>(r_.edges.size()) ? r_.edges[i] : nac->edges[i - nac->outerEdges];
+    }
+    // The edge kinds every host of pattern node `p` has had (ir::Rule::neededEdgeKinds).
+    std::uint32_t edgeKindsNeeded(int p) const {
+        std::uint32_t need = 0;
+        if (static_cast<std::size_t>(p) < r_.neededEdgeKinds.size())
+            for (int k : r_.neededEdgeKinds[static_cast<std::size_t>(p)]) need |= rt::Graph::edgeKindBit(k);
+        return need;
+    }
+    // `ordered`, as the thesis's tool: a node drawn left of another must not
+    // match one right of it (ties are allowed), and likewise for y; checked
+    // against every pattern node bound before it.
+    std::vector<OrderCheck> ordered(int k, const std::vector<int>& bound) const {
+        std::vector<OrderCheck> out;
+        if (!r_.ordered || k >= static_cast<int>(r_.nodes.size())) return out;
+        const auto& si = *r_.nodes[k].sketch;
+        for (int j : bound) {
+            if (j >= static_cast<int>(r_.nodes.size())) continue;
+            const auto& sj = *r_.nodes[j].sketch;
+            if (si.x != sj.x) out.push_back(OrderCheck{j, 0, si.x < sj.x});
+            if (si.y != sj.y) out.push_back(OrderCheck{j, 1, si.y < sj.y});
+        }
+        return out;
+    }
+
+    MatchList list(const std::vector<ir::PlanStep>& plan, const ir::NegativeCondition* nac, std::vector<int> boundNodes,
+                   std::vector<int> boundEdges) const {
+        MatchList out;
+        for (const auto& s : plan) {
+            // A search keeping only matches that bind a new edge tests that
+            // where the pattern's last edge is bound (not in negative conditions).
+            const bool lastEdge = !nac && boundEdges.size() + 1 == r_.edges.size();
+            switch (s.op) {
+            case ir::PlanStep::Op::Check: {
+                const auto& cond = nac ? nac->conditions[s.condition] : r_.conditions[s.condition];
+                out.push_back(Filter{&cond.expr});
+                break;
+            }
+            case ir::PlanStep::Op::ScanNodes:
+                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), boundNodes,
+                                        ordered(s.node, boundNodes)});
+                boundNodes.push_back(s.node);
+                break;
+            case ir::PlanStep::Op::ExtendEdge: {
+                const auto& pe = edgeOf(s.edge, nac);
+                out.push_back(ExtendEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, s.fromIsSource,
+                                         nodeKind(s.node, nac), boundEdges, boundNodes, ordered(s.node, boundNodes), lastEdge});
+                boundNodes.push_back(s.node);
+                boundEdges.push_back(s.edge);
+                break;
+            }
+            case ir::PlanStep::Op::ConnectEdge: {
+                const auto& pe = edgeOf(s.edge, nac);
+                out.push_back(ConnectEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, boundEdges, lastEdge});
+                boundEdges.push_back(s.edge);
+                break;
+            }
+            }
+        }
+        return out;
+    }
+
+    const ir::Program& prog_;
+    const ir::Rule& r_;
+};
+
+}  // namespace
+
+MatchProgram lowerMatch(const ir::Program& prog, const ir::Rule& rule) { return MatchLowering(prog, rule).lower(); }
+
+}  // namespace g2d::lower
