@@ -34,18 +34,12 @@ public:
     }
 
 private:
-    int nodeKind(int i, const ir::NegativeCondition* nac) const {
-        return i < static_cast<int>(r_.nodes.size()) ? r_.nodes[i].kind : nac->nodes[i - nac->outerNodes].kind;
-    }
-    const ir::PatternEdge& edgeOf(int i, const ir::NegativeCondition* nac) const {
-        return i < static_cast<int>(r_.edges.size()) ? r_.edges[i] : nac->edges[i - nac->outerEdges];
-    }
     ExprContext matchContext(const ir::NegativeCondition* nac) const {
         ExprContext c;
         c.node = [](int i) { return "n[" + str(i) + "]"; };
         c.edge = [](int i) { return "e[" + str(i) + "]"; };
-        c.nodeKind = [this, nac](int i) { return nodeKind(i, nac); };
-        c.edgeKind = [this, nac](int i) { return edgeOf(i, nac).kind; };
+        c.nodeKind = [this, nac](int i) { return ir::slotNodeKind(r_, nac, i); };
+        c.edgeKind = [this, nac](int i) { return ir::slotEdge(r_, nac, i).kind; };
         return c;
     }
 

@@ -368,6 +368,15 @@ struct PriorityConfig {
     Span span;
 };
 
+// A search slot (ir::PlanStep numbering): the rule's pattern node or edge,
+// or, past them, negative condition `nac`'s own.
+inline int slotNodeKind(const Rule& r, const NegativeCondition* nac, int i) {
+    return i < static_cast<int>(r.nodes.size()) ? r.nodes[i].kind : nac->nodes[i - nac->outerNodes].kind;
+}
+inline const PatternEdge& slotEdge(const Rule& r, const NegativeCondition* nac, int i) {
+    return i < static_cast<int>(r.edges.size()) ? r.edges[i] : nac->edges[i - nac->outerEdges];
+}
+
 struct Program {
     std::vector<Enum> enums;
     std::vector<Kind> kinds;

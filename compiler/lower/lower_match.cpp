@@ -34,12 +34,8 @@ public:
     }
 
 private:
-    int nodeKind(int i, const ir::NegativeCondition* nac) const {
-        return i < static_cast<int>(r_.nodes.size()) ? r_.nodes[i].kind : nac->nodes[i - nac->outerNodes].kind;
-    }
-    const ir::PatternEdge& edgeOf(int i, const ir::NegativeCondition* nac) const {
-        return i < static_cast<int>(r_.edges.size()) ? r_.edges[i] : nac->edges[i - nac->outerEdges];
-    }
+    int nodeKind(int i, const ir::NegativeCondition* nac) const { return ir::slotNodeKind(r_, nac, i); }
+    const ir::PatternEdge& edgeOf(int i, const ir::NegativeCondition* nac) const { return ir::slotEdge(r_, nac, i); }
     // The edge kinds every host of pattern node `p` has had (ir::Rule::neededEdgeKinds).
     std::uint32_t edgeKindsNeeded(int p) const {
         std::uint32_t need = 0;
