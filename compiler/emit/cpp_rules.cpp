@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lower/match_program.hpp"
+#include "lower/rule_facts.hpp"
 #include "lower/rewrite_program.hpp"
 
 namespace g2d::emit {
@@ -17,7 +18,8 @@ public:
     RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places,
                 ConstantValues& constants)
         : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen), places_(places),
-          constants_(constants), match_(lower::lowerMatch(prog, r)) {}
+          constants_(constants), match_(lower::lowerMatch(prog, r)), facts_(lower::ruleFacts(prog, r)),
+          shape_(rt::incidenceShape(static_cast<int>(r.nodes.size()), facts_.info.readsIncidence, facts_.info.readDirections)) {}
 
     std::string emit() {
         std::string out;
@@ -212,19 +214,6 @@ private:
         return out + body + "    }\n\n";
     }
 
-    // As MatchSet reads RuleInfo::readsIncidence: any other size means every
-    // node reads every edge.
-    ir::IncidenceRead reads(int p) const {
-        return r_.readsIncidence.size() != r_.nodes.size() ? ir::IncidenceRead::AllEdges
-                                                           : r_.readsIncidence[static_cast<std::size_t>(p)];
-    }
-    bool readsIncidence(int p) const { return reads(p) != ir::IncidenceRead::None; }
-    // ir::Rule::readDirections (sema fills it for every rule it lowers).
-    int readDirections(int p) const {
-        if (r_.readDirections.size() != r_.nodes.size()) return readsIncidence(p) ? ir::kReadsOutEdges | ir::kReadsInEdges : 0;
-        return r_.readDirections[static_cast<std::size_t>(p)];
-    }
-
     // RuleSet::repair for this rule: the anchored searches inlined, in the
     // generic loop's order (area nodes, then pattern nodes), adding straight
     // into the match set.
@@ -238,7 +227,7 @@ private:
         for (int p = 0; p < static_cast<int>(r_.nodes.size()); ++p) {
             // A node whose edges alone changed only where p reads those lists
             // (every area node has a list changed, or changed itself).
-            const int lists = readDirections(p);
+            const int lists = shape_.directions[static_cast<std::size_t>(p)];
             std::string cond = lists == (ir::kReadsOutEdges | ir::kReadsInEdges) ? "true"
                                : lists != 0 ? "(full || (area.edgeChanges(h) & " + str(lists) + ") != 0)"
                                             : "full";
@@ -246,7 +235,8 @@ private:
             if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(p)], "h"); !kinds.empty())
                 cond += " && " + kinds;
             // At a node the step created, an earlier pattern node adds every match (ir::Rule::newHostAddsNothing).
-            if (static_cast<std::size_t>(p) < r_.newHostAddsNothing.size() && r_.newHostAddsNothing[static_cast<std::size_t>(p)])
+            const auto& addsNothing = facts_.info.newHostAddsNothing;
+            if (static_cast<std::size_t>(p) < addsNothing.size() && addsNothing[static_cast<std::size_t>(p)])
                 cond += " && h < area.newNodesFrom";
             out += "            if (" + cond + ") {\n";
             out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
@@ -255,15 +245,16 @@ private:
             // (RepairArea::bindsNewEdge).
             std::string searchedFirst = "true", staleFirst = "true";
             for (int q = 0; q < p; ++q) {
-                searchedFirst += " && !area.searched(" + str(readDirections(q)) + ", n[" + str(q) + "])";
-                staleFirst += " && !area.stale(n[" + str(q) + "], " + (reads(q) == ir::IncidenceRead::AllEdges ? "true" : "false") + ")";
+                const auto sq = static_cast<std::size_t>(q);
+                searchedFirst += " && !area.searched(" + str(shape_.directions[sq]) + ", n[" + str(q) + "])";
+                staleFirst += " && !area.stale(n[" + str(q) + "], " + (shape_.reads[sq] == rt::Incidence::AllEdges ? "true" : "false") + ")";
             }
             const std::string fresh = bindsNewEdge("area.newEdgesFrom");
             const std::string first = p == 0 ? "" : " && ((" + fresh + ") ? (" + searchedFirst + ") : (" + staleFirst + "))";
             // From a node whose edges alone changed, reading only the
             // pattern's edges: only matches binding a new edge, dropped as
             // soon as the last edge is bound.
-            if (reads(p) == ir::IncidenceRead::PatternEdges) newEdgeGate_ = "!full && !(" + fresh + ")";
+            if (shape_.reads[static_cast<std::size_t>(p)] == rt::Incidence::PatternEdges) newEdgeGate_ = "!full && !(" + fresh + ")";
             std::string body;
             steps(match_.anchored[static_cast<std::size_t>(p)], 0, nullptr, "@@COMPLETE@@", body, "                ");
             newEdgeGate_.clear();
@@ -450,6 +441,10 @@ private:
     Places& places_;
     ConstantValues& constants_;
     lower::MatchProgram match_;
+    // What the runtime knows of the rule, as its generic repair reads it
+    // (RuleSet::repair): the inlined repair reads the same.
+    lower::RuleFacts facts_;
+    rt::IncidenceShape shape_;
 };
 
 }  // namespace

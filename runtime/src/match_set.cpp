@@ -12,15 +12,23 @@ MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> read
     : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)),
       stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 3 : 0)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
-    if (reads.size() != static_cast<std::size_t>(nodes)) reads.assign(static_cast<std::size_t>(nodes), Incidence::AllEdges);
-    for (Incidence r : reads) reads_.push_back(static_cast<std::uint8_t>(r));
-    const bool given = directions.size() == reads.size();
-    for (std::size_t i = 0; i < reads.size(); ++i) {
-        const std::uint8_t both = RepairArea::kOut | RepairArea::kIn;
-        const std::uint8_t d = reads[i] == Incidence::None ? 0 : given ? directions[i] : both;
-        directions_.push_back(reads[i] == Incidence::AllEdges ? both : d);
-        readingDirections_ |= directions_.back();
+    const IncidenceShape shape = incidenceShape(nodes, reads, directions);
+    for (Incidence r : shape.reads) reads_.push_back(static_cast<std::uint8_t>(r));
+    directions_ = shape.directions;
+    for (std::uint8_t d : directions_) readingDirections_ |= d;
+}
+
+IncidenceShape incidenceShape(int nodes, const std::vector<Incidence>& reads, const std::vector<std::uint8_t>& directions) {
+    IncidenceShape out;
+    const auto n = static_cast<std::size_t>(nodes);
+    out.reads = reads.size() == n ? reads : std::vector<Incidence>(n, Incidence::AllEdges);
+    const bool given = directions.size() == n;
+    const std::uint8_t both = RepairArea::kOut | RepairArea::kIn;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Incidence r = out.reads[i];
+        out.directions.push_back(r == Incidence::None ? 0 : r == Incidence::AllEdges ? both : given ? directions[i] : both);
     }
+    return out;
 }
 
 long long MatchSet::ageSum(Id id) const {

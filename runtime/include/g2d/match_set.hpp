@@ -70,6 +70,18 @@ private:
     std::size_t count_ = 0;
 };
 
+// Per pattern node, what its matches read of the edges at its host
+// (RuleInfo::readsIncidence; a list of another length means every edge)
+// and which of the host's edge lists that is (RepairArea::kOut | kIn: none
+// where it reads nothing, both where it reads every edge, else
+// RuleInfo::readDirections, or both when that is not given). Match sets and
+// generated repair code read these, so both repair alike.
+struct IncidenceShape {
+    std::vector<Incidence> reads;
+    std::vector<std::uint8_t> directions;
+};
+IncidenceShape incidenceShape(int nodes, const std::vector<Incidence>& reads, const std::vector<std::uint8_t>& directions);
+
 class MatchSet {
 public:
     // `reads[i]`: what pattern node i reads of its host's edges; the nodes
