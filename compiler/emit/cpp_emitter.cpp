@@ -3,7 +3,9 @@
 #include <functional>
 
 #include "emit/cpp_expr.hpp"
+#include "emit/cpp_rewrite.hpp"
 #include "emit/cpp_rules.hpp"
+#include "lower/start_program.hpp"
 #include "lower/rule_facts.hpp"
 
 #include <algorithm>
@@ -245,53 +247,31 @@ private:
         out += "        (void)params;\n        rng_ = &rng;\n        current_ = \"\";\n        clearPending();\n        try {\n";
         for (std::size_t i = 0; i < prog_.params.size(); ++i)
             out += in + "P_.p" + str(static_cast<long long>(i)) + " = " + fromValue(prog_.params[i].type, "params[" + str(static_cast<long long>(i)) + "]") + ";\n";
-        for (std::size_t i = 0; i < prog_.consts.size(); ++i) {
-            const auto& c = prog_.consts[i];
-            const std::string v = c.folded ? cppLiteral(*c.folded, c.type) : gen_.gen(c.value, noElements(), out, in);
-            out += in + "C_.c" + str(static_cast<long long>(i)) + " = " + v + ";\n";
-        }
-        for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
-            const auto& kind = prog_.kinds[k];
-            if (kind.attrs.empty()) continue;
-            out += in + "default_" + str(static_cast<long long>(k)) + " = Kind" + str(static_cast<long long>(k)) + "{};\n";
-            for (std::size_t a = 0; a < kind.attrs.size(); ++a) {
-                const std::string v = gen_.gen(kind.attrs[a].defaultValue, noElements(), out, in);
-                out += in + "default_" + str(static_cast<long long>(k)) + ".a" + str(static_cast<long long>(a)) + " = " + v + ";\n";
-            }
+        const lower::StartProgram start = lower::lowerStart(prog_);
+        for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
+            if (!prog_.kinds[k].attrs.empty())
+                out += in + "default_" + str(static_cast<long long>(k)) + " = Kind" + str(static_cast<long long>(k)) + "{};\n";
+        for (const auto& op : start.init) {
+            std::visit(lower::Overloaded{
+                           [&](const lower::InitConst& o) {
+                               const auto& c = *o.decl;
+                               const std::string v = c.folded ? cppLiteral(*c.folded, c.type) : gen_.gen(c.value, noElements(), out, in);
+                               out += in + "C_.c" + str(o.index) + " = " + v + ";\n";
+                           },
+                           [&](const lower::InitDefault& o) {
+                               const std::string v = gen_.gen(*o.value, noElements(), out, in);
+                               out += in + "default_" + str(o.kind) + ".a" + str(o.attr) + " = " + v + ";\n";
+                           },
+                       },
+                       op);
         }
         out += in + "graph_ = Graph(graph_.kinds(), graph_.styleProps());\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
             if (!prog_.kinds[k].attrs.empty()) out += in + "store_" + str(static_cast<long long>(k)) + ".clear();\n";
-        // The axiom: nodes in order (position, attributes, styles), then edges.
-        const auto& ax = prog_.axiom;
-        for (std::size_t i = 0; i < ax.nodes.size(); ++i) {
-            const auto& n = ax.nodes[i];
-            const std::string si = str(static_cast<long long>(i));
-            out += in + "vec2 apos" + si + "(0.0, 0.0);\n";
-            if (n.position) out += in + "apos" + si + " = " + gen_.gen(*n.position, noElements(), out, in) + ";\n";
-            const bool attrs = !prog_.kinds[n.kind].attrs.empty();
-            if (attrs) out += in + "Kind" + str(n.kind) + " arec" + si + " = default_" + str(n.kind) + ";\n";
-            for (const auto& a : n.assigns)
-                out += in + "arec" + si + ".a" + str(a.attr) + " = " + gen_.gen(a.value, noElements(), out, in) + ";\n";
-            out += in + "const NodeId an" + si + " = graph_.addNode(" + str(n.kind) + ", apos" + si + ", 0);\n" + in + "(void)an" + si + ";\n";
-            if (attrs) out += in + "graph_.setNodeSlot(an" + si + ", store_" + str(n.kind) + ".add(arec" + si + "));\n";
-            for (const auto& s : n.styles)
-                out += in + "graph_.setNodeStyle(an" + si + ", " + cppStyleProp(s) + ", " +
-                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ");\n";
-        }
-        for (std::size_t i = 0; i < ax.edges.size(); ++i) {
-            const auto& e = ax.edges[i];
-            const std::string si = str(static_cast<long long>(i));
-            const bool attrs = !prog_.kinds[e.kind].attrs.empty();
-            if (attrs) out += in + "Kind" + str(e.kind) + " erec" + si + " = default_" + str(e.kind) + ";\n";
-            for (const auto& a : e.assigns)
-                out += in + "erec" + si + ".a" + str(a.attr) + " = " + gen_.gen(a.value, noElements(), out, in) + ";\n";
-            out += in + "const EdgeId ae" + si + " = graph_.addEdge(" + str(e.kind) + ", an" + str(e.src) + ", an" + str(e.dst) + ", 0);\n" + in + "(void)ae" + si + ";\n";
-            if (attrs) out += in + "graph_.setEdgeSlot(ae" + si + ", store_" + str(e.kind) + ".add(erec" + si + "));\n";
-            for (const auto& s : e.styles)
-                out += in + "graph_.setEdgeStyle(ae" + si + ", " + cppStyleProp(s) + ", " +
-                       valueOf(s.value.type, gen_.gen(s.value, noElements(), out, in)) + ");\n";
-        }
+        // The axiom: a rewrite of the empty graph at step 0.
+        RewritePrinter axiom(prog_, gen_, places_, constants_);
+        out += in + "{\n" + in + "    Graph& G = graph_;\n" + in + "    const long long step = 0;\n" + in + "    const Match m{};\n" + in + "    (void)m;\n";
+        out += axiom.prepare(start.axiom, noElements(), in + "    ") + axiom.commit(start.axiom, in + "    ") + in + "}\n";
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";
         for (const auto& r : prog_.rules) {
@@ -435,52 +415,31 @@ private:
         return out;
     }
 
+    // Each kind's style properties (style_K); what is drawn, and how an
+    // element's own assignments join them, is rt::drawItems'.
     std::string emitStyles() {
         std::string out;
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             const auto& kind = prog_.kinds[k];
-            out += "    void style_" + str(static_cast<long long>(k)) + "(DrawItem& it, std::uint32_t self) {\n        (void)it; (void)self;\n";
+            out += "    void style_" + str(static_cast<long long>(k)) + "(DrawItem& it) {\n        (void)it;\n";
             ExprContext ctx;
-            ctx.self = "self";
+            ctx.self = "it.id";
             ctx.selfClass = kind.cls;
             ctx.selfKind = static_cast<int>(k);
             ctx.graph = "graph_";
             for (const auto& p : kind.style) {
                 const std::string v = gen_.gen(p.value, ctx, out, "        ");
-                const std::string shown = p.value.type.kind == ir::TypeKind::Enum
-                                              ? "Value{std::string(enum_names_" + str(p.value.type.enumId) + "[" + v + "])}"
-                                              : "Value{" + v + "}";
-                out += "        it.props.push_back(StyleOverride{" + cppString(p.name) + ", " + shown + "});\n";
+                out += "        it.props.push_back(StyleOverride{" + cppString(p.name) + ", " + valueOf(p.value.type, v) + "});\n";
             }
             out += "    }\n\n";
         }
-        out += "    void overrides(DrawItem& it, StyleList own) const {\n"
-               "        for (const auto& o : own) {\n"
-               "            Value v = o.value;\n"
-               "            if (const auto* e = std::get_if<EnumVal>(&v)) v = std::string(enum_tables[e->enumId][e->index]);\n"
-               "            const std::string& name = graph_.stylePropName(o.prop);\n"
-               "            bool replaced = false;\n"
-               "            for (auto& p : it.props)\n"
-               "                if (p.prop == name) { p.value = v; replaced = true; }\n"
-               "            if (!replaced) it.props.push_back(StyleOverride{name, v});\n"
-               "        }\n    }\n\n";
-        out += "    std::vector<DrawItem> drawItems() override {\n        std::vector<DrawItem> items;\n        try {\n";
-        out += "            for (EdgeId e = 0; e < graph_.edgeCapacity(); ++e) {\n                if (!graph_.edgeAlive(e)) continue;\n"
-               "                DrawItem it;\n                it.cls = ElemClass::Edge;\n                it.id = e;\n"
-               "                it.a = graph_.pos(graph_.source(e));\n                it.b = graph_.pos(graph_.target(e));\n"
-               "                switch (graph_.edgeKind(e)) {\n";
+        out += "    std::vector<DrawItem> drawItems() override {\n        try {\n"
+               "            return rt::drawItems(graph_, schema_.enumValueNames, [this](DrawItem& it, int kind) {\n"
+               "                switch (kind) {\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
-            if (prog_.kinds[k].cls == ir::ElemClass::Edge)
-                out += "                case " + str(static_cast<long long>(k)) + ": style_" + str(static_cast<long long>(k)) + "(it, e); break;\n";
-        out += "                default: break;\n                }\n                overrides(it, graph_.edgeStyle(e));\n                items.push_back(std::move(it));\n            }\n";
-        out += "            for (NodeId n = 0; n < graph_.nodeCapacity(); ++n) {\n                if (!graph_.nodeAlive(n)) continue;\n"
-               "                DrawItem it;\n                it.id = n;\n                it.a = graph_.pos(n);\n"
-               "                switch (graph_.nodeKind(n)) {\n";
-        for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
-            if (prog_.kinds[k].cls == ir::ElemClass::Node)
-                out += "                case " + str(static_cast<long long>(k)) + ": style_" + str(static_cast<long long>(k)) + "(it, n); break;\n";
-        out += "                default: break;\n                }\n                overrides(it, graph_.nodeStyle(n));\n                items.push_back(std::move(it));\n            }\n";
-        out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n        return items;\n    }\n\n";
+            out += "                case " + str(static_cast<long long>(k)) + ": style_" + str(static_cast<long long>(k)) + "(it); break;\n";
+        out += "                default: break;\n                }\n            });\n";
+        out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
         return out;
     }
 

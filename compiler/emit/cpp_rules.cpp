@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "emit/cpp_rewrite.hpp"
 #include "lower/match_program.hpp"
 #include "lower/rule_facts.hpp"
 #include "lower/rewrite_program.hpp"
@@ -17,8 +18,8 @@ class RuleEmitter {
 public:
     RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places,
                 ConstantValues& constants)
-        : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen), places_(places),
-          constants_(constants), match_(lower::lowerMatch(prog, r)), facts_(lower::ruleFacts(prog, r)),
+        : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen),
+          rewrite_(prog, gen, places, constants), match_(lower::lowerMatch(prog, r)), facts_(lower::ruleFacts(prog, r)),
           shape_(rt::incidenceShape(static_cast<int>(r.nodes.size()), facts_.info.readsIncidence, facts_.info.readDirections)) {}
 
     std::string emit() {
@@ -280,29 +281,9 @@ private:
         return out + "    }\n\n";
     }
 
-    static std::string reg(int r) { return "r" + str(r); }
-    static std::string node(int h) { return "h" + str(h); }
-    static std::string edge(int h) { return "k" + str(h); }
-    // An attribute's value at commit time: a literal as it is, a register as prepare kept it.
-    static std::string attrValue(const lower::Operand& v) {
-        return v.reg >= 0 ? reg(v.reg) : cppLiteral(v.literal->value, v.literal->type);
-    }
-    // A style's value: a literal is one shared constant of the grammar.
-    std::string styleValue(const lower::Operand& v) {
-        if (v.reg < 0) return constants_.add(valueInit(v.type, cppLiteral(v.literal->value, v.literal->type)));
-        return valueOf(v.type, reg(v.reg));
-    }
-    // A new element's attribute record: the kind's defaults, then the daughter's values.
-    std::string record(int kind, const std::vector<lower::AttrWrite>& attrs, const std::string& element, ir::ElemClass cls,
-                       const std::string& c) const {
-        if (prog_.kinds[kind].attrs.empty()) return "";
-        std::string out = c + "{\n" + c + "    Kind" + str(kind) + " rec = default_" + str(kind) + ";\n";
-        for (const auto& w : attrs) out += c + "    rec.a" + str(w.attr) + " = " + attrValue(w.value) + ";\n";
-        return out + c + "    G.set" + (cls == ir::ElemClass::Edge ? "Edge" : "Node") + "Slot(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
-    }
-
     // prepare_R_D prints the program's prepare part; apply_R_D its commit part.
     std::string prepare(int di, const lower::RewriteProgram& p) {
+        auto reg = [](int r) { return RewritePrinter::reg(r); };
         const std::string in = "        ";
         const std::string rd = ri_ + "_" + str(di);
         std::string out = "    void prepare_" + rd + "(Match m, const Graph& g) {\n        (void)m;\n        (void)g;\n";
@@ -311,70 +292,8 @@ private:
         ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
         ctx.nodeKind = [this](int i) { return r_.nodes[i].kind; };
         ctx.edgeKind = [this](int i) { return r_.edges[i].kind; };
-        if (p.placement) out += in + "std::optional<vec2> placed[" + str(p.nodeHandles) + "];\n";
-        for (const auto& op : p.prepare) {
-            std::visit(lower::Overloaded{
-                           [&](const lower::EvalLocal& o) {
-                               const std::string v = gen_.gen(*o.value, ctx, out, in);
-                               const std::string l = "L" + str(o.slot);
-                               out += in + "const " + cppType(o.value->type) + " " + l + " = " + v + ";\n" + in + "(void)" + l + ";\n";
-                           },
-                           [&](const lower::Place& o) { out += placement(o, in); },
-                           [&](const lower::Eval& o) {
-                               const std::string v = gen_.gen(*o.value, ctx, out, in);
-                               out += in + "const auto " + reg(o.reg) + " = " + v + ";\n";
-                           },
-                           [&](const lower::EvalPosition& o) {
-                               const std::string v = gen_.gen(*o.value, ctx, out, in);
-                               out += in + "const vec2 " + reg(o.reg) + " = " + v + ";\n";
-                               out += in + "if (!std::isfinite(" + reg(o.reg) + ".x) || !std::isfinite(" + reg(o.reg) + ".y)) throw PlacedError(" +
-                                      str(places_.add(o.value->span)) + ", " + cppString(o.message) + ");\n";
-                           },
-                           [&](const lower::TakePlaced& o) { out += in + "const vec2 " + reg(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n"; },
-                       },
-                       op);
-        }
-        const std::string c = "        ";
-        std::string commit = c + "(void)step;\n" + c + "(void)G;\n";
-        for (const auto& op : p.commit) {
-            std::visit(lower::Overloaded{
-                           [&](const lower::DeleteEdge& o) { commit += c + "G.removeEdge(m.edges[" + str(o.matchEdge) + "]);\n"; },
-                           [&](const lower::BindNode& o) {
-                               commit += c + "const NodeId " + node(o.handle) + " = m.nodes[" + str(o.matchNode) + "];\n" + c + "(void)" + node(o.handle) + ";\n";
-                           },
-                           [&](const lower::CreateNode& o) {
-                               commit += c + "const NodeId " + node(o.handle) + " = G.addNode(" + str(o.kind) + ", " + reg(o.posReg) + ", step);\n" + c +
-                                         "(void)" + node(o.handle) + ";\n" + record(o.kind, o.attrs, node(o.handle), ir::ElemClass::Node, c);
-                           },
-                           [&](const lower::Rewire& o) {
-                               commit += c + "G.reconnectEdge(m.edges[" + str(o.matchEdge) + "], " + node(o.src) + ", " + node(o.dst) + ");\n";
-                           },
-                           [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
-                           [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + reg(o.reg) + ");\n"; },
-                           [&](const lower::SetNodeAttr& o) {
-                               commit += c + gen_.attrAccess(o.kind, node(o.handle), ir::ElemClass::Node, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
-                           },
-                           [&](const lower::TouchNodeValues& o) { commit += c + "G.touchNodeValues(" + node(o.handle) + ");\n"; },
-                           [&](const lower::SetNodeStyle& o) {
-                               commit += c + "G.setNodeStyle(" + node(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
-                           },
-                           [&](const lower::BindEdge& o) {
-                               commit += c + "const EdgeId " + edge(o.handle) + " = m.edges[" + str(o.matchEdge) + "];\n" + c + "(void)" + edge(o.handle) + ";\n";
-                           },
-                           [&](const lower::SetEdgeAttr& o) {
-                               commit += c + gen_.attrAccess(o.kind, edge(o.handle), ir::ElemClass::Edge, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
-                           },
-                           [&](const lower::TouchEdge& o) { commit += c + "G.touchEdgeItself(" + edge(o.handle) + ");\n"; },
-                           [&](const lower::CreateEdge& o) {
-                               commit += c + "const EdgeId " + edge(o.handle) + " = G.addEdge(" + str(o.kind) + ", " + node(o.src) + ", " + node(o.dst) +
-                                         ", step);\n" + c + "(void)" + edge(o.handle) + ";\n" + record(o.kind, o.attrs, edge(o.handle), ir::ElemClass::Edge, c);
-                           },
-                           [&](const lower::SetEdgeStyle& o) {
-                               commit += c + "G.setEdgeStyle(" + edge(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
-                           },
-                       },
-                       op);
-        }
+        out += rewrite_.prepare(p, ctx, in);
+        const std::string commit = rewrite_.commit(p, "        ");
         // Kept in a typed buffer until commit (no allocation once warm).
         const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));
         const std::string ne = str(static_cast<int>(std::max<std::size_t>(r_.edges.size(), 1)));
@@ -396,50 +315,12 @@ private:
         return pending + out + apply + commit + "    }\n\n";
     }
 
-    std::string placement(const lower::Place& o, const std::string& in) {
-        std::string out = in + "{\n";
-        const std::string b = in + "    ";
-        // Fixed-size arrays: placement allocates nothing per step.
-        std::string mother, host, refDaughter, refHost;
-        auto item = [](std::string& list, const std::string& v) { list += (list.empty() ? "" : ", ") + v; };
-        auto vec = [](const ir::Vec2& v) { return cppLiteral(ir::Value{v}, ir::kVec2Type); };
-        for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
-            item(mother, vec(o.motherSketch[i]));
-            item(host, "g.pos(m.nodes[" + str(static_cast<int>(i)) + "])");
-        }
-        for (const auto& [sketch, node] : o.refs) {
-            item(refDaughter, vec(sketch));
-            item(refHost, "host[" + str(node) + "]");
-        }
-        const std::string nodes = str(static_cast<int>(o.motherSketch.size()));
-        out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
-        out += b + "const vec2 host[" + nodes + "] = {" + host + "};\n";
-        if (!o.refs.empty()) {
-            const std::string n = str(static_cast<int>(o.refs.size()));
-            out += b + "const vec2 refDaughter[" + n + "] = {" + refDaughter + "};\n";
-            out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
-        } else {   // no node kept: the whole match is the reference
-            out += b + "const auto& refDaughter = mother;\n" + b + "const auto& refHost = host;\n";
-        }
-        const std::string directed =
-            o.directed ? "std::make_pair(" + str(o.directed->first) + ", " + str(o.directed->second) + ")" : "std::nullopt";
-        out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost);\n";
-        for (const auto& t : o.targets) {
-            const std::string si = str(t.daughterNode);
-            out += b + "placed[" + si + "] = frame.place(" + vec(t.sketch) + ");\n";
-            out += b + "if (!std::isfinite(placed[" + si + "]->x) || !std::isfinite(placed[" + si + "]->y)) throw PlacedError(" +
-                   str(places_.add(t.span)) + ", " + cppString(t.message) + ");\n";
-        }
-        return out + in + "}\n";
-    }
-
     const ir::Program& prog_;
     const ir::Rule& r_;
     std::string ri_;
     int firstDaughter_;
     ExprGen& gen_;
-    Places& places_;
-    ConstantValues& constants_;
+    RewritePrinter rewrite_;
     lower::MatchProgram match_;
     // What the runtime knows of the rule, as its generic repair reads it
     // (RuleSet::repair): the inlined repair reads the same.

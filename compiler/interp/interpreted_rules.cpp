@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "g2d/placement.hpp"
 #include "lower/rule_facts.hpp"
 
 namespace g2d::interp {
@@ -208,85 +207,14 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     p.nodes.assign(m.nodes, m.nodes + r.nodes.size());
     p.edges.assign(m.edges, m.edges + r.edges.size());
     p.registers.assign(program.registers.size(), rt::Value{});
-    placed_.assign(static_cast<std::size_t>(program.nodeHandles), std::nullopt);
-    f.placed = &placed_;
-    for (const auto& op : program.prepare) {
-        std::visit(lower::Overloaded{
-                       [&](const lower::EvalLocal& o) { locals_[o.slot] = evaluate(*o.value, f); },
-                       [&](const lower::Place& o) { place(o, m, g); },
-                       [&](const lower::Eval& o) { p.registers[o.reg] = evaluate(*o.value, f); },
-                       [&](const lower::EvalPosition& o) {
-                           const rt::vec2 pos = evaluateVec(*o.value, f);
-                           if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(o.value->span, o.message);
-                           p.registers[o.reg] = pos;
-                       },
-                       [&](const lower::TakePlaced& o) { p.registers[o.reg] = *placed_[o.daughterNode]; },
-                   },
-                   op);
-    }
+    executor_.prepare(program, m, g, f, p.registers);
     ++pendingCount_;
-}
-
-void InterpretedRules::place(const lower::Place& o, rt::Match m, const rt::Graph& g) {
-    std::vector<rt::vec2> mother, host, refDaughter, refHost;
-    for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
-        mother.push_back({o.motherSketch[i].x, o.motherSketch[i].y});
-        host.push_back(g.pos(m.nodes[i]));
-    }
-    for (const auto& [sketch, node] : o.refs) {
-        refDaughter.push_back({sketch.x, sketch.y});
-        refHost.push_back(host[static_cast<std::size_t>(node)]);
-    }
-    if (refDaughter.empty()) {
-        refDaughter = mother;
-        refHost = host;
-    }
-    const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost);
-    for (const auto& t : o.targets) {
-        const rt::vec2 pos = frame.place({t.sketch.x, t.sketch.y});
-        if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(t.span, t.message);
-        placed_[t.daughterNode] = pos;
-    }
 }
 
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (std::size_t k = 0; k < pendingCount_; ++k) {
         Prepared& p = pending_[k];
-        const lower::RewriteProgram& program = rewrites_[p.rule][p.daughter];
-        auto value = [&](const lower::Operand& v) { return v.reg >= 0 ? std::move(p.registers[v.reg]) : fromLiteral(v.literal->value); };
-        auto& nodes = hostOf_;
-        auto& edges = edgeOf_;
-        nodes.assign(static_cast<std::size_t>(program.nodeHandles), kNoId);
-        edges.assign(static_cast<std::size_t>(program.edgeHandles), kNoId);
-        for (const auto& op : program.commit) {
-            std::visit(lower::Overloaded{
-                           [&](const lower::DeleteEdge& o) { g.removeEdge(p.edges[o.matchEdge]); },
-                           [&](const lower::BindNode& o) { nodes[o.handle] = p.nodes[o.matchNode]; },
-                           [&](const lower::CreateNode& o) {
-                               nodes[o.handle] = g.addNode(o.kind, std::get<rt::vec2>(p.registers[o.posReg]), step);
-                               for (const auto& w : o.attrs) g.initNodeAttr(nodes[o.handle], w.attr, value(w.value));
-                           },
-                           [&](const lower::Rewire& o) { g.reconnectEdge(p.edges[o.matchEdge], nodes[o.src], nodes[o.dst]); },
-                           [&](const lower::DeleteNode& o) { g.removeNode(p.nodes[o.matchNode]); },
-                           [&](const lower::SetPos& o) { g.setPos(nodes[o.handle], std::get<rt::vec2>(p.registers[o.reg])); },
-                           [&](const lower::SetNodeAttr& o) { g.initNodeAttr(nodes[o.handle], o.write.attr, value(o.write.value)); },
-                           [&](const lower::TouchNodeValues& o) { g.touchNodeValues(nodes[o.handle]); },
-                           [&](const lower::SetNodeStyle& o) {
-                               g.setNodeStyle(nodes[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
-                           },
-                           [&](const lower::BindEdge& o) { edges[o.handle] = p.edges[o.matchEdge]; },
-                           [&](const lower::SetEdgeAttr& o) { g.initEdgeAttr(edges[o.handle], o.write.attr, value(o.write.value)); },
-                           [&](const lower::TouchEdge& o) { g.touchEdgeItself(edges[o.handle]); },
-                           [&](const lower::CreateEdge& o) {
-                               edges[o.handle] = g.addEdge(o.kind, nodes[o.src], nodes[o.dst], step);
-                               for (const auto& w : o.attrs) g.initEdgeAttr(edges[o.handle], w.attr, value(w.value));
-                           },
-                           [&](const lower::SetEdgeStyle& o) {
-                               g.setEdgeStyle(edges[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
-                           },
-                       },
-                       op);
-        }
+        executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data()}, p.registers, g, step);
     }
     pendingCount_ = 0;
 }

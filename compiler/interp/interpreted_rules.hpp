@@ -6,6 +6,7 @@
 
 #include "g2d/derivation.hpp"
 #include "interp/program_state.hpp"
+#include "interp/rewrite_executor.hpp"
 #include "lower/match_program.hpp"
 #include "lower/rewrite_program.hpp"
 
@@ -50,7 +51,6 @@ private:
     // While findAnchored keeps only matches binding a new edge: false where
     // the lowering placed the test and no bound pattern edge is new.
     bool keptByNewEdgeGate(bool gateHere) const;
-    void place(const lower::Place& o, rt::Match m, const rt::Graph& g);
 
     const ProgramState& st_;
     std::vector<rt::RuleInfo> infos_;
@@ -58,9 +58,7 @@ private:
     std::vector<lower::MatchProgram> matches_;   // per rule
     std::vector<Prepared> pending_;   // the first pendingCount_ are in use
     std::size_t pendingCount_ = 0;
-    std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles
-    std::vector<rt::EdgeId> edgeOf_;   // and edge handles
-    std::vector<std::optional<rt::vec2>> placed_;
+    RewriteExecutor executor_;
     std::vector<rt::NodeId> boundNodes_;
     std::vector<rt::EdgeId> boundEdges_;
     rt::EdgeId newEdgesFrom_ = rt::kNoId;

@@ -32,8 +32,7 @@ InterpretedRun::InterpretedRun(const ir::Program& prog, const SourceManager* sou
     : prog_(prog), sources_(sources), params_(paramSpecs(prog)), schema_(interp::jsonSchema(prog)) {}
 
 void InterpretedRun::start(const std::vector<rt::Value>& params, rt::Rng& rng) {
-    state_ = initState(prog_, params, rng);
-    graph_ = buildAxiom(state_, rng);
+    graph_ = startRun(prog_, params, rng, state_);
     rules_ = std::make_unique<InterpretedRules>(state_);
 }
 

@@ -1,5 +1,8 @@
 #include "interp/program_state.hpp"
 
+#include "interp/rewrite_executor.hpp"
+#include "lower/start_program.hpp"
+
 namespace g2d::interp {
 
 EvalFrame ProgramState::frame(rt::Rng* rng) const {
@@ -11,53 +14,36 @@ EvalFrame ProgramState::frame(rt::Rng* rng) const {
     return f;
 }
 
-ProgramState initState(const ir::Program& prog, std::vector<rt::Value> params, rt::Rng& rng) {
-    ProgramState st;
-    st.prog = &prog;
-    st.params = std::move(params);
-    for (const auto& c : prog.consts) {
-        EvalFrame f = st.frame(&rng);
-        st.consts.push_back(c.folded ? fromLiteral(*c.folded) : evaluate(c.value, f));
-    }
-    for (const auto& k : prog.kinds) {
-        std::vector<rt::Value> defaults;
-        for (const auto& a : k.attrs) {
-            EvalFrame f = st.frame(&rng);
-            defaults.push_back(evaluate(a.defaultValue, f));
-        }
-        st.kindDefaults.push_back(std::move(defaults));
-    }
-    return st;
-}
-
 std::vector<rt::KindInfo> kindInfos(const ir::Program& prog) {
     std::vector<rt::KindInfo> out;
     for (const auto& k : prog.kinds) out.push_back(rt::KindInfo{k.cls, k.directed});
     return out;
 }
 
-rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng) {
-    const ir::Program& prog = *st.prog;
+rt::Graph startRun(const ir::Program& prog, std::vector<rt::Value> params, rt::Rng& rng, ProgramState& st) {
+    const lower::StartProgram start = lower::lowerStart(prog);
+    st = ProgramState{};
+    st.prog = &prog;
+    st.params = std::move(params);
+    st.consts.resize(prog.consts.size());
+    for (const auto& k : prog.kinds) st.kindDefaults.emplace_back(k.attrs.size());
+    for (const auto& op : start.init) {
+        EvalFrame f = st.frame(&rng);
+        std::visit(lower::Overloaded{
+                       [&](const lower::InitConst& o) {
+                           st.consts[o.index] = o.decl->folded ? fromLiteral(*o.decl->folded) : evaluate(o.decl->value, f);
+                       },
+                       [&](const lower::InitDefault& o) { st.kindDefaults[o.kind][o.attr] = evaluate(*o.value, f); },
+                   },
+                   op);
+    }
     rt::Graph g(kindInfos(prog), prog.styleProps);
     for (std::size_t k = 0; k < st.kindDefaults.size(); ++k) g.setKindDefaults(static_cast<int>(k), st.kindDefaults[k]);
-    std::vector<rt::NodeId> ids;
-    for (const auto& n : prog.axiom.nodes) {
-        EvalFrame f = st.frame(&rng);
-        rt::vec2 pos{0, 0};
-        if (n.position) pos = evaluateVec(*n.position, f);
-        std::vector<rt::Value> attrs = st.kindDefaults[n.kind];
-        for (const auto& a : n.assigns) attrs[a.attr] = evaluate(a.value, f);
-        const rt::NodeId id = g.addNode(n.kind, pos, 0, std::move(attrs));
-        for (const auto& s : n.styles) g.setNodeStyle(id, static_cast<rt::StyleProp>(s.propId), evaluate(s.value, f));
-        ids.push_back(id);
-    }
-    for (const auto& e : prog.axiom.edges) {
-        EvalFrame f = st.frame(&rng);
-        std::vector<rt::Value> attrs = st.kindDefaults[e.kind];
-        for (const auto& a : e.assigns) attrs[a.attr] = evaluate(a.value, f);
-        const rt::EdgeId id = g.addEdge(e.kind, ids[e.src], ids[e.dst], 0, std::move(attrs));
-        for (const auto& s : e.styles) g.setEdgeStyle(id, static_cast<rt::StyleProp>(s.propId), evaluate(s.value, f));
-    }
+    EvalFrame f = st.frame(&rng);
+    std::vector<rt::Value> registers(start.axiom.registers.size());
+    RewriteExecutor axiom;
+    axiom.prepare(start.axiom, rt::Match{}, g, f, registers);
+    axiom.commit(start.axiom, rt::Match{}, registers, g, 0);
     return g;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// What a run computes once, before the first step: parameter values,
-// constants (in declaration order, drawing from the generator), the kinds'
-// attribute defaults, and the axiom graph.
+// What a run computes once, before the first step (lower::StartProgram):
+// parameter values, constants, the kinds' attribute defaults, and the axiom
+// graph.
 #include <vector>
 
 #include "g2d/graph.hpp"
@@ -17,10 +17,8 @@ struct ProgramState {
     EvalFrame frame(rt::Rng* rng) const;
 };
 
-// Throws EvalError.
-ProgramState initState(const ir::Program& prog, std::vector<rt::Value> params, rt::Rng& rng);
 std::vector<rt::KindInfo> kindInfos(const ir::Program& prog);
-// Builds the axiom: nodes in order (position, then attributes), then edges.
-rt::Graph buildAxiom(const ProgramState& st, rt::Rng& rng);
+// Runs the program's start: fills `st` and returns the axiom graph. Throws EvalError.
+rt::Graph startRun(const ir::Program& prog, std::vector<rt::Value> params, rt::Rng& rng, ProgramState& st);
 
 }  // namespace g2d::interp

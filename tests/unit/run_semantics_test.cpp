@@ -167,8 +167,8 @@ TEST_CASE("the ordering option keeps the sketch's x and y order", "[run][ordered
         auto c = compile(square + "rule R " + options + " " + pattern);
         REQUIRE(c.program);
         rt::Rng rng(1);
-        auto st = interp::initState(*c.program, interp::defaultParams(*c.program), rng);
-        rt::Graph g = interp::buildAxiom(st, rng);
+        interp::ProgramState st;
+        rt::Graph g = interp::startRun(*c.program, interp::defaultParams(*c.program), rng, st);
         interp::InterpretedRules rules(st);
         rt::MatchBuffer matches;
         matches.reset(3, 2);

@@ -34,8 +34,8 @@ std::string prelude() {
 }
 
 InterpreterStart startInterpreter(const ir::Program& prog, rt::Rng& rng) {
-    auto state = interp::initState(prog, interp::defaultParams(prog), rng);
-    rt::Graph graph = interp::buildAxiom(state, rng);
+    interp::ProgramState state;
+    rt::Graph graph = interp::startRun(prog, interp::defaultParams(prog), rng, state);
     return InterpreterStart{std::move(state), std::move(graph)};
 }
 

@@ -15,6 +15,7 @@
 #include "g2d/builtins.hpp"
 #include "g2d/deadline.hpp"
 #include "g2d/derivation.hpp"
+#include "g2d/draw_items.hpp"
 #include "g2d/grammar_run.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/grow_array.hpp"

@@ -1,0 +1,144 @@
+#include "emit/cpp_rewrite.hpp"
+
+namespace g2d::emit {
+
+namespace {
+
+std::string str(int i) { return std::to_string(i); }
+std::string node(int h) { return "h" + str(h); }
+std::string edge(int h) { return "k" + str(h); }
+std::string reg(int r) { return RewritePrinter::reg(r); }
+// An attribute's value at commit time: a literal as it is, a register as prepare kept it.
+std::string attrValue(const lower::Operand& v) {
+    return v.reg >= 0 ? reg(v.reg) : cppLiteral(v.literal->value, v.literal->type);
+}
+// A new node's position: its register, or the origin (an axiom node without `at`).
+std::string position(int posReg) { return posReg >= 0 ? reg(posReg) : "vec2(0.0, 0.0)"; }
+
+}  // namespace
+
+std::string RewritePrinter::prepare(const lower::RewriteProgram& p, const ExprContext& ctx, const std::string& in) {
+    std::string out;
+    if (p.placement) out += in + "std::optional<vec2> placed[" + str(p.nodeHandles) + "];\n";
+    for (const auto& op : p.prepare) {
+        std::visit(lower::Overloaded{
+                       [&](const lower::EvalLocal& o) {
+                           const std::string v = gen_.gen(*o.value, ctx, out, in);
+                           const std::string l = "L" + str(o.slot);
+                           out += in + "const " + cppType(o.value->type) + " " + l + " = " + v + ";\n" + in + "(void)" + l + ";\n";
+                       },
+                       [&](const lower::Place& o) { out += placement(o, in); },
+                       [&](const lower::Eval& o) {
+                           const std::string v = gen_.gen(*o.value, ctx, out, in);
+                           out += in + "const auto " + reg(o.reg) + " = " + v + ";\n";
+                       },
+                       [&](const lower::EvalPosition& o) {
+                           const std::string v = gen_.gen(*o.value, ctx, out, in);
+                           out += in + "const vec2 " + reg(o.reg) + " = " + v + ";\n";
+                           out += in + "if (!std::isfinite(" + reg(o.reg) + ".x) || !std::isfinite(" + reg(o.reg) + ".y)) throw PlacedError(" +
+                                  str(places_.add(o.value->span)) + ", " + cppString(o.message) + ");\n";
+                       },
+                       [&](const lower::TakePlaced& o) { out += in + "const vec2 " + reg(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n"; },
+                   },
+                   op);
+    }
+    return out;
+}
+
+std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::string& c) {
+    std::string commit = c + "(void)step;\n" + c + "(void)G;\n";
+    for (const auto& op : p.commit) {
+        std::visit(lower::Overloaded{
+                       [&](const lower::DeleteEdge& o) { commit += c + "G.removeEdge(m.edges[" + str(o.matchEdge) + "]);\n"; },
+                       [&](const lower::BindNode& o) {
+                           commit += c + "const NodeId " + node(o.handle) + " = m.nodes[" + str(o.matchNode) + "];\n" + c + "(void)" + node(o.handle) + ";\n";
+                       },
+                       [&](const lower::CreateNode& o) {
+                           commit += c + "const NodeId " + node(o.handle) + " = G.addNode(" + str(o.kind) + ", " + position(o.posReg) + ", step);\n" + c +
+                                     "(void)" + node(o.handle) + ";\n" + record(o.kind, o.attrs, node(o.handle), ir::ElemClass::Node, c);
+                       },
+                       [&](const lower::Rewire& o) {
+                           commit += c + "G.reconnectEdge(m.edges[" + str(o.matchEdge) + "], " + node(o.src) + ", " + node(o.dst) + ");\n";
+                       },
+                       [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
+                       [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + reg(o.reg) + ");\n"; },
+                       [&](const lower::SetNodeAttr& o) {
+                           commit += c + gen_.attrAccess(o.kind, node(o.handle), ir::ElemClass::Node, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                       },
+                       [&](const lower::TouchNodeValues& o) { commit += c + "G.touchNodeValues(" + node(o.handle) + ");\n"; },
+                       [&](const lower::SetNodeStyle& o) {
+                           commit += c + "G.setNodeStyle(" + node(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                       },
+                       [&](const lower::BindEdge& o) {
+                           commit += c + "const EdgeId " + edge(o.handle) + " = m.edges[" + str(o.matchEdge) + "];\n" + c + "(void)" + edge(o.handle) + ";\n";
+                       },
+                       [&](const lower::SetEdgeAttr& o) {
+                           commit += c + gen_.attrAccess(o.kind, edge(o.handle), ir::ElemClass::Edge, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                       },
+                       [&](const lower::TouchEdge& o) { commit += c + "G.touchEdgeItself(" + edge(o.handle) + ");\n"; },
+                       [&](const lower::CreateEdge& o) {
+                           commit += c + "const EdgeId " + edge(o.handle) + " = G.addEdge(" + str(o.kind) + ", " + node(o.src) + ", " + node(o.dst) +
+                                     ", step);\n" + c + "(void)" + edge(o.handle) + ";\n" + record(o.kind, o.attrs, edge(o.handle), ir::ElemClass::Edge, c);
+                       },
+                       [&](const lower::SetEdgeStyle& o) {
+                           commit += c + "G.setEdgeStyle(" + edge(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                       },
+                   },
+                   op);
+    }
+    return commit;
+}
+
+// A style's value: a literal is one shared constant of the grammar.
+std::string RewritePrinter::styleValue(const lower::Operand& v) {
+    if (v.reg < 0) return constants_.add(valueInit(v.type, cppLiteral(v.literal->value, v.literal->type)));
+    return valueOf(v.type, reg(v.reg));
+}
+
+// A new element's attribute record: the kind's defaults, then the rewrite's values.
+std::string RewritePrinter::record(int kind, const std::vector<lower::AttrWrite>& attrs, const std::string& element, ir::ElemClass cls,
+                   const std::string& c) const {
+    if (prog_.kinds[kind].attrs.empty()) return "";
+    std::string out = c + "{\n" + c + "    Kind" + str(kind) + " rec = default_" + str(kind) + ";\n";
+    for (const auto& w : attrs) out += c + "    rec.a" + str(w.attr) + " = " + attrValue(w.value) + ";\n";
+    return out + c + "    G.set" + (cls == ir::ElemClass::Edge ? "Edge" : "Node") + "Slot(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
+}
+
+std::string RewritePrinter::placement(const lower::Place& o, const std::string& in) {
+    std::string out = in + "{\n";
+    const std::string b = in + "    ";
+    // Fixed-size arrays: placement allocates nothing per step.
+    std::string mother, host, refDaughter, refHost;
+    auto item = [](std::string& list, const std::string& v) { list += (list.empty() ? "" : ", ") + v; };
+    auto vec = [](const ir::Vec2& v) { return cppLiteral(ir::Value{v}, ir::kVec2Type); };
+    for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
+        item(mother, vec(o.motherSketch[i]));
+        item(host, "g.pos(m.nodes[" + str(static_cast<int>(i)) + "])");
+    }
+    for (const auto& [sketch, node] : o.refs) {
+        item(refDaughter, vec(sketch));
+        item(refHost, "host[" + str(node) + "]");
+    }
+    const std::string nodes = str(static_cast<int>(o.motherSketch.size()));
+    out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
+    out += b + "const vec2 host[" + nodes + "] = {" + host + "};\n";
+    if (!o.refs.empty()) {
+        const std::string n = str(static_cast<int>(o.refs.size()));
+        out += b + "const vec2 refDaughter[" + n + "] = {" + refDaughter + "};\n";
+        out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
+    } else {   // no node kept: the whole match is the reference
+        out += b + "const auto& refDaughter = mother;\n" + b + "const auto& refHost = host;\n";
+    }
+    const std::string directed =
+        o.directed ? "std::make_pair(" + str(o.directed->first) + ", " + str(o.directed->second) + ")" : "std::nullopt";
+    out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost);\n";
+    for (const auto& t : o.targets) {
+        const std::string si = str(t.daughterNode);
+        out += b + "placed[" + si + "] = frame.place(" + vec(t.sketch) + ");\n";
+        out += b + "if (!std::isfinite(placed[" + si + "]->x) || !std::isfinite(placed[" + si + "]->y)) throw PlacedError(" +
+               str(places_.add(t.span)) + ", " + cppString(t.message) + ");\n";
+    }
+    return out + in + "}\n";
+}
+
+}  // namespace g2d::emit

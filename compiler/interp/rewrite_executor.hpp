@@ -1,0 +1,32 @@
+#pragma once
+// Executes a lowered rewrite program (lower::RewriteProgram) operation by
+// operation: prepare reads the graph into registers, commit writes it. The
+// rules' daughters and the axiom (a rewrite of the empty graph) both run here.
+#include <optional>
+#include <vector>
+
+#include "g2d/graph.hpp"
+#include "g2d/match_set.hpp"
+#include "interp/evaluator.hpp"
+#include "lower/rewrite_program.hpp"
+
+namespace g2d::interp {
+
+class RewriteExecutor {
+public:
+    // `f` is the frame of the rewrite's expressions (match, locals, generator);
+    // `registers` must hold p.registers.size() values.
+    void prepare(const lower::RewriteProgram& p, rt::Match m, const rt::Graph& g, EvalFrame& f,
+                 std::vector<rt::Value>& registers);
+    // `m` is the match prepare saw (the graph changes only here).
+    void commit(const lower::RewriteProgram& p, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g, long long step);
+
+private:
+    void place(const lower::Place& o, rt::Match m, const rt::Graph& g);
+
+    std::vector<std::optional<rt::vec2>> placed_;   // automatic positions, by daughter node
+    std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles
+    std::vector<rt::EdgeId> edgeOf_;   // and edge handles
+};
+
+}  // namespace g2d::interp
