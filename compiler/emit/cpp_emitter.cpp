@@ -349,7 +349,7 @@ private:
             return t + "                default: break;\n                }\n";
         });
         out += "            (void)node; (void)host; (void)g; (void)out; (void)newFrom;\n" + catchOp + "    }\n\n";
-        out += "    void repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer&) override {\n" + names;
+        out += "    void repair(std::size_t rule, const Graph& g, const RepairArea& area, const RepairAnchor*, MatchSet& set, MatchBuffer&) override {\n" + names;
         out += "        current_ = names[rule];\n        try {\n";
         out += perRule("            ", [&](std::size_t r) { return "                repair_" + str(static_cast<long long>(r)) + "(g, area, set);\n"; });
         out += "            (void)g; (void)area; (void)set;\n" + catchOp + "    }\n\n";

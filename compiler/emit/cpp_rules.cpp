@@ -19,8 +19,7 @@ public:
     RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places,
                 ConstantValues& constants)
         : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen),
-          rewrite_(prog, gen, places, constants), match_(lower::lowerMatch(prog, r)), facts_(lower::ruleFacts(prog, r)),
-          shape_(rt::incidenceShape(static_cast<int>(r.nodes.size()), facts_.info.readsIncidence, facts_.info.readDirections)) {}
+          rewrite_(prog, gen, places, constants), match_(lower::lowerMatch(prog, r)), facts_(lower::ruleFacts(prog, r)) {}
 
     std::string emit() {
         std::string out;
@@ -217,48 +216,39 @@ private:
 
     // RuleSet::repair for this rule: the anchored searches inlined, in the
     // generic loop's order (area nodes, then pattern nodes), adding straight
-    // into the match set.
+    // into the match set; its decisions are RepairArea's, on the anchors
+    // both back ends take from rt::repairAnchors.
     std::string repair() {
-        std::string out = "    void repair_" + ri_ + "(const Graph& g, const RepairArea& area, MatchSet& set) {\n";
+        const std::vector<rt::RepairAnchor> anchors = rt::repairAnchors(facts_.info);
+        const std::string table = "kAnchors_" + ri_;
+        std::string out = "    static constexpr RepairAnchor " + table + "[] = {";
+        for (std::size_t p = 0; p < anchors.size(); ++p) {
+            const auto& a = anchors[p];
+            out += std::string(p ? ", " : "") + "{" + str(a.kind) + ", " + str(a.directions) + ", " + (a.readsAllEdges ? "true" : "false") +
+                   ", " + (a.newHostAddsNothing ? "true" : "false") + "}";
+        }
+        if (anchors.empty()) out += "{}";
+        out += "};\n";
+        out += "    void repair_" + ri_ + "(const Graph& g, const RepairArea& area, MatchSet& set) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
         std::string nacTest = "true";
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
         out += "        for (const NodeId h : area.nodes) {\n            if (!g.nodeAlive(h)) continue;\n";
         out += "            const bool full = area.full(h);\n            const int hk = g.nodeKind(h);\n            (void)full;\n            (void)hk;\n";
         for (int p = 0; p < static_cast<int>(r_.nodes.size()); ++p) {
-            // A node whose edges alone changed only where p reads those lists
-            // (every area node has a list changed, or changed itself).
-            const int lists = shape_.directions[static_cast<std::size_t>(p)];
-            std::string cond = lists == (ir::kReadsOutEdges | ir::kReadsInEdges) ? "true"
-                               : lists != 0 ? "(full || (area.edgeChanges(h) & " + str(lists) + ") != 0)"
-                                            : "full";
-            if (r_.nodes[p].kind >= 0) cond += " && hk == " + str(r_.nodes[p].kind);
+            const std::string anchor = table + "[" + str(p) + "]";
+            std::string cond = "area.searchesAt(h, full, hk, " + anchor + ")";
             if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(p)], "h"); !kinds.empty())
                 cond += " && " + kinds;
-            // At a node the step created, an earlier pattern node adds every match (ir::Rule::newHostAddsNothing).
-            const auto& addsNothing = facts_.info.newHostAddsNothing;
-            if (static_cast<std::size_t>(p) < addsNothing.size() && addsNothing[static_cast<std::size_t>(p)])
-                cond += " && h < area.newNodesFrom";
             out += "            if (" + cond + ") {\n";
             out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
             out += "                n[" + str(p) + "] = h;\n";
-            // Kept only from the first of its anchors that adds it
-            // (RepairArea::bindsNewEdge).
-            std::string searchedFirst = "true", staleFirst = "true";
-            for (int q = 0; q < p; ++q) {
-                const auto sq = static_cast<std::size_t>(q);
-                searchedFirst += " && !area.searched(" + str(shape_.directions[sq]) + ", n[" + str(q) + "])";
-                staleFirst += " && !area.stale(n[" + str(q) + "], " + (shape_.reads[sq] == rt::Incidence::AllEdges ? "true" : "false") + ")";
-            }
-            const std::string fresh = bindsNewEdge("area.newEdgesFrom");
-            const std::string first = p == 0 ? "" : " && ((" + fresh + ") ? (" + searchedFirst + ") : (" + staleFirst + "))";
-            // From a node whose edges alone changed, reading only the
-            // pattern's edges: only matches binding a new edge, dropped as
-            // soon as the last edge is bound.
-            if (shape_.reads[static_cast<std::size_t>(p)] == rt::Incidence::PatternEdges) newEdgeGate_ = "!full && !(" + fresh + ")";
+            out += "                const EdgeId newFrom = area.newEdgesOnly(full, " + anchor + ");\n                (void)newFrom;\n";
+            newEdgeGate_ = "newFrom != kNoId && !(" + bindsNewEdge("newFrom") + ")";
             std::string body;
             steps(match_.anchored[static_cast<std::size_t>(p)], 0, nullptr, "@@COMPLETE@@", body, "                ");
             newEdgeGate_.clear();
+            const std::string first = p == 0 ? "" : " && area.firstAnchor(" + str(p) + ", n, e, " + str(static_cast<int>(r_.edges.size())) + ", " + table + ")";
             body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, g);\n");
             out += body + "            }\n";
         }
@@ -325,7 +315,6 @@ private:
     // What the runtime knows of the rule, as its generic repair reads it
     // (RuleSet::repair): the inlined repair reads the same.
     lower::RuleFacts facts_;
-    rt::IncidenceShape shape_;
 };
 
 }  // namespace

@@ -44,6 +44,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         const int nn = static_cast<int>(info.nodeKinds.size());
         sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence, info.readDirections);
         radius_.push_back(info.radius);
+        anchors_.push_back(repairAnchors(info));
         refill(r, g);
         byRadius_.push_back(r);
         retired_.push_back(0);
@@ -180,7 +181,7 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
             if (area.full(n)) set.removeTouching(n);
             else set.removeBrokenAt(n, area.edgeChanges(n), g);
         }
-        rules_.repair(r, g, area, set, found_);
+        rules_.repair(r, g, area, anchors_[r].data(), set, found_);
     }
     setsRepaired_ += repaired;
     setsSkipped_ += liveRules_ - repaired;
@@ -205,31 +206,20 @@ void IncrementalMatches::refill(std::size_t rule, const Graph& g) {
     for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
 }
 
-void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer& scratch) {
-    const std::vector<int>& kinds = info(rule).nodeKinds;
-    const std::vector<std::uint8_t>& newAddsNothing = info(rule).newHostAddsNothing;
+void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, const RepairAnchor* anchors, MatchSet& set,
+                     MatchBuffer& scratch) {
     const int nn = set.nodes();
     for (NodeId h : area.nodes) {
         if (!g.nodeAlive(h)) continue;
         const bool full = area.full(h);
+        const int hostKind = g.nodeKind(h);
         for (int p = 0; p < nn; ++p) {
-            if (!full && (set.readDirections(p) & area.edgeChanges(h)) == 0) continue;
-            const int kind = kinds[static_cast<std::size_t>(p)];
-            if (kind >= 0 && kind != g.nodeKind(h)) continue;
-            if (h >= area.newNodesFrom && !newAddsNothing.empty() && newAddsNothing[static_cast<std::size_t>(p)]) continue;
-            // Only the edges changed, and this pattern node reads only its own
-            // edges: only matches binding a new edge are added from here.
-            const bool newEdgesOnly = !full && !set.readsAllEdges(p);
+            if (!area.searchesAt(h, full, hostKind, anchors[p])) continue;
             scratch.reset(nn, set.edges());
-            findAnchored(rule, g, p, h, scratch, newEdgesOnly ? area.newEdgesFrom : kNoId);
+            findAnchored(rule, g, p, h, scratch, area.newEdgesOnly(full, anchors[p]));
             for (std::size_t i = 0; i < scratch.size(); ++i) {
                 const std::uint32_t* ids = scratch.ids(i);
-                const bool fresh = area.bindsNewEdge(ids + nn, set.edges());
-                // Keep it only from the first of its anchors that adds it.
-                bool first = true;
-                for (int q = 0; q < p && first; ++q)
-                    first = fresh ? !area.searched(set.readDirections(q), ids[q]) : !area.stale(ids[q], set.readsAllEdges(q));
-                if (first) set.add(ids, g);
+                if (area.firstAnchor(p, ids, ids + nn, set.edges(), anchors)) set.add(ids, g);
             }
         }
     }

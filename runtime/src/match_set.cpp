@@ -31,6 +31,16 @@ IncidenceShape incidenceShape(int nodes, const std::vector<Incidence>& reads, co
     return out;
 }
 
+std::vector<RepairAnchor> repairAnchors(const RuleInfo& info) {
+    const int nn = static_cast<int>(info.nodeKinds.size());
+    const IncidenceShape shape = incidenceShape(nn, info.readsIncidence, info.readDirections);
+    std::vector<RepairAnchor> out;
+    for (std::size_t p = 0; p < info.nodeKinds.size(); ++p)
+        out.push_back(RepairAnchor{info.nodeKinds[p], shape.directions[p], shape.reads[p] == Incidence::AllEdges,
+                                   p < info.newHostAddsNothing.size() && info.newHostAddsNothing[p] != 0});
+    return out;
+}
+
 long long MatchSet::ageSum(Id id) const {
     long long sum;
     std::memcpy(&sum, data(id) + stride_ - 2, sizeof sum);

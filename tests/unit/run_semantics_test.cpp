@@ -452,11 +452,12 @@ public:
         ++anchored[rule].back();
         inner_.findAnchored(rule, g, node, host, out, newEdgesFrom);
     }
-    void repair(std::size_t rule, const rt::Graph& g, const rt::RepairArea& area, rt::MatchSet& set, rt::MatchBuffer& scratch) override {
+    void repair(std::size_t rule, const rt::Graph& g, const rt::RepairArea& area, const rt::RepairAnchor* anchors, rt::MatchSet& set,
+                rt::MatchBuffer& scratch) override {
         ++repairs[rule];
         const std::size_t before = set.size();   // after the broken matches were dropped
         anchored[rule].push_back(0);
-        if (!forgetful) rt::RuleSet::repair(rule, g, area, set, scratch);   // the interpreter's (through findAnchored above)
+        if (!forgetful) rt::RuleSet::repair(rule, g, area, anchors, set, scratch);   // the interpreter's (through findAnchored above)
         added[rule].push_back(static_cast<long long>(set.size() - before));
     }
     void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override {

@@ -85,6 +85,16 @@ struct RuleInfo {
     std::vector<std::uint8_t> deletesNodes;         // per daughter: removes a node (and so its edges)
 };
 
+// What repair needs of one pattern node, from RuleInfo (repairAnchors):
+// the runtime's repair and generated repairs read the same.
+struct RepairAnchor {
+    int kind = -1;                      // -1: any
+    std::uint8_t directions = 3;        // the host's edge lists it reads (RepairArea::kOut | kIn)
+    bool readsAllEdges = true;          // every edge at its host, not only the pattern's
+    bool newHostAddsNothing = false;    // RuleInfo::newHostAddsNothing
+};
+std::vector<RepairAnchor> repairAnchors(const RuleInfo& info);
+
 // The nodes around a step's changes whose matches a rule finds again
 // (IncrementalMatches): every node of `nodes` is marked in `seen` as
 // mark * 8 + 1 (search it at every pattern node) or mark * 8 + 2 * d, where
@@ -122,6 +132,29 @@ struct RepairArea {
         return false;
     }
     bool stale(NodeId h, bool readsAllEdges) const { return contains(h) && (full(h) || readsAllEdges); }
+
+    // The decisions of repair, for both back ends. Whether area node `h`
+    // (full: full(h); of kind hostKind) is searched at pattern node `a`:
+    // some list it reads changed (a node of the area changed itself or had
+    // a list change, so one reading both lists always qualifies), the kind
+    // fits, and a new host there can add something.
+    // (Inlined into generated repairs, where the anchors are constants.)
+    [[gnu::always_inline]] bool searchesAt(NodeId h, bool full, int hostKind, const RepairAnchor& a) const {
+        return (full || a.directions == (kOut | kIn) || (a.directions & edgeChanges(h)) != 0) &&
+               (a.kind < 0 || a.kind == hostKind) && !(a.newHostAddsNothing && h >= newNodesFrom);
+    }
+    // The search from there keeps only matches binding an edge from this id
+    // on (kNoId: every match): where only the node's edges changed and the
+    // pattern node reads only its own edges, the others were kept.
+    [[gnu::always_inline]] EdgeId newEdgesOnly(bool full, const RepairAnchor& a) const { return !full && !a.readsAllEdges ? newEdgesFrom : kNoId; }
+    // Whether a match found at pattern node `p` is added there: only from the
+    // first of its anchors that adds it (see bindsNewEdge).
+    [[gnu::always_inline]] bool firstAnchor(int p, const NodeId* n, const EdgeId* e, int edges, const RepairAnchor* anchors) const {
+        const bool fresh = bindsNewEdge(e, edges);
+        for (int q = 0; q < p; ++q)
+            if (fresh ? searched(anchors[q].directions, n[q]) : stale(n[q], anchors[q].readsAllEdges)) return false;
+        return true;
+    }
 };
 
 // Elements a chosen daughter deletes or changes (for parallel steps).
@@ -156,7 +189,8 @@ public:
     // findAnchored's order (so every back end fills the set alike). This one
     // runs findAnchored per (node, pattern node) through `scratch`;
     // generated code replaces it with inlined searches.
-    virtual void repair(std::size_t rule, const Graph& g, const RepairArea& area, MatchSet& set, MatchBuffer& scratch);
+    virtual void repair(std::size_t rule, const Graph& g, const RepairArea& area, const RepairAnchor* anchors, MatchSet& set,
+                        MatchBuffer& scratch);
     // What applying `daughter` to `m` deletes or changes, appended to `out`.
     virtual void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& out) const = 0;
     // Evaluates everything the daughter computes, on the graph as it is now

@@ -99,6 +99,7 @@ private:
     RuleSet& rules_;
     std::vector<MatchSet> sets_;
     std::vector<int> radius_;                // per rule (RuleInfo::radius)
+    std::vector<std::vector<RepairAnchor>> anchors_;   // per rule, per pattern node
     std::vector<std::uint8_t> retired_;      // per rule (bytes: read per rule per step)
     // The rules by radius (stable).
     std::vector<std::size_t> byRadius_;
