@@ -16,6 +16,7 @@
 #include "g2d/builtins.hpp"
 #include "g2d/elem_class.hpp"
 #include "g2d/operators.hpp"
+#include "g2d/pick.hpp"
 
 namespace g2d::ir {
 
@@ -212,28 +213,12 @@ struct Condition {
     std::vector<ElemRef> deps;         // the pattern elements it reads
 };
 
-// One step of a search plan: bind one more pattern element, or test.
-struct PlanStep {
-    enum class Op {
-        ScanNodes,    // node := each host node of its kind (or any node for a wildcard)
-        ExtendEdge,   // edge := each edge incident to bound node `from`; node := its other end
-        ConnectEdge,  // edge := each edge between two bound nodes
-        Check,        // evaluate conditions[condition]
-    } op = Op::ScanNodes;
-    int node = -1;
-    int edge = -1;
-    int from = -1;
-    bool fromIsSource = true;          // ExtendEdge: `from` is the edge's source
-    int condition = -1;
-};
-
 struct NegativeCondition {
     // Indices continue after the enclosing match's: node outerNodes+i is nodes[i].
     int outerNodes = 0, outerEdges = 0;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
     std::vector<Condition> conditions;
-    std::vector<PlanStep> plan;
     Span span;
 };
 
@@ -273,31 +258,10 @@ struct Daughter {
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     bool autoPlacement = false;        // some new node is placed automatically
-    // The kinds of the elements applying this daughter removes, adds or
-    // changes (a position, the kind, an edge's ends or attributes; not a
-    // style, which no condition reads), and the attributes it writes on
-    // kept nodes (valueKey; those alone leave a node's kind out of
-    // changedKinds). Sorted. Removing a node also removes its edges, of any
-    // kind: a rule reading degrees sees that through deletedNodes.
-    std::vector<int> changedKinds;
-    std::vector<long long> changedValues;
     Span span;
 };
 
-enum class Pick { Random, Oldest };
-
-// A node attribute as one number (Rule::readValues, Daughter::changedValues).
-inline long long valueKey(int kind, int attribute) { return static_cast<long long>(kind) << 32 | static_cast<unsigned>(attribute); }
-
-// What a pattern node's matches read of the edges at its host beyond what
-// the other pattern nodes read:
-inline constexpr std::uint8_t kReadsOutEdges = 1, kReadsInEdges = 2;
-
-enum class IncidenceRead {
-    None,          // nothing (another end reads the edges between them)
-    PatternEdges,  // the pattern's own edges: adding or removing others keeps its matches
-    AllEdges,      // every edge (degrees, negative conditions): any edge change may matter
-};
+using Pick = rt::Pick;   // g2d/pick.hpp
 
 struct Rule {
     std::string name;
@@ -308,54 +272,7 @@ struct Rule {
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
     std::vector<Condition> conditions;
-    std::vector<PlanStep> plan;
-    // anchoredPlans[i]: the search with node i already bound (incremental
-    // matching re-finds matches around the nodes a step changed).
-    std::vector<std::vector<PlanStep>> anchoredPlans;
     std::vector<NegativeCondition> nacs;
-    // How far (in edges) from a changed node a match of this rule can be
-    // affected: 0 without negative conditions (a match reads only its own
-    // elements), else the depth of the deepest negative-condition node;
-    // -1 when a negative condition has a part not connected to the match
-    // (then any change anywhere may matter).
-    int repairRadius = 0;
-    // Per match node: which changes among the host node's edges alone (an
-    // edge added or removed) can make or break a match binding it there.
-    // Every edge between two match nodes is read from one end only, so a
-    // hub's edge changes need not revisit every match binding the hub.
-    std::vector<IncidenceRead> readsIncidence;
-    // Per match node: which of its host's edge lists it reads, as
-    // kReadsOutEdges | kReadsInEdges (0 where readsIncidence is None). A node
-    // reading only the pattern's edges reads the directions of its pattern
-    // edges (an undirected one or a loop: both); one reading every edge,
-    // both. A host whose outgoing edges alone changed is then not searched
-    // again at a node reading only incoming ones, and vice versa: a path's
-    // split revisits the source's end only.
-    std::vector<std::uint8_t> readDirections;
-    // Per match node: a search anchored there at a node the step created
-    // cannot add a match, so repair skips it. Such a match binds one of the
-    // node's edges, all new, and is added from the first of its pattern
-    // nodes whose host is searched: an earlier pattern node joined to this
-    // one by a pattern edge and reading incidences is (both ends of a new
-    // edge are marked).
-    std::vector<bool> newHostAddsNothing;
-    // Per match node: the distinct kinds of its pattern edges, all of which a
-    // host must have had (rt::Graph::edgeKindsAt) to be searched there; empty
-    // where that test cannot skip anything (no pattern edges, or a grammar of
-    // one edge kind: every node with an edge has it).
-    std::vector<std::vector<int>> neededEdgeKinds;
-    // The kinds (node and edge kinds share Program::kinds' numbering) whose
-    // elements a change of can change this rule's matches: those of its
-    // pattern and its negative conditions (a wildcard node: every node kind;
-    // an edge without a kind: every edge kind), and every edge kind where a
-    // condition reads a degree (readsDegrees). Sorted.
-    std::vector<int> readKinds;
-    bool readsDegrees = false;
-    // The node attributes its conditions (and its negative conditions')
-    // read, as valueKey(kind, attribute). Sorted. A step that only writes
-    // other attributes of a node leaves the rule's matches binding it as
-    // they were.
-    std::vector<long long> readValues;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's
     std::vector<Daughter> daughters;
     int localSlots = 0;
@@ -368,7 +285,7 @@ struct PriorityConfig {
     Span span;
 };
 
-// A search slot (ir::PlanStep numbering): the rule's pattern node or edge,
+// A search slot (lower::PlanStep numbering): the rule's pattern node or edge,
 // or, past them, negative condition `nac`'s own.
 inline int slotNodeKind(const Rule& r, const NegativeCondition* nac, int i) {
     return i < static_cast<int>(r.nodes.size()) ? r.nodes[i].kind : nac->nodes[i - nac->outerNodes].kind;

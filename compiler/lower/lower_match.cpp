@@ -2,6 +2,7 @@
 
 #include "g2d/graph.hpp"
 #include "lower/match_program.hpp"
+#include "lower/search_plan.hpp"
 
 namespace g2d::lower {
 
@@ -9,14 +10,18 @@ namespace {
 
 class MatchLowering {
 public:
-    MatchLowering(const ir::Program& prog, const ir::Rule& rule) : prog_(prog), r_(rule) {}
+    MatchLowering(const ir::Program& prog, const ir::Rule& rule) : prog_(prog), r_(rule) {
+        int edgeKinds = 0;
+        for (const auto& k : prog.kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
+        neededEdgeKinds_ = lower::edgeKindsNeeded(rule, edgeKinds);
+    }
 
     MatchProgram lower() {
         MatchProgram p;
-        p.full = list(r_.plan, nullptr, {}, {});
+        p.full = list(buildSearchPlan(r_.nodes, r_.edges, r_.conditions, 0, 0, 0), nullptr, {}, {});
         for (std::size_t a = 0; a < r_.nodes.size(); ++a) {
             const int anchor = static_cast<int>(a);
-            p.anchored.push_back(list(r_.anchoredPlans[a], nullptr, {anchor}, {}));
+            p.anchored.push_back(list(buildSearchPlan(r_.nodes, r_.edges, r_.conditions, 0, 0, 0, anchor), nullptr, {anchor}, {}));
             p.anchorEdgeKinds.push_back(edgeKindsNeeded(anchor));
         }
         std::size_t nodes = r_.nodes.size(), edges = r_.edges.size();
@@ -24,7 +29,9 @@ public:
             std::vector<int> outerNodes, outerEdges;
             for (int i = 0; i < nac.outerNodes; ++i) outerNodes.push_back(i);
             for (int i = 0; i < nac.outerEdges; ++i) outerEdges.push_back(i);
-            p.negatives.push_back(list(nac.plan, &nac, outerNodes, outerEdges));
+            const auto plan = buildSearchPlan(nac.nodes, nac.edges, nac.conditions, nac.outerNodes, nac.outerEdges,
+                                              static_cast<int>(r_.nodes.size()));
+            p.negatives.push_back(list(plan, &nac, outerNodes, outerEdges));
             nodes = std::max(nodes, r_.nodes.size() + nac.nodes.size());
             edges = std::max(edges, r_.edges.size() + nac.edges.size());
         }
@@ -36,11 +43,11 @@ public:
 private:
     int nodeKind(int i, const ir::NegativeCondition* nac) const { return ir::slotNodeKind(r_, nac, i); }
     const ir::PatternEdge& edgeOf(int i, const ir::NegativeCondition* nac) const { return ir::slotEdge(r_, nac, i); }
-    // The edge kinds every host of pattern node `p` has had (ir::Rule::neededEdgeKinds).
+    // The edge kinds every host of pattern node `p` has had (lower::edgeKindsNeeded).
     std::uint32_t edgeKindsNeeded(int p) const {
         std::uint32_t need = 0;
-        if (static_cast<std::size_t>(p) < r_.neededEdgeKinds.size())
-            for (int k : r_.neededEdgeKinds[static_cast<std::size_t>(p)]) need |= rt::Graph::edgeKindBit(k);
+        if (static_cast<std::size_t>(p) < neededEdgeKinds_.size())
+            for (int k : neededEdgeKinds_[static_cast<std::size_t>(p)]) need |= rt::Graph::edgeKindBit(k);
         return need;
     }
     // `ordered`, as the thesis's tool: a node drawn left of another must not
@@ -59,7 +66,7 @@ private:
         return out;
     }
 
-    MatchList list(const std::vector<ir::PlanStep>& plan, const ir::NegativeCondition* nac, std::vector<int> boundNodes,
+    MatchList list(const std::vector<PlanStep>& plan, const ir::NegativeCondition* nac, std::vector<int> boundNodes,
                    std::vector<int> boundEdges) const {
         MatchList out;
         for (const auto& s : plan) {
@@ -67,17 +74,17 @@ private:
             // where the pattern's last edge is bound (not in negative conditions).
             const bool lastEdge = !nac && boundEdges.size() + 1 == r_.edges.size();
             switch (s.op) {
-            case ir::PlanStep::Op::Check: {
+            case PlanStep::Op::Check: {
                 const auto& cond = nac ? nac->conditions[s.condition] : r_.conditions[s.condition];
                 out.push_back(Filter{&cond.expr});
                 break;
             }
-            case ir::PlanStep::Op::ScanNodes:
+            case PlanStep::Op::ScanNodes:
                 out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), boundNodes,
                                         ordered(s.node, boundNodes)});
                 boundNodes.push_back(s.node);
                 break;
-            case ir::PlanStep::Op::ExtendEdge: {
+            case PlanStep::Op::ExtendEdge: {
                 const auto& pe = edgeOf(s.edge, nac);
                 out.push_back(ExtendEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, s.fromIsSource,
                                          nodeKind(s.node, nac), boundEdges, boundNodes, ordered(s.node, boundNodes), lastEdge});
@@ -85,7 +92,7 @@ private:
                 boundEdges.push_back(s.edge);
                 break;
             }
-            case ir::PlanStep::Op::ConnectEdge: {
+            case PlanStep::Op::ConnectEdge: {
                 const auto& pe = edgeOf(s.edge, nac);
                 out.push_back(ConnectEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, boundEdges, lastEdge});
                 boundEdges.push_back(s.edge);
@@ -98,6 +105,7 @@ private:
 
     const ir::Program& prog_;
     const ir::Rule& r_;
+    std::vector<std::vector<int>> neededEdgeKinds_;   // per pattern node
 };
 
 }  // namespace

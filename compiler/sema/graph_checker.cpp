@@ -7,8 +7,6 @@
 #include "sema/builtins.hpp"
 #include "sema/const_fold.hpp"
 #include "sema/decl_checker.hpp"
-#include "sema/kind_effects.hpp"
-#include "sema/search_plan.hpp"
 
 namespace g2d::sema {
 
@@ -221,9 +219,7 @@ public:
         rule_.span = d_.span;
         options();
         match();
-        plan();
         items();
-        describeKindEffects(rule_, g_.prog.kinds);
         warnUnusedLets();
         // Advice about a rule is noise while the rule has errors.
         if (g_.diags.errorCount() == errorsBefore)
@@ -442,25 +438,6 @@ private:
             bindings_.resize(outerBindings);
             rule_.nacs.push_back(std::move(n));
         }
-    }
-
-    void plan() {
-        rule_.plan = buildSearchPlan(rule_.nodes, rule_.edges, rule_.conditions, 0, 0, 0);
-        for (std::size_t i = 0; i < rule_.nodes.size(); ++i)
-            rule_.anchoredPlans.push_back(
-                buildSearchPlan(rule_.nodes, rule_.edges, rule_.conditions, 0, 0, 0, static_cast<int>(i)));
-        for (auto& n : rule_.nacs)
-            n.plan = buildSearchPlan(n.nodes, n.edges, n.conditions, n.outerNodes, n.outerEdges,
-                                     static_cast<int>(rule_.nodes.size()));
-        rule_.repairRadius = repairRadius(rule_);
-        rule_.readsIncidence = incidenceReaders(rule_);
-        std::vector<bool> directed;
-        for (const auto& k : g_.prog.kinds) directed.push_back(k.directed);
-        rule_.readDirections = incidenceDirections(rule_, directed);
-        rule_.newHostAddsNothing = newHostsAddingNothing(rule_);
-        int edgeKinds = 0;
-        for (const auto& k : g_.prog.kinds) edgeKinds += k.cls == ir::ElemClass::Edge;
-        rule_.neededEdgeKinds = edgeKindsNeeded(rule_, edgeKinds);
     }
 
     bool let(const ast::LetStmt& l, std::vector<ir::Let>& out, const std::vector<ElemBinding>& elems) {

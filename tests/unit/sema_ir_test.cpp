@@ -3,6 +3,9 @@
 
 #include <algorithm>
 
+#include "lower/kind_effects.hpp"
+#include "lower/rule_facts.hpp"
+#include "lower/search_plan.hpp"
 #include "sema/builtins.hpp"
 #include "test_helpers.hpp"
 
@@ -51,15 +54,16 @@ TEST_CASE("the Koch snowflake lowers to one rule with an unrolled search plan", 
     CHECK(d.nodes[2].motherNode == -1);
     CHECK(d.nodes[2].position.has_value());
     // Plan: scan s, walk the edge to e, then test `old.lod < max_lod`.
-    REQUIRE(rule.plan.size() == 3);
-    CHECK(rule.plan[0].op == ir::PlanStep::Op::ScanNodes);
-    CHECK(rule.plan[0].node == 0);
-    CHECK(rule.plan[1].op == ir::PlanStep::Op::ExtendEdge);
-    CHECK(rule.plan[1].edge == 0);
-    CHECK(rule.plan[1].from == 0);
-    CHECK(rule.plan[1].node == 1);
-    CHECK(rule.plan[1].fromIsSource);
-    CHECK(rule.plan[2].op == ir::PlanStep::Op::Check);
+    const auto plan = lower::buildSearchPlan(rule.nodes, rule.edges, rule.conditions, 0, 0, 0);
+    REQUIRE(plan.size() == 3);
+    CHECK(plan[0].op == lower::PlanStep::Op::ScanNodes);
+    CHECK(plan[0].node == 0);
+    CHECK(plan[1].op == lower::PlanStep::Op::ExtendEdge);
+    CHECK(plan[1].edge == 0);
+    CHECK(plan[1].from == 0);
+    CHECK(plan[1].node == 1);
+    CHECK(plan[1].fromIsSource);
+    CHECK(plan[2].op == lower::PlanStep::Op::Check);
     REQUIRE(rule.conditions.size() == 1);
     CHECK(rule.conditions[0].deps == std::vector<ir::ElemRef>{{ir::ElemClass::Edge, 0}});
 }
@@ -82,8 +86,9 @@ TEST_CASE("conditions are tested as soon as their elements are bound", "[ir][pla
                      "  produce { x; y; z; }\n"
                      "}\n");
     REQUIRE(r.program);
-    const auto& plan = r.program->rules[0].plan;
-    using Op = ir::PlanStep::Op;
+    const auto& rule = r.program->rules[0];
+    const auto plan = lower::buildSearchPlan(rule.nodes, rule.edges, rule.conditions, 0, 0, 0);
+    using Op = lower::PlanStep::Op;
     std::vector<Op> ops;
     for (const auto& s : plan) ops.push_back(s.op);
     // `true` needs nothing, x's own test follows the scan of x, the cross test follows z.
@@ -128,12 +133,13 @@ TEST_CASE("each reading match node reads the edge lists of its pattern edges' di
     REQUIRE(r.program);
     const auto& rules = r.program->rules;
     REQUIRE(rules.size() == 5);
-    const std::uint8_t out = ir::kReadsOutEdges, in = ir::kReadsInEdges, both = out | in;
-    CHECK(rules[0].readDirections == std::vector<std::uint8_t>{out, 0});
-    CHECK(rules[1].readDirections == std::vector<std::uint8_t>{0, in, 0});   // t covers both edges
-    CHECK(rules[2].readDirections == std::vector<std::uint8_t>{both, 0});
-    CHECK(rules[3].readDirections == std::vector<std::uint8_t>{both});
-    CHECK(rules[4].readDirections == std::vector<std::uint8_t>{both, 0});
+    const std::uint8_t out = rt::RepairArea::kOut, in = rt::RepairArea::kIn, both = out | in;
+    auto directions = [&](std::size_t i) { return lower::ruleFacts(*r.program, rules[i]).info.readDirections; };
+    CHECK(directions(0) == std::vector<std::uint8_t>{out, 0});
+    CHECK(directions(1) == std::vector<std::uint8_t>{0, in, 0});   // t covers both edges
+    CHECK(directions(2) == std::vector<std::uint8_t>{both, 0});
+    CHECK(directions(3) == std::vector<std::uint8_t>{both});
+    CHECK(directions(4) == std::vector<std::uint8_t>{both, 0});
 }
 
 TEST_CASE("each rule knows the kinds and attributes its matches read and each daughter changes", "[ir][incremental]") {
@@ -168,34 +174,34 @@ rule Guard { match { x: *; b: B; x -[E]-> b; not { y: C; x -[U]- y; } } produce 
         std::sort(out.begin(), out.end());
         return out;
     };
-    auto rule = [&](const std::string& name) -> const ir::Rule& {
+    auto rule = [&](const std::string& name) {
         for (const auto& rr : p.rules)
-            if (rr.name == name) return rr;
+            if (rr.name == name) return lower::ruleFacts(p, rr).info;
         FAIL("no rule " << name);
-        return p.rules[0];
+        return rt::RuleInfo{};
     };
     // Grow: the deleted edge, the new node and edge; the kept node's new
     // value is a change of that attribute, not of its kind.
     CHECK(rule("Grow").readKinds == kinds({"A", "B", "E"}));
     CHECK_FALSE(rule("Grow").readsDegrees);
     CHECK(rule("Grow").readValues.empty());
-    CHECK(rule("Grow").daughters[0].changedKinds == kinds({"C", "E", "F"}));
-    CHECK(rule("Grow").daughters[0].changedValues == std::vector<long long>{ir::valueKey(kind("A"), 0)});
+    CHECK(rule("Grow").changedKinds[0] == kinds({"C", "E", "F"}));
+    CHECK(rule("Grow").changedValues[0] == std::vector<long long>{lower::valueKey(kind("A"), 0)});
     // The attributes conditions read, in the match or a negative condition.
-    CHECK(rule("ReadsW").readValues == std::vector<long long>{ir::valueKey(kind("A"), 1)});
-    CHECK(rule("NacReadsV").readValues == std::vector<long long>{ir::valueKey(kind("A"), 0)});
+    CHECK(rule("ReadsW").readValues == std::vector<long long>{lower::valueKey(kind("A"), 1)});
+    CHECK(rule("NacReadsV").readValues == std::vector<long long>{lower::valueKey(kind("A"), 0)});
     CHECK(rule("NacReadsV").readKinds == kinds({"A", "B", "E"}));
     // Keeping everything as it was changes nothing.
-    CHECK(rule("Keep").daughters[0].changedKinds.empty());
+    CHECK(rule("Keep").changedKinds[0].empty());
     // A new position is a change of the node.
-    CHECK(rule("Move").daughters[0].changedKinds == kinds({"B"}));
+    CHECK(rule("Move").changedKinds[0] == kinds({"B"}));
     // A kept edge between other ends is a change of the edge.
-    CHECK(rule("Rewire").daughters[0].changedKinds == kinds({"E"}));
+    CHECK(rule("Rewire").changedKinds[0] == kinds({"E"}));
     // A degree counts every edge kind; deleting the node is a change of its kind.
     CHECK(rule("Count").readsDegrees);
     CHECK(rule("Count").readKinds == kinds({"C", "E", "F", "U"}));
-    CHECK(rule("Count").daughters[0].changedKinds == kinds({"C"}));
-    CHECK(rule("Count").daughters[0].deletedNodes.size() == 1);
+    CHECK(rule("Count").changedKinds[0] == kinds({"C"}));
+    CHECK(rule("Count").deletesNodes[0] == 1);
     // A wildcard reads every node kind; a negative condition's kinds are read too.
     CHECK(rule("Guard").readKinds == kinds({"A", "B", "C", "E", "U"}));
 }

@@ -37,11 +37,10 @@
 
 #include "g2d/graph.hpp"
 #include "g2d/match_set.hpp"
+#include "g2d/pick.hpp"
 #include "g2d/rng.hpp"
 
 namespace g2d::rt {
-
-enum class Pick { Random, Oldest };
 
 struct RuleInfo {
     std::string name;                 // as written in the grammar (traces, messages)
@@ -60,20 +59,19 @@ struct RuleInfo {
     // IncrementalMatches); empty means all do.
     std::vector<Incidence> readsIncidence;
     // Per pattern node: which of the host's edge lists it reads
-    // (RepairArea::kOut | kIn; ir::Rule::readDirections); empty: both
+    // (RepairArea::kOut | kIn; lower::incidenceDirections); empty: both
     // wherever readsIncidence reads any.
     std::vector<std::uint8_t> readDirections;
     // Per pattern node: whether a search anchored there at a node the step
-    // created can add nothing (ir::Rule::newHostAddsNothing); empty: none.
+    // created can add nothing (lower::newHostsAddingNothing); empty: none.
     std::vector<std::uint8_t> newHostAddsNothing;
     // Which kinds of element this rule's matches read, and which each of its
-    // daughters changes (ir::Rule::readKinds, ir::Daughter::changedKinds;
+    // daughters changes (lower::KindEffects;
     // node and edge kinds share one numbering): after a step whose daughter
     // changes no kind a rule reads, that rule's matches are as they were,
     // and its set is not repaired (IncrementalMatches). Without
     // `kindsKnown` (a hand-built RuleSet), every step repairs every set.
-    // Likewise node attributes (ir::Rule::readValues, ir::Daughter::
-    // changedValues, as ir::valueKey): for a rule reading none of the
+    // Likewise node attributes (as lower::valueKey): for a rule reading none of the
     // attributes a daughter writes, a node whose only change is such a write
     // (Graph::touchNodeValues) is not revisited.
     bool kindsKnown = false;
@@ -101,7 +99,7 @@ std::vector<RepairAnchor> repairAnchors(const RuleInfo& info);
 // d says which of its edge lists alone changed (kOut: outgoing, kIn:
 // incoming, or both): search it at the pattern nodes reading those.
 struct RepairArea {
-    static constexpr std::uint8_t kOut = 1, kIn = 2;   // edge lists (as ir::kReadsOutEdges, kReadsInEdges)
+    static constexpr std::uint8_t kOut = 1, kIn = 2;   // edge lists
     std::span<const NodeId> nodes;
     const std::uint32_t* seen = nullptr;
     std::uint32_t mark = 0;

@@ -1,11 +1,12 @@
-#include "sema/search_plan.hpp"
+#include "lower/search_plan.hpp"
 
 #include <algorithm>
 #include <set>
 
-namespace g2d::sema {
+#include "g2d/derivation.hpp"
 
-using ir::PlanStep;
+namespace g2d::lower {
+
 
 std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
                                       const std::vector<ir::PatternEdge>& edges,
@@ -180,8 +181,7 @@ void markDegreeReads(const ir::Expr& e, int matchNodes, std::vector<bool>& reads
 
 }  // namespace
 
-std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule) {
-    using ir::IncidenceRead;
+std::vector<rt::Incidence> incidenceReaders(const ir::Rule& rule) {
     const int outer = static_cast<int>(rule.nodes.size());
     std::vector<bool> all(rule.nodes.size(), false);
     // Forced: degrees read in conditions, and edges to a negative condition's
@@ -225,39 +225,38 @@ std::vector<ir::IncidenceRead> incidenceReaders(const ir::Rule& rule) {
     cover(forbidden, all);
     std::vector<bool> any = all;
     cover(own, any);
-    std::vector<IncidenceRead> reads;
+    std::vector<rt::Incidence> reads;
     for (std::size_t i = 0; i < rule.nodes.size(); ++i)
-        reads.push_back(all[i] ? IncidenceRead::AllEdges : any[i] ? IncidenceRead::PatternEdges : IncidenceRead::None);
+        reads.push_back(all[i] ? rt::Incidence::AllEdges : any[i] ? rt::Incidence::PatternEdges : rt::Incidence::None);
     return reads;
 }
 
-std::vector<std::uint8_t> incidenceDirections(const ir::Rule& rule, const std::vector<bool>& directed) {
+std::vector<std::uint8_t> incidenceDirections(const ir::Rule& rule, const std::vector<bool>& directed,
+                                              const std::vector<rt::Incidence>& reads) {
     std::vector<std::uint8_t> dirs(rule.nodes.size(), 0);
-    if (rule.readsIncidence.size() != rule.nodes.size()) return dirs;   // after an error
     const int outer = static_cast<int>(rule.nodes.size());
-    const std::uint8_t both = ir::kReadsOutEdges | ir::kReadsInEdges;
+    const std::uint8_t both = rt::RepairArea::kOut | rt::RepairArea::kIn;
     for (const auto& e : rule.edges) {
         if (e.src < 0 || e.dst < 0 || e.src >= outer || e.dst >= outer) continue;
         const bool oneWay = e.kind >= 0 && static_cast<std::size_t>(e.kind) < directed.size() &&
                             directed[static_cast<std::size_t>(e.kind)] && e.src != e.dst;
-        dirs[static_cast<std::size_t>(e.src)] |= oneWay ? ir::kReadsOutEdges : both;
-        dirs[static_cast<std::size_t>(e.dst)] |= oneWay ? ir::kReadsInEdges : both;
+        dirs[static_cast<std::size_t>(e.src)] |= oneWay ? rt::RepairArea::kOut : both;
+        dirs[static_cast<std::size_t>(e.dst)] |= oneWay ? rt::RepairArea::kIn : both;
     }
     for (std::size_t i = 0; i < dirs.size(); ++i) {
-        if (rule.readsIncidence[i] == ir::IncidenceRead::None) dirs[i] = 0;
-        else if (rule.readsIncidence[i] == ir::IncidenceRead::AllEdges || dirs[i] == 0) dirs[i] = both;
+        if (reads[i] == rt::Incidence::None) dirs[i] = 0;
+        else if (reads[i] == rt::Incidence::AllEdges || dirs[i] == 0) dirs[i] = both;
     }
     return dirs;
 }
 
-std::vector<bool> newHostsAddingNothing(const ir::Rule& rule) {
+std::vector<bool> newHostsAddingNothing(const ir::Rule& rule, const std::vector<rt::Incidence>& reads) {
     const int outer = static_cast<int>(rule.nodes.size());
     std::vector<bool> nothing(rule.nodes.size(), false);
-    if (rule.readsIncidence.size() != rule.nodes.size()) return nothing;   // after an error
     for (const auto& e : rule.edges) {
         if (e.src < 0 || e.dst < 0 || e.src >= outer || e.dst >= outer) continue;
         const int first = std::min(e.src, e.dst), later = std::max(e.src, e.dst);
-        if (first < later && rule.readsIncidence[static_cast<std::size_t>(first)] != ir::IncidenceRead::None)
+        if (first < later && reads[static_cast<std::size_t>(first)] != rt::Incidence::None)
             nothing[static_cast<std::size_t>(later)] = true;
     }
     return nothing;
@@ -278,4 +277,4 @@ std::vector<std::vector<int>> edgeKindsNeeded(const ir::Rule& rule, int edgeKind
     return needed;
 }
 
-}  // namespace g2d::sema
+}  // namespace g2d::lower

@@ -1,9 +1,9 @@
-#include "sema/kind_effects.hpp"
+#include "lower/kind_effects.hpp"
 
 #include <algorithm>
 #include <set>
 
-namespace g2d::sema {
+namespace g2d::lower {
 
 namespace {
 
@@ -48,13 +48,13 @@ template <class KindOf>
 void readValues(const ir::Expr& e, const KindOf& kindOf, std::set<long long>& out) {
     if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Node) {
         const int kind = kindOf(e.elem.index);
-        if (kind >= 0) out.insert(ir::valueKey(kind, e.index));
+        if (kind >= 0) out.insert(valueKey(kind, e.index));
     }
     for (const auto& a : e.args) readValues(a, kindOf, out);
 }
 
-// Fills d.changedKinds and d.changedValues.
-void describeDaughter(const ir::Rule& rule, ir::Daughter& d, const std::vector<ir::Kind>& kinds) {
+// The kinds and attributes daughter `d` changes (KindEffects).
+void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::vector<ir::Kind>& kinds, KindEffects& out) {
     KindSet changed(kinds);
     std::set<long long> values;
     for (int n : d.deletedNodes)
@@ -70,9 +70,9 @@ void describeDaughter(const ir::Rule& rule, ir::Daughter& d, const std::vector<i
         const bool retyped = n.kind != mother->kind;
         if (retyped) changed.add(n.kind, ir::ElemClass::Node);
         if (retyped || n.position) changed.add(mother->kind, ir::ElemClass::Node);
-        for (const auto& a : n.assigns) values.insert(ir::valueKey(n.kind, a.attr));
+        for (const auto& a : n.assigns) values.insert(valueKey(n.kind, a.attr));
     }
-    d.changedValues.assign(values.begin(), values.end());
+    out.changedValues.emplace_back(values.begin(), values.end());
     for (const auto& e : d.edges) {
         const ir::PatternEdge* mother = at(rule.edges, e.motherEdge);
         if (!mother) {
@@ -86,33 +86,35 @@ void describeDaughter(const ir::Rule& rule, ir::Daughter& d, const std::vector<i
         if (retyped) changed.add(e.kind, ir::ElemClass::Edge);
         if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
-    d.changedKinds = changed.sorted();
+    out.changedKinds.push_back(changed.sorted());
 }
 
 }  // namespace
 
-void describeKindEffects(ir::Rule& rule, const std::vector<ir::Kind>& kinds) {
+KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds) {
+    KindEffects out;
     KindSet read(kinds);
     for (const auto& n : rule.nodes) read.add(n.kind, ir::ElemClass::Node);
     for (const auto& e : rule.edges) read.add(e.kind, ir::ElemClass::Edge);
-    rule.readsDegrees = anyReadsDegree(rule.conditions);
+    out.readsDegrees = anyReadsDegree(rule.conditions);
     std::set<long long> values;
     const auto matchKind = [&](int i) { return at(rule.nodes, i) ? at(rule.nodes, i)->kind : -1; };
     for (const auto& c : rule.conditions) readValues(c.expr, matchKind, values);
     for (const auto& nac : rule.nacs) {
         for (const auto& n : nac.nodes) read.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : nac.edges) read.add(e.kind, ir::ElemClass::Edge);
-        rule.readsDegrees = rule.readsDegrees || anyReadsDegree(nac.conditions);
+        out.readsDegrees = out.readsDegrees || anyReadsDegree(nac.conditions);
         const auto nacKind = [&](int i) {
             return i < nac.outerNodes ? matchKind(i) : at(nac.nodes, i - nac.outerNodes) ? at(nac.nodes, i - nac.outerNodes)->kind : -1;
         };
         for (const auto& c : nac.conditions) readValues(c.expr, nacKind, values);
     }
-    rule.readValues.assign(values.begin(), values.end());
+    out.readValues.assign(values.begin(), values.end());
     // A degree counts the edges of every kind.
-    if (rule.readsDegrees) read.add(-1, ir::ElemClass::Edge);
-    rule.readKinds = read.sorted();
-    for (auto& d : rule.daughters) describeDaughter(rule, d, kinds);
+    if (out.readsDegrees) read.add(-1, ir::ElemClass::Edge);
+    out.readKinds = read.sorted();
+    for (const auto& d : rule.daughters) describeDaughter(rule, d, kinds, out);
+    return out;
 }
 
-}  // namespace g2d::sema
+}  // namespace g2d::lower
