@@ -279,7 +279,7 @@ std::string ExprGen::call(const ir::Expr& e, const ExprContext& ctx, std::string
         out += in + "const " + cppType(e.type) + " " + arr + "[] = {";
         for (std::size_t i = 0; i < a.size(); ++i) out += (i ? ", " : "") + a[i];
         out += "};\n";
-        return bind(arr + "[rng_->below(" + std::to_string(a.size()) + ")]", false);
+        return bind(arr + "[rt::fn::choiceIndex(*rng_, " + std::to_string(a.size()) + ")]", false);
     }
     default: break;
     }

@@ -40,12 +40,8 @@ vec2 V(const Value& v) { return std::get<vec2>(v); }
 const std::string& S(const Value& v) { return std::get<std::string>(v); }
 
 rt::FormatHole hole(const Value& v, const ir::Program& prog) {
-    rt::FormatHole h;
-    h.text = display(v, prog);
-    if (auto* d = std::get_if<double>(&v)) { h.kind = 1; h.number = *d; }
-    else if (auto* n = std::get_if<long long>(&v)) { h.kind = 1; h.number = static_cast<double>(*n); }
-    else if (auto* p = std::get_if<vec2>(&v)) { h.kind = 2; h.number = p->x; h.number2 = p->y; }
-    return h;
+    if (std::holds_alternative<rt::EnumVal>(v)) return rt::FormatHole{display(v, prog)};
+    return rt::formatHole(v);
 }
 
 // Built-in calls; rt::OpError from the runtime's checked operations is turned
@@ -62,7 +58,7 @@ Value call(const ir::Expr& e, EvalFrame& f) {
         for (std::size_t i = 1; i < a.size(); ++i) holes.push_back(hole(a[i], *f.prog));
         return rt::formatTemplate(S(a[0]), holes.data(), holes.size());
     }
-    case Builtin::Choice: return a[static_cast<std::size_t>(f.rng->below(a.size()))];
+    case Builtin::Choice: return a[rt::fn::choiceIndex(*f.rng, a.size())];
     default: return rt::callBuiltin(e.builtin, a.data(), a.size(), f.rng);
     }
 }

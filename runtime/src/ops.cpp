@@ -60,6 +60,23 @@ double parseFloat(const std::string& s) {
     return v;
 }
 
+FormatHole formatHole(const Value& v) {
+    FormatHole h;
+    h.text = toString(v);
+    if (const auto* d = std::get_if<double>(&v)) {
+        h.kind = 1;
+        h.number = *d;
+    } else if (const auto* n = std::get_if<long long>(&v)) {
+        h.kind = 1;
+        h.number = static_cast<double>(*n);
+    } else if (const auto* p = std::get_if<vec2>(&v)) {
+        h.kind = 2;
+        h.number = p->x;
+        h.number2 = p->y;
+    }
+    return h;
+}
+
 std::string formatTemplate(const std::string& t, const FormatHole* holes, std::size_t count) {
     std::string out;
     std::size_t next = 0;

@@ -160,6 +160,8 @@ inline double random(Rng& rng) { return rng.unit(); }
 inline double uniform(Rng& rng, double a, double b) { return finite(rng.uniform(a, b)); }
 long long randint(Rng& rng, long long lo, long long hi);   // throws on an empty range
 inline double normal(Rng& rng, double mean, double stddev) { return finite(rng.normal(mean, stddev)); }
+// choice(a, b, …): which of its `count` arguments it returns.
+inline std::size_t choiceIndex(Rng& rng, std::size_t count) { return static_cast<std::size_t>(rng.below(count)); }
 
 }  // namespace fn
 

@@ -46,17 +46,15 @@ struct Place {
     const char* lineText;
 };
 
-inline std::string str(long long v) { return std::to_string(v); }
-inline std::string str(double v) { return formatNumber(v); }
-inline std::string str(bool v) { return v ? "true" : "false"; }
-inline std::string str(const std::string& v) { return v; }
-inline std::string str(vec2 v) { return toString(Value{v}); }
-
-inline FormatHole hole(long long v) { return FormatHole{str(v), static_cast<double>(v), 0, 1}; }
-inline FormatHole hole(double v) { return FormatHole{str(v), v, 0, 1}; }
-inline FormatHole hole(bool v) { return FormatHole{str(v), 0, 0, 0}; }
-inline FormatHole hole(const std::string& v) { return FormatHole{v, 0, 0, 0}; }
-inline FormatHole hole(vec2 v) { return FormatHole{str(v), v.x, v.y, 2}; }
+// str() and format's holes, typed: the runtime's toString and formatHole.
+template <class T>
+std::string str(const T& v) {
+    return toString(Value{v});
+}
+template <class T>
+FormatHole hole(const T& v) {
+    return formatHole(Value{v});
+}
 
 // A growable array that does not copy itself as it grows when T is plain
 // data (GrowArray), a std::vector otherwise.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"
 
 namespace g2d::rt {
@@ -82,5 +83,9 @@ struct FormatHole {
     int kind = 0;                               // 0 text, 1 number, 2 vector
 };
 std::string formatTemplate(const std::string& templ, const FormatHole* holes, std::size_t count);
+// How a value fills a hole: printed as str() prints it; numbers and vectors
+// also as numbers. (An enum value fills one with its name, which the back
+// end knows: FormatHole{name}.)
+FormatHole formatHole(const Value& v);
 
 }  // namespace g2d::rt
