@@ -234,7 +234,7 @@ private:
             markdown += "\n\n```g2d\n" + s->declaration + "\n```";
         } else if (const auto* b = sema::findBuiltin(p.word)) {
             markdown = "**built-in function**\n\n```g2d\n" + b->signature + "\n```";
-            if (b->random) markdown += "\n\nDraws from the run's seeded random generator.";
+            if (sema::drawsRandom(*b)) markdown += "\n\nDraws from the run's seeded random generator.";
         } else {
             return nullptr;
         }

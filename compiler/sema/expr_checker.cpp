@@ -458,7 +458,7 @@ std::optional<Expr> ExprChecker::call(const ast::Expr& e, const ast::Call& c, co
         g_.diags.error(c.callee.span, "unknown function `" + fname + "`" + suggest(fname, candidates));
         return std::nullopt;
     }
-    if (info->random && !env.allowRandom) {
+    if (drawsRandom(*info) && !env.allowRandom) {
         g_.diags.error(c.callee.span, "random function `" + fname + "` cannot be used in " + env.context);
         return std::nullopt;
     }

@@ -385,7 +385,7 @@ def builtin_functions():
     text = read(os.path.join(ROOT, "compiler", "sema", "builtins.cpp"))
     body = text[text.index("builtinFunctions()"):]
     body = body[:body.index("};")]
-    return sorted(set(re.findall(r'\{"([A-Za-z_]\w*)",\s*-?\d+,\s*-?\d+,\s*(?:true|false),', body)))
+    return sorted(set(re.findall(r'\{"([A-Za-z_]\w*)",\s*-?\d+,\s*-?\d+,\s*Builtin::\w+,', body)))
 
 
 PRIMITIVE_TYPES = ["int", "float", "bool", "string", "vec2"]

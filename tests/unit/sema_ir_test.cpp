@@ -207,9 +207,9 @@ rule Guard { match { x: *; b: B; x -[E]-> b; not { y: C; x -[U]- y; } } produce 
 }
 
 TEST_CASE("the checker's random built-ins are the runtime's", "[sema][builtins]") {
-    // sema::BuiltinInfo::random keeps random draws out of constants and
-    // parameter defaults; the runtime's table (rt::BuiltinEntry::drawsRandom)
-    // says which built-ins draw. Every name resolves to built-ins of one kind.
+    // sema::drawsRandom keeps random draws out of constants and parameter
+    // defaults; it asks the runtime's table (rt::BuiltinEntry::drawsRandom)
+    // about one built-in of the name. Every name resolves to built-ins of one kind.
     const std::vector<std::pair<std::string, std::vector<ir::Type>>> calls = {
         {"random", {}}, {"uniform", {ir::kFloatType, ir::kFloatType}}, {"randint", {ir::kIntType, ir::kIntType}},
         {"choice", {ir::kIntType, ir::kIntType}}, {"normal", {ir::kFloatType, ir::kFloatType}},
@@ -222,9 +222,9 @@ TEST_CASE("the checker's random built-ins are the runtime's", "[sema][builtins]"
         REQUIRE(info);
         auto res = sema::resolveBuiltin(name, args, prog);
         REQUIRE(std::holds_alternative<sema::BuiltinResolution>(res));
-        CHECK(info->random == rt::builtinEntry(std::get<sema::BuiltinResolution>(res).builtin).drawsRandom);
+        CHECK(sema::drawsRandom(*info) == rt::builtinEntry(std::get<sema::BuiltinResolution>(res).builtin).drawsRandom);
     }
     std::size_t random = 0;
-    for (const auto& b : sema::builtinFunctions()) random += b.random;
+    for (const auto& b : sema::builtinFunctions()) random += sema::drawsRandom(b);
     CHECK(random == 5);
 }
