@@ -122,13 +122,9 @@ std::string RewritePrinter::placement(const lower::Place& o, const std::string& 
     const std::string nodes = str(static_cast<int>(o.motherSketch.size()));
     out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
     out += b + "const vec2 host[" + nodes + "] = {" + host + "};\n";
-    if (!o.refs.empty()) {
-        const std::string n = str(static_cast<int>(o.refs.size()));
-        out += b + "const vec2 refDaughter[" + n + "] = {" + refDaughter + "};\n";
-        out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
-    } else {   // no node kept: the whole match is the reference
-        out += b + "const auto& refDaughter = mother;\n" + b + "const auto& refHost = host;\n";
-    }
+    const std::string n = str(static_cast<int>(o.refs.size()));
+    out += b + "const vec2 refDaughter[" + n + "] = {" + refDaughter + "};\n";
+    out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
     const std::string directed =
         o.directed ? "std::make_pair(" + str(o.directed->first) + ", " + str(o.directed->second) + ")" : "std::nullopt";
     out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost);\n";

@@ -73,10 +73,6 @@ private:
         for (std::size_t k = 0; k < r_.edges.size(); ++k) t += " || e[" + str(static_cast<int>(k)) + "] >= " + from;
         return t;
     }
-    std::string gate(const ir::NegativeCondition* nac, const std::vector<int>& boundEdges, const std::string& in) const {
-        if (nac || newEdgeGate_.empty() || boundEdges.size() + 1 != r_.edges.size()) return "";
-        return in + "if (" + newEdgeGate_ + ") continue;\n";
-    }
 
     // Nested blocks for ops[i..]; `onComplete` is the innermost code. `nac`
     // names the negative condition the list searches (for its slots' kinds

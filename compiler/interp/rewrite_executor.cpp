@@ -36,10 +36,6 @@ void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph&
         refDaughter.push_back({sketch.x, sketch.y});
         refHost.push_back(host[static_cast<std::size_t>(node)]);
     }
-    if (refDaughter.empty()) {
-        refDaughter = mother;
-        refHost = host;
-    }
     const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost);
     for (const auto& t : o.targets) {
         const rt::vec2 pos = frame.place({t.sketch.x, t.sketch.y});

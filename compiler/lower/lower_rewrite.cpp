@@ -68,6 +68,9 @@ private:
         for (const auto& n : r_.nodes) pl.motherSketch.push_back(*n.sketch);
         for (const auto& dn : d_.nodes)
             if (dn.motherNode >= 0) pl.refs.emplace_back(*dn.sketch, dn.motherNode);
+        // No node kept: the whole match is the reference.
+        if (pl.refs.empty())
+            for (std::size_t i = 0; i < r_.nodes.size(); ++i) pl.refs.emplace_back(*r_.nodes[i].sketch, static_cast<int>(i));
         for (const auto& e : r_.edges)
             if (prog_.kinds[e.kind].directed && e.src != e.dst) {
                 pl.directed = std::make_pair(e.src, e.dst);

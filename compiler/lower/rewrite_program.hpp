@@ -43,7 +43,9 @@ struct Place {
         std::string message;            // when the position is not finite
     };
     std::vector<ir::Vec2> motherSketch;           // per pattern node
-    std::vector<std::pair<ir::Vec2, int>> refs;   // kept node: (daughter sketch, pattern node); empty: the whole match
+    // The reference pairs, (daughter sketch, pattern node): the kept nodes,
+    // or, where none is kept, every pattern node (its mother sketch).
+    std::vector<std::pair<ir::Vec2, int>> refs;
     std::optional<std::pair<int, int>> directed;  // the first directed non-loop pattern edge (src, dst)
     std::vector<Target> targets;
 };
