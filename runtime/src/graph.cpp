@@ -95,6 +95,7 @@ void Graph::removeNode(NodeId n) {
     auto& rec = nodes_[n];
     if (!rec.alive) return;
     touchNode(n);
+    removeFacesAt(n);
     while (rec.firstOut != kNoId) removeEdge(rec.firstOut);
     while (rec.firstIn != kNoId) removeEdge(rec.firstIn);
     // Swap-remove from the kind's index, fixing the moved node's slot.
@@ -171,6 +172,8 @@ void Graph::setEdgeStyle(EdgeId e, StyleProp prop, const Value& v) {
 void Graph::forgetChanges() {
     for (NodeId n : dirty_) nodes_[n].marks &= static_cast<std::uint8_t>(~kChanged);
     dirty_.clear();
+    for (FaceId f : dirtyFaces_) faces_[f].marks &= static_cast<std::uint8_t>(~kFaceChanged);
+    dirtyFaces_.clear();
     valuesWritten_ = false;
 }
 
@@ -198,7 +201,10 @@ std::size_t Graph::memoryBytes() const {
                         dirty_.capacity() * sizeof(NodeId);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
-    bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity()) * sizeof(std::uint32_t) + styles_.memoryBytes();
+    bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity() + faceStyleList_.capacity()) * sizeof(std::uint32_t) +
+             styles_.memoryBytes();
+    bytes += faces_.capacity() * sizeof(FaceRec) + corners_.capacity() * sizeof(CornerRec) +
+             nodeCorners_.capacity() * sizeof(NodeCorners) + dirtyFaces_.capacity() * sizeof(FaceId);
     return bytes;
 }
 

@@ -6,6 +6,6 @@
 
 namespace g2d::rt {
 
-enum class ElemClass : std::uint8_t { Node, Edge };
+enum class ElemClass : std::uint8_t { Node, Edge, Face };
 
 }  // namespace g2d::rt

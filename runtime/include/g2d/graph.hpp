@@ -13,8 +13,9 @@
 // uses the slot for those. Style overrides are rare and live in a pooled
 // store (style_store.hpp), by interned property.
 //
-// Element classes are explicit (nodes, edges) so that faces can be added as
-// a third class with their own index and incidences.
+// Faces are the third class (graph_faces.cpp): an ordered cycle of corners,
+// each corner a record threaded through its face's cycle and its node's
+// list of corners.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -31,6 +32,8 @@ namespace g2d::rt {
 
 using NodeId = std::uint32_t;
 using EdgeId = std::uint32_t;
+using FaceId = std::uint32_t;
+using CornerId = std::uint32_t;
 inline constexpr std::uint32_t kNoId = 0xffffffffu;
 // Kinds are stored in 16 bits per element.
 inline constexpr std::size_t kMaxKinds = 32767;
@@ -172,6 +175,62 @@ public:
     void setEdgeStyle(EdgeId e, StyleProp prop, const Value& v);
     void setEdgeStyle(EdgeId e, std::string_view prop, Value v) { setEdgeStyle(e, styleProp(prop), std::move(v)); }
 
+    // ---- faces (runtime/src/graph_faces.cpp) ----
+    // A face is an ordered cycle of at least 3 distinct live nodes, its
+    // corners; its sides are the pairs of consecutive corners (the last and
+    // the first included). Faces reference nodes, not edges: a side needs no
+    // edge, and removing an edge leaves faces alone. Removing a node removes
+    // the faces it is a corner of. Ids are never reused.
+    // Throws OpError unless the corners are >= 3, distinct and live.
+    FaceId addFace(int kind, std::span<const NodeId> corners, long long age);
+    void removeFace(FaceId f);
+    bool faceAlive(FaceId f) const { return f < faces_.size() && faces_[f].alive; }
+    std::size_t faceCount() const { return liveFaces_; }
+    std::size_t faceCapacity() const { return faces_.size(); }   // ids are below this
+    int faceKind(FaceId f) const { return faces_[f].kind; }
+    long long faceAge(FaceId f) const { return faces_[f].age; }
+    int cornerCount(FaceId f) const { return static_cast<int>(faces_[f].cornerCount); }
+    // A face's corners in cyclic order: from firstCorner, nextCorner until
+    // it comes back. A corner's side runs from its node to the next one's.
+    CornerId firstCorner(FaceId f) const { return faces_[f].firstCorner; }
+    CornerId nextCorner(CornerId c) const { return corners_[c].next; }
+    CornerId prevCorner(CornerId c) const { return corners_[c].prev; }
+    NodeId cornerNode(CornerId c) const { return corners_[c].node; }
+    FaceId cornerFace(CornerId c) const { return corners_[c].face; }
+    // The corners at a node, one per face it bounds (newest first): from
+    // firstCornerAt, nextCornerAt until kNoId.
+    CornerId firstCornerAt(NodeId n) const { return n < nodeCorners_.size() ? nodeCorners_[n].first : kNoId; }
+    CornerId nextCornerAt(CornerId c) const { return corners_[c].nextAtNode; }
+    int faceCountAt(NodeId n) const { return n < nodeCorners_.size() ? static_cast<int>(nodeCorners_[n].count) : 0; }
+    std::span<const FaceId> facesOfKind(int kind) const { return {kindNodes_[kind].data(), kindNodes_[kind].size()}; }
+    // Calls each(face, forward) for every face with side {u, v}, where
+    // `forward` says the face runs from u to v. Scans the end with fewer faces.
+    template <class Each>
+    void eachSideUse(NodeId u, NodeId v, Each&& each) const;
+    int sideFaceCount(NodeId u, NodeId v) const;
+    // The distinct faces sharing a side with f, in the order of f's sides.
+    void neighbours(FaceId f, std::vector<FaceId>& out) const;
+    int neighbourCount(FaceId f) const;
+    // Geometry of the corners' positions: the signed area (shoelace;
+    // positive when they run counter-clockwise, y up), its absolute value,
+    // the perimeter, and the centroid as the mean of the corners (as G^3).
+    double signedArea(FaceId f) const;
+    double area(FaceId f) const;
+    double perimeter(FaceId f) const;
+    vec2 centroid(FaceId f) const;
+    const Value& faceAttr(FaceId f, int i) const { return pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)]; }
+    void setFaceAttr(FaceId f, int i, Value v);
+    void initFaceAttr(FaceId f, int i, Value v);   // without recording a change
+    std::uint32_t faceSlot(FaceId f) const { return faces_[f].slot; }
+    void setFaceSlot(FaceId f, std::uint32_t slot) { faces_[f].slot = slot; }
+    StyleList faceStyle(FaceId f) const;
+    void setFaceStyle(FaceId f, StyleProp prop, Value&& v);
+    void setFaceStyle(FaceId f, StyleProp prop, const Value& v);
+    // Faces created, removed or changed (attributes) since forgetChanges(),
+    // each once; new ones have ids from the step's first new id on.
+    void touchFace(FaceId f);
+    std::span<const FaceId> changedFaces() const { return {dirtyFaces_.data(), dirtyFaces_.size()}; }
+
     // Style property numbers (a new name is numbered after the others).
     StyleProp styleProp(std::string_view name) { return styles_.prop(name); }
     const std::string& stylePropName(StyleProp p) const { return styles_.name(p); }
@@ -264,7 +323,29 @@ private:
         EdgeId nextOut = kNoId, nextIn = kNoId;
         EdgeId prevOut = kNoId, prevIn = kNoId;
     };
-    static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 40);
+    struct FaceRec {                         // 32 bytes
+        long long age = 0;
+        std::int16_t kind = -1;
+        bool alive = true;
+        std::uint8_t marks = 0;                  // kFaceChanged, kStyled
+        std::uint32_t slot = kNoId;
+        std::uint32_t slotInKind = 0;            // its place in kindNodes_[kind]
+        CornerId firstCorner = kNoId;
+        std::uint32_t cornerCount = 0;
+        std::uint32_t unused = 0;
+    };
+    struct CornerRec {                       // 24 bytes
+        NodeId node = kNoId;
+        FaceId face = kNoId;
+        CornerId next = kNoId, prev = kNoId;              // in the face's cycle
+        CornerId nextAtNode = kNoId, prevAtNode = kNoId;  // in the node's list
+    };
+    struct NodeCorners {                     // per node, from its first face on
+        CornerId first = kNoId;
+        std::uint32_t count = 0;
+    };
+    static_assert(sizeof(NodeRec) == 48 && sizeof(EdgeRec) == 40 && sizeof(FaceRec) == 32 && sizeof(CornerRec) == 24);
+    static constexpr std::uint8_t kFaceChanged = 1;
 
     // Out and In as RepairArea::kOut and kIn, one bit up.
     static constexpr std::uint8_t kChangedItself = 1, kChangedOut = 2, kChangedIn = 4, kChangedValues = 16;
@@ -282,6 +363,8 @@ private:
     inline void link(EdgeId e);
     inline void unlink(EdgeId e);
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
+    void removeFacesAt(NodeId n);
+    NodeCorners& cornersAt(NodeId n);
     [[noreturn]] static void deadEndpoint();
 
     std::vector<KindInfo> kinds_;
@@ -295,15 +378,30 @@ private:
     // The columns that grow with the graph never copy themselves (grow_array.hpp).
     GrowArray<NodeRec> nodes_;
     GrowArray<EdgeRec> edges_;
-    std::vector<GrowArray<NodeId>> kindNodes_;
+    std::vector<GrowArray<NodeId>> kindNodes_;   // per node kind its nodes, per face kind its faces
     // Style overrides: each element's chain in styles_ (StyleStore::kNone
     // for none; sized when the first element of its class gets one).
     StyleStore styles_;
-    GrowArray<std::uint32_t> nodeStyleList_, edgeStyleList_;
+    GrowArray<std::uint32_t> nodeStyleList_, edgeStyleList_, faceStyleList_;
     static std::uint32_t& styleHead(GrowArray<std::uint32_t>& lists, std::uint32_t id, std::size_t capacity);
-    std::size_t liveNodes_ = 0, liveEdges_ = 0;
+    std::size_t liveNodes_ = 0, liveEdges_ = 0, liveFaces_ = 0;
     std::vector<NodeId> dirty_;
+    GrowArray<FaceRec> faces_;
+    GrowArray<CornerRec> corners_;
+    GrowArray<NodeCorners> nodeCorners_;
+    std::vector<FaceId> dirtyFaces_;
 };
+
+template <class Each>
+void Graph::eachSideUse(NodeId u, NodeId v, Each&& each) const {
+    // From the end with fewer faces: a fan's hub is not scanned for its rim.
+    const bool fromU = faceCountAt(u) <= faceCountAt(v);
+    const NodeId a = fromU ? u : v, b = fromU ? v : u;
+    for (CornerId c = firstCornerAt(a); c != kNoId; c = nextCornerAt(c)) {
+        if (cornerNode(nextCorner(c)) == b) each(cornerFace(c), fromU);        // runs a -> b
+        else if (cornerNode(prevCorner(c)) == b) each(cornerFace(c), !fromU);  // runs b -> a
+    }
+}
 
 NodeId Graph::addNode(int kind, vec2 pos, long long age) {
     const auto id = static_cast<NodeId>(nodes_.size());

@@ -1,0 +1,150 @@
+// The graph's faces (graph.hpp): corner records threaded through two
+// intrusive doubly linked lists, the face's cycle and the node's corners.
+#include <algorithm>
+#include <cmath>
+
+#include "g2d/graph.hpp"
+#include "g2d/ops.hpp"
+
+namespace g2d::rt {
+
+Graph::NodeCorners& Graph::cornersAt(NodeId n) {
+    if (n >= nodeCorners_.size()) nodeCorners_.resize(std::max<std::size_t>(nodes_.size(), n + 1) + nodes_.size() / 2);
+    return nodeCorners_[n];
+}
+
+FaceId Graph::addFace(int kind, std::span<const NodeId> corners, long long age) {
+    if (corners.size() < 3) throw OpError("a face needs at least 3 corners, got " + std::to_string(corners.size()));
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        if (!nodeAlive(corners[i])) throw OpError("a corner of a face is not a live node");
+        for (std::size_t j = 0; j < i; ++j)
+            if (corners[i] == corners[j]) throw OpError("a face's corners must be distinct nodes");
+    }
+    const auto id = static_cast<FaceId>(faces_.size());
+    auto& ofKind = kindNodes_[kind];
+    FaceRec rec;
+    rec.age = age;
+    rec.kind = static_cast<std::int16_t>(kind);
+    rec.slot = pooled(kind) ? newAttrBlock(kind, nullptr) : kNoId;
+    rec.slotInKind = static_cast<std::uint32_t>(ofKind.size());
+    rec.firstCorner = static_cast<CornerId>(corners_.size());
+    rec.cornerCount = static_cast<std::uint32_t>(corners.size());
+    faces_.push_back(rec);
+    ofKind.push_back(id);
+    const CornerId first = rec.firstCorner;
+    const auto k = static_cast<CornerId>(corners.size());
+    for (CornerId i = 0; i < k; ++i) {
+        NodeCorners& at = cornersAt(corners[i]);
+        const CornerId c = first + i;
+        corners_.push_back(CornerRec{corners[i], id, first + (i + 1) % k, first + (i + k - 1) % k, at.first, kNoId});
+        if (at.first != kNoId) corners_[at.first].prevAtNode = c;
+        at.first = c;
+        ++at.count;
+    }
+    dirtyFaces_.push_back(id);
+    faces_[id].marks |= kFaceChanged;
+    ++liveFaces_;
+    return id;
+}
+
+void Graph::removeFace(FaceId f) {
+    FaceRec& rec = faces_[f];
+    if (!rec.alive) return;
+    CornerId c = rec.firstCorner;
+    for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) {
+        CornerRec& cr = corners_[c];
+        NodeCorners& at = nodeCorners_[cr.node];
+        if (cr.prevAtNode != kNoId) corners_[cr.prevAtNode].nextAtNode = cr.nextAtNode;
+        else at.first = cr.nextAtNode;
+        if (cr.nextAtNode != kNoId) corners_[cr.nextAtNode].prevAtNode = cr.prevAtNode;
+        --at.count;
+    }
+    // Swap-remove from the kind's index, fixing the moved face's slot.
+    auto& kindList = kindNodes_[rec.kind];
+    const FaceId moved = kindList.back();
+    kindList[rec.slotInKind] = moved;
+    faces_[moved].slotInKind = rec.slotInKind;
+    kindList.pop_back();
+    rec.alive = false;
+    clearAttrBlock(rec.kind, rec.slot);
+    if (rec.marks & kStyled) styles_.drop(faceStyleList_[f]);
+    rec.marks &= static_cast<std::uint8_t>(~kStyled);
+    touchFace(f);
+    --liveFaces_;
+}
+
+void Graph::removeFacesAt(NodeId n) {
+    while (firstCornerAt(n) != kNoId) removeFace(cornerFace(firstCornerAt(n)));
+}
+
+int Graph::sideFaceCount(NodeId u, NodeId v) const {
+    int count = 0;
+    eachSideUse(u, v, [&](FaceId, bool) { ++count; });
+    return count;
+}
+
+void Graph::neighbours(FaceId f, std::vector<FaceId>& out) const {
+    out.clear();
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c))
+        eachSideUse(cornerNode(c), cornerNode(nextCorner(c)), [&](FaceId g, bool) {
+            if (g != f && std::find(out.begin(), out.end(), g) == out.end()) out.push_back(g);
+        });
+}
+
+int Graph::neighbourCount(FaceId f) const {
+    std::vector<FaceId> out;
+    neighbours(f, out);
+    return static_cast<int>(out.size());
+}
+
+double Graph::signedArea(FaceId f) const {
+    double twice = 0;
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) {
+        const vec2 a = pos(cornerNode(c)), b = pos(cornerNode(nextCorner(c)));
+        twice += a.x * b.y - b.x * a.y;
+    }
+    return twice / 2;
+}
+
+double Graph::area(FaceId f) const { return std::abs(signedArea(f)); }
+
+double Graph::perimeter(FaceId f) const {
+    double sum = 0;
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum += length(pos(cornerNode(nextCorner(c))) - pos(cornerNode(c)));
+    return sum;
+}
+
+vec2 Graph::centroid(FaceId f) const {
+    vec2 sum{0, 0};
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum = sum + pos(cornerNode(c));
+    return sum / static_cast<double>(cornerCount(f));
+}
+
+void Graph::setFaceAttr(FaceId f, int i, Value v) {
+    initFaceAttr(f, i, std::move(v));
+    touchFace(f);
+}
+
+void Graph::initFaceAttr(FaceId f, int i, Value v) { pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)] = std::move(v); }
+
+StyleList Graph::faceStyle(FaceId f) const {
+    return styles_.list((faces_[f].marks & kStyled) ? faceStyleList_[f] : StyleStore::kNone);
+}
+
+void Graph::setFaceStyle(FaceId f, StyleProp prop, Value&& v) {
+    faces_[f].marks |= kStyled;
+    styles_.set(styleHead(faceStyleList_, f, faces_.size()), prop, std::move(v));
+}
+
+void Graph::setFaceStyle(FaceId f, StyleProp prop, const Value& v) { setFaceStyle(f, prop, Value(v)); }
+
+void Graph::touchFace(FaceId f) {
+    if (!(faces_[f].marks & kFaceChanged)) dirtyFaces_.push_back(f);
+    faces_[f].marks |= kFaceChanged;
+}
+
+}  // namespace g2d::rt
