@@ -38,6 +38,7 @@ typeRef     : ID ;
 kindDecl
     : 'node' ID kindBody                                  # nodeKind
     | 'edge' ID (DIRECTED='directed' | UNDIRECTED='undirected')? kindBody  # edgeKind
+    | 'face' ID kindBody                                  # faceKind
     ;
 kindBody    : '{' kindMember* '}' | ';' ;
 kindMember
@@ -52,6 +53,7 @@ axiomDecl   : 'axiom' '{' graphStmt* '}' ;
 graphStmt
     : nodeStmt
     | edgeStmt
+    | faceStmt
     ;
 
 // name: Kind [@ sketch] [at position] [{ assignments }] [where condition] ;
@@ -75,6 +77,11 @@ edgeArrow
     | '-[' edgeLabel ']-'      # undirectedArrow
     ;
 edgeLabel   : ID assignments? ;
+
+// [name:] Kind(corner, corner, corner, ...) [{ assignments }] [where condition] ;
+faceStmt
+    : (name=ID ':')? kind=ID '(' corners+=ID (',' corners+=ID)* ')' assignments? whereClause? ';'
+    ;
 
 // ---- rules -----------------------------------------------------------------
 ruleDecl    : 'rule' ID ruleOption* '{' matchBlock ruleItem* '}' ;

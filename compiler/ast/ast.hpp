@@ -82,8 +82,18 @@ struct EdgeStmt {
     Span span;
 };
 
+// `name: Kind(a, b, c) {..} where cond;` a face and its corners, in order.
+struct FaceStmt {
+    std::optional<Ident> name;
+    Ident kind;
+    std::vector<Ident> corners;
+    std::vector<Assignment> assigns;
+    ExprPtr where;
+    Span span;
+};
+
 struct GraphStmt {
-    std::variant<NodeStmt, EdgeStmt> stmt;
+    std::variant<NodeStmt, EdgeStmt, FaceStmt> stmt;
 };
 
 struct MatchStmt;
@@ -142,7 +152,7 @@ struct FnDecl { Ident name; std::vector<FnParam> params; TypeRef result; ExprPtr
 struct AttrDecl { Ident name; TypeRef type; ExprPtr value; Span span; };
 struct StyleProp { Ident name; ExprPtr value; Span span; };
 struct KindDecl {
-    bool isEdge = false;
+    enum class Class { Node, Edge, Face } cls = Class::Node;
     std::optional<bool> directed;   // edges: `directed` / `undirected` / unspecified
     Ident name;
     std::vector<AttrDecl> attrs;

@@ -160,7 +160,7 @@ private:
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             const auto& kind = prog_.kinds[k];
             if (kind.attrs.empty()) continue;
-            out += "struct Kind" + str(static_cast<long long>(k)) + " {  // " + (kind.cls == ir::ElemClass::Node ? "node " : "edge ") + kind.name + "\n";
+            out += "struct Kind" + str(static_cast<long long>(k)) + " {  // " + rt::elemClassName(kind.cls) + " " + kind.name + "\n";
             for (std::size_t a = 0; a < kind.attrs.size(); ++a)
                 out += "    " + cppType(kind.attrs[a].type) + " a" + str(static_cast<long long>(a)) + "{};  // " + kind.attrs[a].name + "\n";
             out += "};\n";
@@ -196,7 +196,7 @@ private:
     std::string emitConstructor() {
         std::string out = "    Grammar() : graph_(std::vector<KindInfo>{";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
-            out += (k ? ", " : "") + std::string("KindInfo{") + (prog_.kinds[k].cls == ir::ElemClass::Edge ? "ElemClass::Edge" : "ElemClass::Node") +
+            out += (k ? ", " : "") + std::string("KindInfo{") + (prog_.kinds[k].cls == ir::ElemClass::Edge ? "ElemClass::Edge" : prog_.kinds[k].cls == ir::ElemClass::Face ? "ElemClass::Face" : "ElemClass::Node") +
                    ", " + (prog_.kinds[k].directed ? "true" : "false") + "}";
         out += "}, std::vector<std::string>{";
         for (std::size_t i = 0; i < prog_.styleProps.size(); ++i) out += (i ? ", " : "") + cppString(prog_.styleProps[i]);
@@ -399,9 +399,9 @@ private:
     }
 
     std::string emitAttribute() {
-        std::string out = "    Value attribute(ElemClass cls, std::uint32_t id, int attr) const override {\n        const bool isEdge = cls == ElemClass::Edge;\n";
-        out += "        const int kind = isEdge ? graph_.edgeKind(id) : graph_.nodeKind(id);\n";
-        out += "        const std::uint32_t slot = isEdge ? graph_.edgeSlot(id) : graph_.nodeSlot(id);\n        (void)slot; (void)attr;\n";
+        std::string out = "    Value attribute(ElemClass cls, std::uint32_t id, int attr) const override {\n";
+        out += "        const int kind = graph_.kindOf(cls, id);\n";
+        out += "        const std::uint32_t slot = graph_.slotOf(cls, id);\n        (void)slot; (void)attr;\n";
         out += "        switch (kind) {\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             const auto& kind = prog_.kinds[k];

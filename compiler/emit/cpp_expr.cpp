@@ -96,7 +96,8 @@ std::string cppLiteral(const ir::Value& v, const ir::Type& t) {
 }
 
 std::string ExprGen::attrAccess(int kind, const std::string& id, ir::ElemClass cls, int attr, const std::string& graph) const {
-    return "store_" + std::to_string(kind) + "[" + graph + (cls == ir::ElemClass::Edge ? ".edgeSlot(" : ".nodeSlot(") + id + ")].a" +
+    const char* slot = cls == ir::ElemClass::Edge ? ".edgeSlot(" : cls == ir::ElemClass::Face ? ".faceSlot(" : ".nodeSlot(";
+    return "store_" + std::to_string(kind) + "[" + graph + slot + id + ")].a" +
            std::to_string(attr);
     (void)prog_;
 }
@@ -107,16 +108,8 @@ std::string ExprGen::place(const ir::Expr& e, std::string& out, const std::strin
 }
 
 std::string ExprGen::fact(const ir::Expr& e, const std::string& id, ir::ElemClass cls, const std::string& g) {
-    if (cls == ir::ElemClass::Edge) return e.fact == ir::ElemFact::Age ? g + ".edgeAge(" + id + ")" : "static_cast<long long>(" + id + ")";
-    switch (e.fact) {
-    case ir::ElemFact::Pos: return g + ".pos(" + id + ")";
-    case ir::ElemFact::Age: return g + ".nodeAge(" + id + ")";
-    case ir::ElemFact::Id: return "static_cast<long long>(" + id + ")";
-    case ir::ElemFact::Degree: return "static_cast<long long>(" + g + ".degree(" + id + "))";
-    case ir::ElemFact::InDegree: return "static_cast<long long>(" + g + ".inDegree(" + id + "))";
-    case ir::ElemFact::OutDegree: return "static_cast<long long>(" + g + ".outDegree(" + id + "))";
-    }
-    return "0LL";
+    const char* c = cls == ir::ElemClass::Edge ? "ElemClass::Edge" : cls == ir::ElemClass::Face ? "ElemClass::Face" : "ElemClass::Node";
+    return std::string("rt::fact::") + rt::elementFactEntry(e.fact).name + "(" + g + ", " + c + ", " + id + ")";
 }
 
 std::string ExprGen::display(const std::string& value, const ir::Type& t) {

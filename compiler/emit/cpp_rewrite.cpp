@@ -7,6 +7,7 @@ namespace {
 std::string str(int i) { return std::to_string(i); }
 std::string node(int h) { return "h" + str(h); }
 std::string edge(int h) { return "k" + str(h); }
+std::string face(int h) { return "q" + str(h); }
 std::string reg(int r) { return RewritePrinter::reg(r); }
 // An attribute's value at commit time: a literal as it is, a register as prepare kept it.
 std::string attrValue(const lower::Operand& v) {
@@ -83,6 +84,16 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
                        [&](const lower::SetEdgeStyle& o) {
                            commit += c + "G.setEdgeStyle(" + edge(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
+                       [&](const lower::CreateFace& o) {
+                           std::string corners;
+                           for (int n : o.corners) corners += (corners.empty() ? "" : ", ") + node(n);
+                           commit += c + "const FaceId " + face(o.handle) + " = G.addFace(" + str(o.kind) + ", std::array<NodeId, " +
+                                     str(static_cast<int>(o.corners.size())) + ">{" + corners + "}, step);\n" + c + "(void)" + face(o.handle) +
+                                     ";\n" + record(o.kind, o.attrs, face(o.handle), ir::ElemClass::Face, c);
+                       },
+                       [&](const lower::SetFaceStyle& o) {
+                           commit += c + "G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                       },
                    },
                    op);
     }
@@ -101,7 +112,8 @@ std::string RewritePrinter::record(int kind, const std::vector<lower::AttrWrite>
     if (prog_.kinds[kind].attrs.empty()) return "";
     std::string out = c + "{\n" + c + "    Kind" + str(kind) + " rec = default_" + str(kind) + ";\n";
     for (const auto& w : attrs) out += c + "    rec.a" + str(w.attr) + " = " + attrValue(w.value) + ";\n";
-    return out + c + "    G.set" + (cls == ir::ElemClass::Edge ? "Edge" : "Node") + "Slot(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
+    const char* setSlot = cls == ir::ElemClass::Edge ? "setEdgeSlot" : cls == ir::ElemClass::Face ? "setFaceSlot" : "setNodeSlot";
+    return out + c + "    G." + setSlot + "(" + element + ", store_" + str(kind) + ".add(rec));\n" + c + "}\n";
 }
 
 std::string RewritePrinter::placement(const lower::Place& o, const std::string& in) {

@@ -65,20 +65,7 @@ Value call(const ir::Expr& e, EvalFrame& f) {
 
 
 Value fact(const ir::Expr& e, EvalFrame& f, ir::ElemClass cls, std::uint32_t id) {
-    const rt::Graph& g = *f.graph;
-    if (cls == ir::ElemClass::Edge) {
-        if (e.fact == ir::ElemFact::Age) return g.edgeAge(id);
-        return static_cast<long long>(id);
-    }
-    switch (e.fact) {
-    case ir::ElemFact::Pos: return g.pos(id);
-    case ir::ElemFact::Age: return g.nodeAge(id);
-    case ir::ElemFact::Id: return static_cast<long long>(id);
-    case ir::ElemFact::Degree: return static_cast<long long>(g.degree(id));
-    case ir::ElemFact::InDegree: return static_cast<long long>(g.inDegree(id));
-    case ir::ElemFact::OutDegree: return static_cast<long long>(g.outDegree(id));
-    }
-    return 0LL;
+    return rt::elementFact(*f.graph, cls, id, e.fact);
 }
 
 Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f);
@@ -93,8 +80,7 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     case ExprOp::Attr:
         if (e.elem.cls == ir::ElemClass::Edge) return f.graph->edgeAttr(f.edges[e.elem.index], e.index);
         return f.graph->nodeAttr(f.nodes[e.elem.index], e.index);
-    case ExprOp::SelfAttr:
-        return f.selfClass == ir::ElemClass::Edge ? f.graph->edgeAttr(f.self, e.index) : f.graph->nodeAttr(f.self, e.index);
+    case ExprOp::SelfAttr: return f.graph->attrOf(f.selfClass, f.self, e.index);
     case ExprOp::Fact: {
         const ir::ElemClass cls = e.elem.cls;
         return fact(e, f, cls, cls == ir::ElemClass::Edge ? f.edges[e.elem.index] : f.nodes[e.elem.index]);

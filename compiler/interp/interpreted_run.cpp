@@ -53,7 +53,7 @@ std::map<long long, long long> InterpretedRun::priorityLimits() {
 std::vector<rt::DrawItem> InterpretedRun::drawItems() { return interp::drawItems(graph_, state_); }
 
 rt::Value InterpretedRun::attribute(rt::ElemClass cls, std::uint32_t id, int attr) const {
-    return cls == rt::ElemClass::Edge ? graph_.edgeAttr(id, attr) : graph_.nodeAttr(id, attr);
+    return graph_.attrOf(cls, id, attr);
 }
 
 std::optional<rt::SourceLocation> InterpretedRun::locate(const std::exception& e) const {

@@ -50,8 +50,10 @@ void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::v
     auto position = [&](int reg) { return reg >= 0 ? std::get<rt::vec2>(registers[reg]) : rt::vec2{0, 0}; };
     auto& nodes = hostOf_;
     auto& edges = edgeOf_;
+    auto& faces = faceOf_;
     nodes.assign(static_cast<std::size_t>(p.nodeHandles), rt::kNoId);
     edges.assign(static_cast<std::size_t>(p.edgeHandles), rt::kNoId);
+    faces.assign(static_cast<std::size_t>(p.faceHandles), rt::kNoId);
     for (const auto& op : p.commit) {
         std::visit(lower::Overloaded{
                        [&](const lower::DeleteEdge& o) { g.removeEdge(m.edges[o.matchEdge]); },
@@ -77,6 +79,15 @@ void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::v
                        },
                        [&](const lower::SetEdgeStyle& o) {
                            g.setEdgeStyle(edges[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
+                       },
+                       [&](const lower::CreateFace& o) {
+                           corners_.clear();
+                           for (int c : o.corners) corners_.push_back(nodes[c]);
+                           faces[o.handle] = g.addFace(o.kind, corners_, step);
+                           for (const auto& w : o.attrs) g.initFaceAttr(faces[o.handle], w.attr, value(w.value));
+                       },
+                       [&](const lower::SetFaceStyle& o) {
+                           g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
                    },
                    op);

@@ -27,6 +27,8 @@ private:
     std::vector<std::optional<rt::vec2>> placed_;   // automatic positions, by daughter node
     std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles
     std::vector<rt::EdgeId> edgeOf_;   // and edge handles
+    std::vector<rt::FaceId> faceOf_;   // and face handles
+    std::vector<rt::NodeId> corners_;  // a new face's
 };
 
 }  // namespace g2d::interp

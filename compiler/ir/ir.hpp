@@ -15,6 +15,7 @@
 #include "diag/source.hpp"
 #include "g2d/builtins.hpp"
 #include "g2d/elem_class.hpp"
+#include "g2d/element_facts.hpp"
 #include "g2d/operators.hpp"
 #include "g2d/pick.hpp"
 
@@ -64,7 +65,7 @@ struct ElemRef {
 };
 
 // Facts every element has, besides its declared attributes.
-enum class ElemFact { Pos, Age, Id, Degree, InDegree, OutDegree };
+using ElemFact = rt::ElemFact;   // g2d/element_facts.hpp
 
 // ---- expressions -----------------------------------------------------------------
 // The built-in functions are the runtime's (g2d/builtins.hpp): one definition
@@ -187,9 +188,19 @@ struct AxiomEdge {
     Span span;
 };
 
+struct AxiomFace {
+    std::string name;                  // "" when anonymous
+    int kind = -1;
+    std::vector<int> corners;          // axiom node indices, in order
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
 struct Axiom {
     std::vector<AxiomNode> nodes;
     std::vector<AxiomEdge> edges;
+    std::vector<AxiomFace> faces;
     Span span;
 };
 

@@ -5,12 +5,14 @@ namespace g2d::lower {
 namespace {
 
 // The axiom's values are evaluated in the order it is written (per node its
-// position, attributes and styles; then per edge its attributes and styles);
-// then its nodes are created, with their styles, and its edges.
+// position, attributes and styles; then per edge, then per face, its
+// attributes and styles); then its nodes are created, with their styles,
+// then its edges, then its faces.
 RewriteProgram lowerAxiom(const ir::Axiom& ax) {
     RewriteProgram p;
     p.nodeHandles = static_cast<int>(ax.nodes.size());
     p.edgeHandles = static_cast<int>(ax.edges.size());
+    p.faceHandles = static_cast<int>(ax.faces.size());
     auto operand = [&](const ir::Expr& value) {
         if (value.op == ir::ExprOp::Literal) return Operand{-1, &value, value.type};
         p.registers.push_back(value.type);
@@ -18,7 +20,7 @@ RewriteProgram lowerAxiom(const ir::Axiom& ax) {
         p.prepare.push_back(Eval{reg, &value});
         return Operand{reg, nullptr, value.type};
     };
-    std::vector<CommitOp> nodes, edges;
+    std::vector<CommitOp> nodes, edges, faces;
     for (std::size_t i = 0; i < ax.nodes.size(); ++i) {
         const auto& n = ax.nodes[i];
         const int h = static_cast<int>(i);
@@ -41,8 +43,17 @@ RewriteProgram lowerAxiom(const ir::Axiom& ax) {
         edges.push_back(std::move(create));
         for (const auto& s : e.styles) edges.push_back(SetEdgeStyle{h, &s, operand(s.value)});
     }
+    for (std::size_t i = 0; i < ax.faces.size(); ++i) {
+        const auto& f = ax.faces[i];
+        const int h = static_cast<int>(i);
+        CreateFace create{h, f.kind, f.corners, {}};
+        for (const auto& a : f.assigns) create.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+        faces.push_back(std::move(create));
+        for (const auto& s : f.styles) faces.push_back(SetFaceStyle{h, &s, operand(s.value)});
+    }
     p.commit = std::move(nodes);
     p.commit.insert(p.commit.end(), std::make_move_iterator(edges.begin()), std::make_move_iterator(edges.end()));
+    p.commit.insert(p.commit.end(), std::make_move_iterator(faces.begin()), std::make_move_iterator(faces.end()));
     return p;
 }
 

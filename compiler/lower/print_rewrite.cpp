@@ -84,9 +84,16 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                               else if constexpr (std::is_same_v<T, CreateEdge>)
                                   return k(o.handle) + " = new " + prog.kinds[o.kind].name + " " + h(o.src) + " -> " + h(o.dst) +
                                          attrs(prog, o.kind, o.attrs);
-                              else {
-                                  static_assert(std::is_same_v<T, SetEdgeStyle>, "an operation the printer does not know");
+                              else if constexpr (std::is_same_v<T, SetEdgeStyle>)
                                   return k(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              else if constexpr (std::is_same_v<T, CreateFace>) {
+                                  std::string corners;
+                                  for (int c : o.corners) corners += (corners.empty() ? "" : ", ") + h(c);
+                                  return "f" + std::to_string(o.handle) + " = new " + prog.kinds[o.kind].name + "(" + corners + ")" +
+                                         attrs(prog, o.kind, o.attrs);
+                              } else {
+                                  static_assert(std::is_same_v<T, SetFaceStyle>, "an operation the printer does not know");
+                                  return "f" + std::to_string(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
                               }
                           },
                           op) +

@@ -93,14 +93,22 @@ struct CreateEdge {
     std::vector<AttrWrite> attrs;
 };
 struct SetEdgeStyle { int handle; const ir::StyleAssign* style; Operand value; };
+// Faces are addressed by face handle (= the face's index among the rewrite's).
+struct CreateFace {
+    int handle, kind;
+    std::vector<int> corners;                            // node handles, in order (>= 3, distinct)
+    std::vector<AttrWrite> attrs;
+};
+struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; };
 using CommitOp = std::variant<DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetNodeAttr, TouchNodeValues,
-                              SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle>;
+                              SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle, CreateFace,
+                              SetFaceStyle>;
 
 struct RewriteProgram {
     std::vector<PrepareOp> prepare;
     std::vector<CommitOp> commit;
     std::vector<ir::Type> registers;
-    int nodeHandles = 0, edgeHandles = 0;
+    int nodeHandles = 0, edgeHandles = 0, faceHandles = 0;
     bool placement = false;             // prepare has a Place (the `placed` positions exist)
     // What the rewrite deletes or changes, as pattern slots (parallel steps
     // keep rewrites that write what others read apart: rt::WriteSet).

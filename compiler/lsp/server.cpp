@@ -47,6 +47,8 @@ int symbolKindNumber(SymbolKind k) {   // LSP SymbolKind
     switch (k) {
     case SymbolKind::NodeKind: return 5;       // Class
     case SymbolKind::EdgeKind: return 23;      // Struct
+    case SymbolKind::FaceKind: return 23;      // Struct
+    case SymbolKind::Face: return 13;          // Variable
     case SymbolKind::Attribute: return 7;      // Property
     case SymbolKind::Rule: return 6;           // Method
     case SymbolKind::Function: return 12;      // Function
@@ -62,6 +64,8 @@ int completionKindNumber(SymbolKind k) {   // LSP CompletionItemKind
     switch (k) {
     case SymbolKind::NodeKind: return 7;       // Class
     case SymbolKind::EdgeKind: return 22;      // Struct
+    case SymbolKind::FaceKind: return 22;      // Struct
+    case SymbolKind::Face: return 6;           // Variable
     case SymbolKind::Attribute: return 10;     // Property
     case SymbolKind::Function: return 3;       // Function
     case SymbolKind::Const: return 21;         // Constant
@@ -301,7 +305,7 @@ private:
             json top = entry(s);
             for (const auto& c : d.index->all()) {
                 if (c.at.file != kMainFile || c.container != s.name) continue;
-                const bool member = (c.kind == SymbolKind::Attribute && (s.kind == SymbolKind::NodeKind || s.kind == SymbolKind::EdgeKind)) ||
+                const bool member = (c.kind == SymbolKind::Attribute && (s.kind == SymbolKind::NodeKind || s.kind == SymbolKind::EdgeKind || s.kind == SymbolKind::FaceKind)) ||
                                     (c.kind == SymbolKind::Enumerator && s.kind == SymbolKind::Enum) ||
                                     (c.scope.valid() && (s.kind == SymbolKind::Rule || s.kind == SymbolKind::Function));
                 if (member) top["children"].push_back(entry(c));
@@ -324,16 +328,17 @@ private:
             // After `x.`: x's attributes (all attributes if x's kind is unknown),
             // and the facts of its class (an edge has no position).
             std::string kind;
-            bool isEdge = false;
+            ir::ElemClass cls = ir::ElemClass::Node;
             if (const Symbol* r = p.doc->index->resolve(p.receiver, kMainFile, p.line, p.col)) {
                 kind = r->typeName;
-                isEdge = r->kind == SymbolKind::PatternEdge || r->kind == SymbolKind::DaughterEdge;
+                if (r->kind == SymbolKind::PatternEdge || r->kind == SymbolKind::DaughterEdge) cls = ir::ElemClass::Edge;
+                if (r->kind == SymbolKind::Face) cls = ir::ElemClass::Face;
             }
             for (const auto& s : p.doc->index->all())
                 if (s.kind == SymbolKind::Attribute && (kind.empty() || s.container == kind))
                     add(s.name, 10, s.typeName + " (" + s.container + ")");
             for (const auto& f : sema::elementFacts())
-                if (!isEdge || f.onEdges) add(f.name, 10, f.meaning);
+                if (sema::hasFact(f, cls)) add(f.name, 10, f.meaning);
             return items;
         }
         for (const Symbol* s : p.doc->index->visible(kMainFile, p.line, p.col))

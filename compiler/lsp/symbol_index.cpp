@@ -33,6 +33,8 @@ const char* SymbolIndex::describe(SymbolKind kind) {
     switch (kind) {
     case SymbolKind::NodeKind: return "node kind";
     case SymbolKind::EdgeKind: return "edge kind";
+    case SymbolKind::FaceKind: return "face kind";
+    case SymbolKind::Face: return "face";
     case SymbolKind::Attribute: return "attribute";
     case SymbolKind::Rule: return "production";
     case SymbolKind::Function: return "function";
@@ -66,6 +68,8 @@ void SymbolIndex::graphStmt(const ast::GraphStmt& g, SymbolKind nodeKind, Symbol
         if (n->kind || n->wildcard) add(nodeKind, n->name, scope, rule, n->wildcard ? "*" : n->kind->name);
     } else if (const auto* e = std::get_if<ast::EdgeStmt>(&g.stmt)) {
         if (e->name && !e->kind.name.empty()) add(edgeKind, *e->name, scope, rule, e->kind.name);
+    } else if (const auto* f = std::get_if<ast::FaceStmt>(&g.stmt)) {
+        if (f->name) add(SymbolKind::Face, *f->name, scope, rule, f->kind.name);
     }
 }
 
@@ -85,7 +89,7 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
                 [&](const auto& d) {
                     using T = std::decay_t<decltype(d)>;
                     if constexpr (std::is_same_v<T, ast::KindDecl>) {
-                        add(d.isEdge ? SymbolKind::EdgeKind : SymbolKind::NodeKind, d.name, Span{});
+                        add(d.cls == ast::KindDecl::Class::Edge ? SymbolKind::EdgeKind : d.cls == ast::KindDecl::Class::Face ? SymbolKind::FaceKind : SymbolKind::NodeKind, d.name, Span{});
                         for (const auto& a : d.attrs) add(SymbolKind::Attribute, a.name, Span{}, d.name.name, a.type.name.name);
                     } else if constexpr (std::is_same_v<T, ast::RuleDecl>) {
                         add(SymbolKind::Rule, d.name, Span{});

@@ -14,7 +14,7 @@
 namespace g2d::lsp {
 
 enum class SymbolKind {
-    NodeKind, EdgeKind, Attribute, Rule, Function, FnParam, Param, Const, Enum, Enumerator,
+    NodeKind, EdgeKind, FaceKind, Face, Attribute, Rule, Function, FnParam, Param, Const, Enum, Enumerator,
     PatternNode, PatternEdge, DaughterNode, DaughterEdge, AxiomNode, Let, Import
 };
 

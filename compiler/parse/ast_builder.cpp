@@ -137,9 +137,13 @@ public:
         if (auto* n = dynamic_cast<P::NodeKindContext*>(ctx)) {
             k.name = ident(n->ID());
             body = n->kindBody();
+        } else if (auto* f = dynamic_cast<P::FaceKindContext*>(ctx)) {
+            k.cls = KindDecl::Class::Face;
+            k.name = ident(f->ID());
+            body = f->kindBody();
         } else {
             auto* e = static_cast<P::EdgeKindContext*>(ctx);
-            k.isEdge = true;
+            k.cls = KindDecl::Class::Edge;
             k.name = ident(e->ID());
             if (e->DIRECTED) k.directed = true;
             if (e->UNDIRECTED) k.directed = false;
@@ -179,6 +183,16 @@ public:
             if (auto* p = n->position()) s.position = expr(p->expr());
             if (n->assignments()) { s.hasAssignBlock = true; s.assigns = assignments(n->assignments()); }
             if (auto* w = n->whereClause()) s.where = expr(w->expr());
+            return GraphStmt{std::move(s)};
+        }
+        if (auto* f = ctx->faceStmt()) {
+            FaceStmt s;
+            s.span = span(f);
+            if (f->name) s.name = ident(f->name);
+            s.kind = ident(f->kind);
+            for (auto* c : f->corners) s.corners.push_back(ident(c));
+            s.assigns = assignments(f->assignments());
+            if (auto* w = f->whereClause()) s.where = expr(w->expr());
             return GraphStmt{std::move(s)};
         }
         auto* e = ctx->edgeStmt();

@@ -117,15 +117,17 @@ void declareKindName(Globals& g, const ast::KindDecl& d) {
     if (g.prog.kinds.size() >= rt::kMaxKinds) {
         if (!g.tooManyKinds)
             g.diags.error(d.name.span, "too many kinds: a grammar may declare at most " + std::to_string(rt::kMaxKinds) +
-                                           " node and edge kinds");
+                                           " node, edge and face kinds");
         g.tooManyKinds = true;
         return;
     }
-    if (!declareTopLevel(g, d.name, d.isEdge ? "edge kind" : "node kind")) return;
+    using Class = ast::KindDecl::Class;
+    const ir::ElemClass cls = d.cls == Class::Edge ? ir::ElemClass::Edge : d.cls == Class::Face ? ir::ElemClass::Face : ir::ElemClass::Node;
+    if (!declareTopLevel(g, d.name, std::string(elemClassName(cls)) + " kind")) return;
     ir::Kind k;
     k.name = d.name.name;
-    k.cls = d.isEdge ? ir::ElemClass::Edge : ir::ElemClass::Node;
-    k.directed = d.isEdge && d.directed.value_or(false);
+    k.cls = cls;
+    k.directed = cls == ir::ElemClass::Edge && d.directed.value_or(false);
     k.span = d.span;
     g.kinds[k.name] = static_cast<int>(g.prog.kinds.size());
     g.prog.kinds.push_back(std::move(k));
@@ -267,7 +269,7 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     const int kindIndex = it->second;
     if (g.prog.kinds[kindIndex].span.line != d.span.line || g.prog.kinds[kindIndex].span.file != d.span.file)
         return;  // a duplicate declaration, already reported
-    if (!d.isEdge && d.directed.has_value()) {
+    if (d.cls != ast::KindDecl::Class::Edge && d.directed.has_value()) {
         g.diags.error(d.name.span, "only edge kinds can be directed or undirected");
     }
     std::map<std::string, Span> seen;

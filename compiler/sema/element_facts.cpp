@@ -1,24 +1,30 @@
 #include "sema/element_facts.hpp"
 
+#include <string_view>
+
 namespace g2d::sema {
 
 const std::vector<ElementFact>& elementFacts() {
-    using F = ir::ElemFact;
-    using T = ir::TypeKind;
-    static const std::vector<ElementFact> facts = {
-        {"pos", F::Pos, T::Vec2, false, "vec2: the node's position"},
-        {"age", F::Age, T::Int, true, "int: the step that created the element (0: the axiom)"},
-        {"id", F::Id, T::Int, true, "int: the element's id (never reused)"},
-        {"degree", F::Degree, T::Int, false, "int: the node's edges, both directions"},
-        {"in_degree", F::InDegree, T::Int, false, "int: the node's incoming edges"},
-        {"out_degree", F::OutDegree, T::Int, false, "int: the node's outgoing edges"},
-    };
+    static const std::vector<ElementFact> facts = [] {
+        std::vector<ElementFact> out;
+        std::size_t count = 0;
+        const rt::ElementFactEntry* entries = rt::elementFactEntries(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const auto& e = entries[i];
+            const std::string_view t = e.typeName;
+            const ir::TypeKind type = t == "vec2" ? ir::TypeKind::Vec2 : t == "float" ? ir::TypeKind::Float : ir::TypeKind::Int;
+            out.push_back(ElementFact{e.name, e.id, type, e.classes, std::string(e.typeName) + ": " + e.meaning});
+        }
+        return out;
+    }();
     return facts;
 }
 
-const ElementFact* findElementFact(const std::string& name, bool isNode) {
+bool hasFact(const ElementFact& f, ir::ElemClass cls) { return (f.classes & rt::classBit(cls)) != 0; }
+
+const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls) {
     for (const auto& f : elementFacts())
-        if (name == f.name && (isNode || f.onEdges)) return &f;
+        if (name == f.name && hasFact(f, cls)) return &f;
     return nullptr;
 }
 

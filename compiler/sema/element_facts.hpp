@@ -1,6 +1,7 @@
 #pragma once
 // The facts every element has besides its declared attributes (`n.pos`,
-// `e.age`, ...): one table that the checker and the editor's completion read.
+// `e.length`, `f.area`, ...), as the checker and the editor's completion
+// see them: the runtime's list (g2d/element_facts.hpp), typed.
 #include <vector>
 
 #include "ir/ir.hpp"
@@ -11,13 +12,14 @@ struct ElementFact {
     const char* name;
     ir::ElemFact fact;
     ir::TypeKind type;
-    bool onEdges;          // every fact is a node's; these are an edge's too
-    const char* meaning;   // for completion and hovers
+    std::uint8_t classes;  // rt::kOnNodes | kOnEdges | kOnFaces
+    std::string meaning;   // for completion and hovers: "type: what it is"
 };
 
 const std::vector<ElementFact>& elementFacts();
+bool hasFact(const ElementFact& f, ir::ElemClass cls);
 
-// The fact `name` of a node (isNode) or an edge, or null.
-const ElementFact* findElementFact(const std::string& name, bool isNode);
+// The fact `name` of an element of class `cls`, or null.
+const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls);
 
 }  // namespace g2d::sema

@@ -160,8 +160,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         }
     }
     if (env.selfKind >= 0) {
-        const bool isNode = g_.prog.kinds[env.selfKind].cls == ir::ElemClass::Node;
-        if (const ElementFact* f = findElementFact(id, isNode)) {
+        if (const ElementFact* f = findElementFact(id, g_.prog.kinds[env.selfKind].cls)) {
             Expr r;
             r.op = ExprOp::SelfFact;
             r.fact = f->fact;
@@ -315,9 +314,23 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         g_.diags.error(e.span, b.unreadable);
         return std::nullopt;
     }
-    const bool isNode = b.ref.cls == ir::ElemClass::Node;
-    // A fact that is a node's only may still be a declared edge attribute.
-    if (const ElementFact* f = findElementFact(member.name, isNode)) {
+    // A declared attribute first: it hides a fact of the same name (an edge
+    // kind's own `length`, declared before edges had the fact).
+    if (b.kind >= 0) {
+        const auto& kind = g_.prog.kinds[b.kind];
+        for (std::size_t i = 0; i < kind.attrs.size(); ++i) {
+            if (kind.attrs[i].name != member.name) continue;
+            Expr r;
+            r.op = ExprOp::Attr;
+            r.elem = b.ref;
+            r.index = static_cast<int>(i);
+            r.type = kind.attrs[i].type;
+            r.span = e.span;
+            if (env.deps) env.deps->insert(b.ref);
+            return r;
+        }
+    }
+    if (const ElementFact* f = findElementFact(member.name, b.ref.cls)) {
         Expr r;
         r.op = ExprOp::Fact;
         r.elem = b.ref;
@@ -327,31 +340,22 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         if (env.deps) env.deps->insert(b.ref);
         return r;
     }
+    const bool isNode = b.ref.cls == ir::ElemClass::Node;
     if (b.kind < 0 && !isNode) return std::nullopt;   // an edge whose kind was unknown (reported already)
     if (b.kind < 0) {
         std::string facts;
-        for (const auto& f : elementFacts()) facts += (facts.empty() ? "" : ", ") + std::string(f.name);
+        for (const auto& f : elementFacts())
+            if (hasFact(f, ir::ElemClass::Node)) facts += (facts.empty() ? "" : ", ") + std::string(f.name);
         g_.diags.error(member.span, "wildcard node `" + b.name + "` matches any kind, so it has no attribute `" +
                                         member.name + "`; only " + facts + " can be read");
         return std::nullopt;
     }
     const auto& kind = g_.prog.kinds[b.kind];
-    for (std::size_t i = 0; i < kind.attrs.size(); ++i) {
-        if (kind.attrs[i].name != member.name) continue;
-        Expr r;
-        r.op = ExprOp::Attr;
-        r.elem = b.ref;
-        r.index = static_cast<int>(i);
-        r.type = kind.attrs[i].type;
-        r.span = e.span;
-        if (env.deps) env.deps->insert(b.ref);
-        return r;
-    }
     std::vector<std::string> candidates;
     for (const auto& a : kind.attrs) candidates.push_back(a.name);
     for (const auto& f : elementFacts())
-        if (isNode || f.onEdges) candidates.push_back(f.name);
-    g_.diags.error(member.span, std::string(isNode ? "node" : "edge") + " kind `" + kind.name +
+        if (hasFact(f, b.ref.cls)) candidates.push_back(f.name);
+    g_.diags.error(member.span, std::string(rt::elemClassName(b.ref.cls)) + " kind `" + kind.name +
                                     "` has no attribute `" + member.name + "`" + suggest(member.name, candidates));
     return std::nullopt;
 }

@@ -1,6 +1,7 @@
 #include "sema/graph_checker.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <set>
 
 #include "g2d/style_store.hpp"
@@ -20,19 +21,18 @@ namespace {
 // Looks up a kind by name, requiring the given class; reports otherwise.
 int resolveKind(Globals& g, const ast::Ident& name, ElemClass cls) {
     auto it = g.kinds.find(name.name);
-    const char* want = cls == ElemClass::Node ? "node" : "edge";
+    const std::string want = rt::elemClassName(cls);
+    auto article = [](ElemClass c) { return std::string(c == ElemClass::Edge ? "an " : "a ") + rt::elemClassName(c); };
     if (it == g.kinds.end()) {
         std::vector<std::string> candidates;
         for (const auto& k : g.prog.kinds)
             if (k.cls == cls) candidates.push_back(k.name);
-        g.diags.error(name.span, std::string("unknown ") + want + " kind `" + name.name + "`" +
-                                     suggest(name.name, candidates));
+        g.diags.error(name.span, "unknown " + want + " kind `" + name.name + "`" + suggest(name.name, candidates));
         return -1;
     }
-    if (g.prog.kinds[it->second].cls != cls) {
-        g.diags.error(name.span, "`" + name.name + "` is " + (cls == ElemClass::Node ? "an edge" : "a node") +
-                                     " kind, but " + (cls == ElemClass::Node ? "a node" : "an edge") + " needs " +
-                                     (cls == ElemClass::Node ? "a node" : "an edge") + " kind");
+    if (const ElemClass is = g.prog.kinds[it->second].cls; is != cls) {
+        g.diags.error(name.span, "`" + name.name + "` is " + article(is) + " kind, but " + article(cls) + " needs " +
+                                     article(cls) + " kind");
         return -1;
     }
     return it->second;
@@ -59,6 +59,7 @@ bool usesPlaced(const ir::Expr& e) {
 
 const ast::NodeStmt* asNode(const ast::GraphStmt& s) { return std::get_if<ast::NodeStmt>(&s.stmt); }
 const ast::EdgeStmt* asEdge(const ast::GraphStmt& s) { return std::get_if<ast::EdgeStmt>(&s.stmt); }
+const ast::FaceStmt* asFace(const ast::GraphStmt& s) { return std::get_if<ast::FaceStmt>(&s.stmt); }
 
 void reportDuplicate(Globals& g, const ast::Ident& name, Span previous) {
     auto& d = g.diags.error(name.span, "`" + name.name + "` is already declared in this production");
@@ -106,7 +107,7 @@ void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<a
         if (it == k.attrs.end()) {
             std::vector<std::string> candidates;
             for (const auto& at : k.attrs) candidates.push_back(at.name);
-            g.diags.error(a.name.span, std::string(k.cls == ElemClass::Node ? "node" : "edge") + " kind `" + k.name +
+            g.diags.error(a.name.span, std::string(rt::elemClassName(k.cls)) + " kind `" + k.name +
                                            "` has no attribute `" + a.name.name + "`" + suggest(a.name.name, candidates));
             continue;
         }
@@ -202,6 +203,40 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
         if (edge.kind >= 0) checkAssignments(g, ec, edge.kind, e->assigns, env, edge.assigns, edge.styles);
         ax.edges.push_back(std::move(edge));
     }
+    for (const auto& s : d.body) {
+        const auto* f = asFace(s);
+        if (!f) continue;
+        ir::AxiomFace face;
+        face.span = f->span;
+        if (f->name) {
+            face.name = f->name->name;
+            if (auto [it, inserted] = names.emplace(face.name, f->name->span); !inserted) {
+                auto& diag = g.diags.error(f->name->span, "`" + face.name + "` is already declared in the axiom");
+                diag.notes.push_back({it->second, "previous declaration is here"});
+            }
+        }
+        face.kind = resolveKind(g, f->kind, ElemClass::Face);
+        if (f->where) g.diags.error(f->where->span, "conditions (`where`) belong in a rule's match");
+        if (f->corners.size() < 3)
+            g.diags.error(f->span, "a face needs at least 3 corners, got " + std::to_string(f->corners.size()));
+        std::map<std::string, Span> seen;
+        for (const auto& c : f->corners) {
+            auto it = nodes.find(c.name);
+            if (it == nodes.end()) {
+                g.diags.error(c.span, names.count(c.name) ? "corner `" + c.name + "` is not a node"
+                                                          : "corner `" + c.name + "` is not a node of the axiom");
+                continue;
+            }
+            if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
+                auto& diag = g.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
+                diag.notes.push_back({prev->second, "first here"});
+                continue;
+            }
+            face.corners.push_back(it->second.first);
+        }
+        if (face.kind >= 0) checkAssignments(g, ec, face.kind, f->assigns, env, face.assigns, face.styles);
+        ax.faces.push_back(std::move(face));
+    }
     g.prog.axiom = std::move(ax);
 }
 
@@ -218,6 +253,7 @@ public:
         rule_.name = d_.name.name;
         rule_.span = d_.span;
         options();
+        rejectFaces();
         match();
         items();
         warnUnusedLets();
@@ -385,11 +421,31 @@ private:
         return ir::Condition{std::move(*e), std::vector<ElemRef>(deps.begin(), deps.end())};
     }
 
+    // Faces are declared and built in the axiom; rules do not match or
+    // create them yet (issue #28 is in progress).
+    void rejectFaces() {
+        auto reject = [&](const ast::GraphStmt& gs) {
+            if (const auto* f = asFace(gs))
+                g_.diags.error(f->span, "rules cannot match or create faces yet; faces can be declared and built in the axiom");
+        };
+        std::function<void(const std::vector<ast::MatchStmt>&)> inMatch = [&](const std::vector<ast::MatchStmt>& body) {
+            for (const auto& m : body) {
+                if (const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt)) reject(*gs);
+                else if (const auto* nac = std::get_if<ast::NacBlock>(&m.stmt)) inMatch(nac->body);
+            }
+        };
+        inMatch(d_.match);
+        for (const auto& item : d_.items)
+            if (const auto* block = std::get_if<ast::ProduceBlock>(&item.item))
+                for (const auto& ps : block->body)
+                    if (const auto* gs = std::get_if<ast::GraphStmt>(&ps.stmt)) reject(*gs);
+    }
+
     // Per-element `where` clauses of a pattern, then stand-alone ones.
     void patternConditions(const std::vector<ast::MatchStmt>& body, std::vector<ir::Condition>& out) {
         for (const auto& m : body) {
             if (const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt)) {
-                const ast::Expr* w = asNode(*gs) ? asNode(*gs)->where.get() : asEdge(*gs)->where.get();
+                const ast::Expr* w = asNode(*gs) ? asNode(*gs)->where.get() : asEdge(*gs) ? asEdge(*gs)->where.get() : nullptr;
                 if (w)
                     if (auto c = condition(*w, "a `where` condition")) out.push_back(std::move(*c));
             } else if (const auto* ws = std::get_if<ast::WhereStmt>(&m.stmt)) {
@@ -727,6 +783,7 @@ private:
                 continue;
             }
             const auto* e = asEdge(gs);
+            if (!e) continue;   // a face (rejected by rejectFaces)
             ir::DaughterEdge de;
             de.span = e->span;
             de.kind = resolveKind(g_, e->kind, ElemClass::Edge);

@@ -10,6 +10,7 @@ void lintProgram(Globals& g) {
     std::set<int> created;
     for (const auto& n : p.axiom.nodes) created.insert(n.kind);
     for (const auto& e : p.axiom.edges) created.insert(e.kind);
+    for (const auto& f : p.axiom.faces) created.insert(f.kind);
     for (const auto& r : p.rules)
         for (const auto& d : r.daughters) {
             for (const auto& n : d.nodes)

@@ -30,6 +30,17 @@ void resolve(DrawItem& item, int kind, StyleList own, const Graph& g, const std:
 std::vector<DrawItem> drawItems(const Graph& g, const std::vector<std::vector<std::string>>& enumValueNames,
                                 const KindStyle& kindStyle) {
     std::vector<DrawItem> items;
+    for (FaceId f = 0; f < g.faceCapacity(); ++f) {
+        if (!g.faceAlive(f)) continue;
+        DrawItem item;
+        item.cls = ElemClass::Face;
+        item.id = f;
+        CornerId c = g.firstCorner(f);
+        for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) item.corners.push_back(g.pos(g.cornerNode(c)));
+        item.a = item.b = g.centroid(f);
+        resolve(item, g.faceKind(f), g.faceStyle(f), g, enumValueNames, kindStyle);
+        items.push_back(std::move(item));
+    }
     for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
         if (!g.edgeAlive(e)) continue;
         DrawItem item;

@@ -40,6 +40,9 @@ FaceId Graph::addFace(int kind, std::span<const NodeId> corners, long long age) 
         if (at.first != kNoId) corners_[at.first].prevAtNode = c;
         at.first = c;
         ++at.count;
+        // A node's faces are a fact of the node (n.faces, e.faces at its edges):
+        // its matches are found again.
+        touchNode(corners[i]);
     }
     dirtyFaces_.push_back(id);
     faces_[id].marks |= kFaceChanged;
@@ -58,6 +61,7 @@ void Graph::removeFace(FaceId f) {
         else at.first = cr.nextAtNode;
         if (cr.nextAtNode != kNoId) corners_[cr.nextAtNode].prevAtNode = cr.prevAtNode;
         --at.count;
+        touchNode(cr.node);
     }
     // Swap-remove from the kind's index, fixing the moved face's slot.
     auto& kindList = kindNodes_[rec.kind];

@@ -1,5 +1,6 @@
 #include "g2d/json_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -60,7 +61,7 @@ std::string attributeJson(const Value& v, const JsonSchema& schema, const char* 
 std::string writeJson(const Graph& g, const JsonSchema& schema,
                       const std::vector<std::pair<std::string, Value>>& graphAttrs, const AttributeReader& reader) {
     const AttributeReader attr = reader ? reader : AttributeReader([&](ElemClass cls, std::uint32_t id, int a) {
-        return cls == ElemClass::Edge ? g.edgeAttr(id, a) : g.nodeAttr(id, a);
+        return g.attrOf(cls, id, a);
     });
     std::string out = "{\"directed\": true, \"multigraph\": true, \"graph\": {";
     for (std::size_t i = 0; i < graphAttrs.size(); ++i)
@@ -98,7 +99,29 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
                    attributeJson(attr(ElemClass::Edge, e, static_cast<int>(a)), schema, "edge", e, schema.attrNames[k][a]);
         out += "}";
     }
-    out += "]}\n";
+    out += "]";
+    // Faces, for grammars that declare a face kind (networkx ignores the key).
+    const bool faceKinds = std::any_of(g.kinds().begin(), g.kinds().end(), [](const KindInfo& k) { return k.cls == ElemClass::Face; });
+    if (faceKinds) {
+        out += ",\n\"faces\": [";
+        first = true;
+        for (FaceId f = 0; f < g.faceCapacity(); ++f) {
+            if (!g.faceAlive(f)) continue;
+            const int k = g.faceKind(f);
+            out += first ? "\n" : ",\n";
+            first = false;
+            out += "{\"id\": " + std::to_string(f) + ", \"kind\": " + jsonString(schema.kindNames[k]) + ", \"corners\": [";
+            CornerId c = g.firstCorner(f);
+            for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) out += (i ? ", " : "") + std::to_string(g.cornerNode(c));
+            out += "], \"age\": " + std::to_string(g.faceAge(f));
+            for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
+                out += ", " + jsonString(schema.attrNames[k][a]) + ": " +
+                       attributeJson(attr(ElemClass::Face, f, static_cast<int>(a)), schema, "face", f, schema.attrNames[k][a]);
+            out += "}";
+        }
+        out += "]";
+    }
+    out += "}\n";
     return out;
 }
 

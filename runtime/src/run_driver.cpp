@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "g2d/atomic_file.hpp"
+#include "g2d/obj_writer.hpp"
 #include "g2d/trace.hpp"
 #include "g2d/source_excerpt.hpp"
 
@@ -144,12 +145,13 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         return usageError(request, "--timeout must be a positive number of seconds");
 
     // Outputs are opened first, so an unwritable path fails before the work.
-    std::unique_ptr<AtomicFile> svgFile, jsonFile, traceHtmlFile, traceJsonFile;
+    std::unique_ptr<AtomicFile> svgFile, jsonFile, objFile, traceHtmlFile, traceJsonFile;
     try {
         if (!request.noSvg)
             svgFile = std::make_unique<AtomicFile>(
                 request.svgOut.value_or(std::filesystem::path(request.grammarFile).stem().string() + ".svg"));
         if (request.jsonOut) jsonFile = std::make_unique<AtomicFile>(*request.jsonOut);
+        if (request.objOut) objFile = std::make_unique<AtomicFile>(*request.objOut);
         if (request.traceHtml) traceHtmlFile = std::make_unique<AtomicFile>(*request.traceHtml);
         if (request.traceJson) traceJsonFile = std::make_unique<AtomicFile>(*request.traceJson);
     } catch (const OutputError& e) {
@@ -216,6 +218,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
             jsonFile->commit(writeJson(graph, grammar.jsonSchema(), meta,
                                        [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); }));
         }
+        if (objFile) objFile->commit(writeObj(graph, grammar.jsonSchema()));
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "

@@ -114,7 +114,9 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     std::stable_sort(items.begin(), items.end(), [](const DrawItem& a, const DrawItem& b) {
         const double za = styleNumber(a, "z", 0), zb = styleNumber(b, "z", 0);
         if (za != zb) return za < zb;
-        if (a.cls != b.cls) return a.cls == ElemClass::Edge;
+        // Faces below edges below nodes.
+        auto layer = [](ElemClass c) { return c == ElemClass::Face ? 0 : c == ElemClass::Edge ? 1 : 2; };
+        if (a.cls != b.cls) return layer(a.cls) < layer(b.cls);
         return a.id < b.id;
     });
     Box box;
@@ -122,15 +124,22 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     bool arrows = false;
     std::string body;
     for (const auto& it : items) {
-        const bool isEdge = it.cls == ElemClass::Edge;
-        const std::string tag = styleText(it, "tag", isEdge ? "line" : "circle");
+        const bool isEdge = it.cls == ElemClass::Edge, isFace = it.cls == ElemClass::Face;
+        const std::string tag = styleText(it, "tag", isEdge ? "line" : isFace ? "polygon" : "circle");
         if (tag == "none") continue;
-        const double stroke = styleNumber(it, "stroke_width", isEdge ? 0.05 : 0.02);
+        const double stroke = styleNumber(it, "stroke_width", isEdge ? 0.05 : isFace ? 0 : 0.02);
         maxStroke = std::max(maxStroke, stroke);
         const vec2 c = isEdge ? (it.a + it.b) * 0.5 : it.a;
         const double rotate = styleNumber(it, "rotate", 0);
         std::string rotation = rotate != 0 ? " transform=\"rotate(" + num(rotate) + " " + num(c.x) + " " + num(c.y) + ")\"" : "";
-        if (tag == "line" && isEdge) {
+        if (tag == "polygon" && isFace) {
+            std::string points;
+            for (const vec2& p : it.corners) {
+                box.add(p, 0);
+                points += (points.empty() ? "" : " ") + num(p.x) + "," + num(p.y);
+            }
+            body += "<polygon points=\"" + points + "\"" + passThrough(it, {{"fill", "#d9d9d9"}, {"stroke", "none"}}) + "/>\n";
+        } else if (tag == "line" && isEdge) {
             box.add(it.a, 0);
             box.add(it.b, 0);
             std::string marker;

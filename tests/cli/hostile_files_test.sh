@@ -69,7 +69,7 @@ grep -q "^million_rules.g2d: error: \`million_rules.g2d\` is too large ([0-9]* b
 # More kinds than elements can record (32 767)
 python3 -c "print('\n'.join(f'node K{i};' for i in range(40000)) + '\naxiom { a: K0; }')" > many_kinds.g2d
 expect_code 1 "$g2d" check many_kinds.g2d
-[ "$(grep -c error: err.txt)" = 1 ] && grep -q '^many_kinds.g2d:32768:6: error: too many kinds: a grammar may declare at most 32767 node and edge kinds$' err.txt \
+[ "$(grep -c error: err.txt)" = 1 ] && grep -q '^many_kinds.g2d:32768:6: error: too many kinds: a grammar may declare at most 32767 node, edge and face kinds$' err.txt \
   || fail "too many kinds: $(head -c 300 err.txt)"
 
 # More style properties than the runtime numbers (65 535): 70 axiom nodes

@@ -141,16 +141,16 @@ check(split and {ch["name"] for ch in split[0]["children"]} >= {"s", "e", "old",
 items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(5, "lod")})["result"]
 labels = {i["label"] for i in items}
 # An edge: its attributes and the facts edges have (no position, no degrees).
-check(labels == {"lod", "age", "id"}, "completion after old.: %s" % labels)
+check(labels == {"lod", "age", "id", "faces", "length", "direction"}, "completion after old.: %s" % labels)
 # Each one offered is accepted by `g2d check` where it was offered.
 for label in sorted(labels):
     with open(os.path.join(work, "offered.g2d"), "w") as f:
-        f.write(fixed.replace("old.lod < levels", "old.%s < levels" % label))
+        f.write(fixed.replace("old.lod < levels", "old.%s == old.%s and old.lod < levels" % (label, label)))
     r = subprocess.run([g2d, "check", os.path.join(work, "offered.g2d")], capture_output=True, text=True)
     check(r.returncode == 0, "completion offered old.%s, which g2d check rejects: %s" % (label, r.stderr))
 items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(6, "pos")})["result"]
 labels = {i["label"] for i in items}
-check(labels == {"size", "pos", "age", "id", "degree", "in_degree", "out_degree"}, "completion after e.: %s" % labels)
+check(labels == {"size", "pos", "age", "id", "degree", "in_degree", "out_degree", "faces"}, "completion after e.: %s" % labels)
 items = c.request("textDocument/completion", {"textDocument": doc, "position": {"line": 7, "character": 14}})["result"]
 labels = {i["label"] for i in items}
 check({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} <= labels,

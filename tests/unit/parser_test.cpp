@@ -54,7 +54,7 @@ TEST_CASE("declarations become AST nodes", "[parser]") {
     CHECK(fn.params.size() == 2);
     CHECK(fn.result.name.name == "vec2");
     const auto& node = std::get<ast::KindDecl>(d[5].decl);
-    CHECK_FALSE(node.isEdge);
+    CHECK(node.cls == ast::KindDecl::Class::Node);
     CHECK(node.attrs.size() == 1);
     CHECK(node.style.size() == 2);
     CHECK(std::get<ast::KindDecl>(d[6].decl).directed == std::optional<bool>(true));

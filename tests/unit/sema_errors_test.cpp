@@ -176,7 +176,7 @@ TEST_CASE("wildcards are used only as the thesis allows", "[sema][wildcards]") {
          "5:57: wildcard node `w` is left unchanged by the production; it cannot be moved or assigned"},
         {"reading a wildcard's attribute", "rule R { match { x: P; w: *; x -[E]-> w where w.w > 0; } produce { x; } }",
          "5:49: wildcard node `w` matches any kind, so it has no attribute `w`; only pos, age, id, degree, in_degree, "
-         "out_degree can be read"},
+         "out_degree, faces can be read"},
         {"isolated wildcard", "rule R { match { x: P; w: *; } produce { x; } }",
          "5:24: wildcard node `w` must be an endpoint of an edge of the match"},
     });
@@ -265,4 +265,34 @@ TEST_CASE("an unknown edge kind is reported once, not again at each use", "[sema
     const auto lines = g2d::test::diagnosticLines(r);
     REQUIRE(lines.size() == 1);
     CHECK(lines[0] == "5:39: error: unknown edge kind `Q`");
+}
+
+TEST_CASE("faces in the axiom: kinds, corners, and rules that cannot use them yet", "[sema][faces]") {
+    const std::string kinds = "node P;\nedge E;\nface F { w: float = 1; }\n";   // 3 lines
+    const std::string nodes = "axiom { a: P at (0, 0); b: P at (1, 0); c: P at (1, 1); ";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {nodes + "F(a, b); }", "4:57: a face needs at least 3 corners, got 2"},
+        {nodes + "F(a, b, a); }", "4:65: corner `a` appears twice: a face's corners are distinct nodes"},
+        {nodes + "F(a, b, d); }", "4:65: corner `d` is not a node of the axiom"},
+        {nodes + "e: a -[E]- b; F(a, b, e); }", "4:79: corner `e` is not a node"},
+        {nodes + "P(a, b, c); }", "4:57: `P` is a node kind, but a face needs a face kind"},
+        {nodes + "Q(a, b, c); }", "4:57: unknown face kind `Q`"},
+        {nodes + "F(a, b, c) { v = 2 }; }", "4:70: face kind `F` has no attribute `v`"},
+        {nodes + "f: F(a, b, c); f: F(a, b, c); }", "4:72: `f` is already declared in the axiom"},
+        {nodes + "}\nrule R { match { x: P; y: P; z: P; f: F(x, y, z); } produce { x; y; z; } }",
+         "5:36: rules cannot match or create faces yet; faces can be declared and built in the axiom"},
+        {nodes + "}\nrule R { match { x: P; y: P; z: P; } produce { x; y; z; F(x, y, z); } }",
+         "5:57: rules cannot match or create faces yet; faces can be declared and built in the axiom"},
+        {"face G directed;\naxiom { }", "4:8: expected `;` or `{`, found `directed`"},
+    };
+    for (const auto& [source, expected] : cases) {
+        INFO(source);
+        auto r = compile(kinds + source);
+        CHECK(firstError(r) == expected);
+        CHECK_FALSE(r.program.has_value());
+    }
+    auto ok = compile(kinds + nodes + "f: F(a, b, c) { w = 2 }; }");
+    REQUIRE(ok.program);
+    REQUIRE(ok.program->axiom.faces.size() == 1);
+    CHECK(ok.program->axiom.faces[0].corners == std::vector<int>{0, 1, 2});
 }

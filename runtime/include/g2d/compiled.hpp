@@ -2,6 +2,7 @@
 // What generated grammar code includes: the runtime's public headers and a
 // few helpers that keep generated code short. Generated code calls the same
 // runtime functions as the interpreter, so both compute the same bits.
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -16,6 +17,8 @@
 #include "g2d/deadline.hpp"
 #include "g2d/derivation.hpp"
 #include "g2d/draw_items.hpp"
+#include "g2d/element_facts.hpp"
+#include "g2d/obj_writer.hpp"
 #include "g2d/grammar_run.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/grow_array.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// What a drawing shows, decided once for both back ends: every live edge,
-// then every live node, each in id order. An item's properties are its
+// What a drawing shows, decided once for both back ends: every live face,
+// then every live edge, then every live node, each in id order. An item's properties are its
 // kind's style (`kindStyle` adds them, in declaration order), then the
 // element's own style assignments, each replacing a property of the same
 // name or, if none, appended. Enum values print by their value's name.

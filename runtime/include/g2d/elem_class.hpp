@@ -8,4 +8,9 @@ namespace g2d::rt {
 
 enum class ElemClass : std::uint8_t { Node, Edge, Face };
 
+// "node", "edge", "face": as the language writes it.
+constexpr const char* elemClassName(ElemClass c) {
+    return c == ElemClass::Edge ? "edge" : c == ElemClass::Face ? "face" : "node";
+}
+
 }  // namespace g2d::rt

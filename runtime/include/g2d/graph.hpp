@@ -231,6 +231,17 @@ public:
     void touchFace(FaceId f);
     std::span<const FaceId> changedFaces() const { return {dirtyFaces_.data(), dirtyFaces_.size()}; }
 
+    // Any element by class: its kind, its back end's attribute handle, an attribute.
+    int kindOf(ElemClass cls, std::uint32_t id) const {
+        return cls == ElemClass::Edge ? edgeKind(id) : cls == ElemClass::Face ? faceKind(id) : nodeKind(id);
+    }
+    std::uint32_t slotOf(ElemClass cls, std::uint32_t id) const {
+        return cls == ElemClass::Edge ? edgeSlot(id) : cls == ElemClass::Face ? faceSlot(id) : nodeSlot(id);
+    }
+    const Value& attrOf(ElemClass cls, std::uint32_t id, int i) const {
+        return cls == ElemClass::Edge ? edgeAttr(id, i) : cls == ElemClass::Face ? faceAttr(id, i) : nodeAttr(id, i);
+    }
+
     // Style property numbers (a new name is numbered after the others).
     StyleProp styleProp(std::string_view name) { return styles_.prop(name); }
     const std::string& stylePropName(StyleProp p) const { return styles_.name(p); }

@@ -21,6 +21,7 @@ struct RunRequest {
     std::string grammarFile;              // the .g2d file (messages, default output name)
     std::optional<std::string> svgOut;    // default: the grammar's name with .svg, in the current folder
     std::optional<std::string> jsonOut;
+    std::optional<std::string> objOut;
     bool noSvg = false;
     std::uint64_t seed = 1;
     std::vector<std::string> defines;     // NAME=VALUE

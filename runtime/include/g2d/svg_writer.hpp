@@ -25,7 +25,8 @@ namespace g2d::rt {
 struct DrawItem {
     ElemClass cls = ElemClass::Node;
     std::uint32_t id = 0;
-    vec2 a{0, 0}, b{0, 0};                 // node position, or edge endpoints
+    vec2 a{0, 0}, b{0, 0};                 // node position, or edge endpoints (a face: its corner mean)
+    std::vector<vec2> corners;             // a face's corners, in order
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
 };
 

@@ -1,0 +1,32 @@
+#include "g2d/element_facts.hpp"
+
+namespace g2d::rt {
+
+namespace {
+
+const ElementFactEntry kFacts[] = {
+#define G2D_FACT_ENTRY(id, name, type, typeName, classes, meaning) {ElemFact::id, #name, typeName, classes, meaning},
+    G2D_ELEMENT_FACTS(G2D_FACT_ENTRY)
+#undef G2D_FACT_ENTRY
+};
+
+}  // namespace
+
+const ElementFactEntry* elementFactEntries(std::size_t& count) {
+    count = sizeof kFacts / sizeof kFacts[0];
+    return kFacts;
+}
+
+const ElementFactEntry& elementFactEntry(ElemFact id) { return kFacts[static_cast<std::size_t>(id)]; }
+
+Value elementFact(const Graph& g, ElemClass cls, std::uint32_t id, ElemFact f) {
+    switch (f) {
+#define G2D_FACT_CASE(fid, name, type, typeName, classes, meaning) \
+    case ElemFact::fid: return Value{fact::name(g, cls, id)};
+        G2D_ELEMENT_FACTS(G2D_FACT_CASE)
+#undef G2D_FACT_CASE
+    }
+    return Value{0LL};
+}
+
+}  // namespace g2d::rt

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Faces in the outputs: SVG polygons below edges and nodes, the JSON "faces"
+# list, and --obj, the same from `g2d run` and a compiled program; grammars
+# without face kinds keep their JSON as it was.
+# Usage: faces_output_test.sh G2D SOURCE_DIR
+set -u
+g2d="$1"; src="$2"
+source "$(dirname "$0")/test_lib.sh"
+plan="$src/examples/floor_plan.g2d"
+
+expect_code 0 "$g2d" run "$plan" -o i.svg --json i.json --obj i.obj
+expect_code 0 "$g2d" build "$plan" -o plan
+expect_code 0 ./plan -o c.svg --json c.json --obj c.obj
+for ext in svg json obj; do
+  cmp -s "i.$ext" "c.$ext" || fail "interpreted and compiled $ext differ"
+done
+
+cat > want.obj <<'OBJ'
+# g2d: 11 nodes, 7 edges, 3 faces
+v 0 0 0
+v 6 0 0
+v 10 0 0
+v 10 5 0
+v 6 5 0
+v 0 5 0
+v 0 8 0
+v 10 8 0
+v 8 5 0
+v 0 2.5 0
+v 6 2.5 0
+g Room
+f 1 2 5 6
+f 2 3 4 5
+g Yard
+f 6 5 4 8 7
+g edges
+l 1 2
+l 2 3
+l 3 4
+l 5 6
+l 5 4
+l 6 1
+l 2 5
+OBJ
+diff want.obj i.obj > /dev/null || fail "OBJ: $(diff want.obj i.obj | head -5)"
+
+python3 - i.json <<'PY' || fail "JSON faces"
+import json, sys
+d = json.load(open(sys.argv[1]))
+faces = d["faces"]
+assert [f["kind"] for f in faces] == ["Room", "Room", "Yard"], faces
+assert faces[0] == {"id": 0, "kind": "Room", "corners": [0, 1, 4, 5], "age": 0, "name": "living", "floor": "#f2e6cc"}, faces[0]
+assert faces[2]["corners"] == [5, 4, 3, 7, 6], faces[2]
+ids = {n["id"] for n in d["nodes"]}
+assert all(c in ids for f in faces for c in f["corners"]), "a corner is not a node"
+PY
+
+# Faces are drawn first (below edges and nodes), filled by their kind's style.
+first_polygon=$(grep -n '<polygon' i.svg | head -1 | cut -d: -f1)
+first_line=$(grep -n '<line' i.svg | head -1 | cut -d: -f1)
+[ "$(grep -c '<polygon' i.svg)" = 3 ] || fail "want 3 polygons: $(grep -c '<polygon' i.svg)"
+[ "$first_polygon" -lt "$first_line" ] || fail "faces are not below the walls"
+grep -q '<polygon points="0,0 6,0 6,5 0,5" fill="#f2e6cc" stroke="none"/>' i.svg || fail "the living room: $(grep polygon i.svg | head -1)"
+grep -q 'opacity="0.85"' i.svg || fail "the garden's own style"
+
+# A grammar without face kinds writes no "faces" key.
+expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" --no-svg --json k.json
+grep -q '"faces"' k.json && fail "faces in a grammar without face kinds"
+finish
