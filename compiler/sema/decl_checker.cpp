@@ -27,7 +27,7 @@ int deepestCall(const ir::Expr& e, const std::vector<int>& functionDepth) {
 
 const std::set<std::string> kReservedAttributes = {"pos", "age", "id", "degree", "in_degree", "out_degree",
                                                    "style", "kind"};
-const std::set<std::string> kKnownTags = {"circle", "line", "rect", "path", "image", "text", "polyline", "none"};
+const std::set<std::string> kKnownTags = {"circle", "line", "rect", "path", "image", "text", "polyline", "polygon", "none"};
 
 ir::Expr zeroValue(const Type& t, Span span) {
     ir::Expr e;
