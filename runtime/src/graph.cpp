@@ -98,16 +98,7 @@ void Graph::removeNode(NodeId n) {
     removeFacesAt(n);
     while (rec.firstOut != kNoId) removeEdge(rec.firstOut);
     while (rec.firstIn != kNoId) removeEdge(rec.firstIn);
-    // Swap-remove from the kind's index, fixing the moved node's slot.
-    auto& kindList = kindNodes_[rec.kind];
-    const NodeId movedK = kindList.back();
-    kindList[rec.slotInKind] = movedK;
-    nodes_[movedK].slotInKind = rec.slotInKind;
-    kindList.pop_back();
-    rec.alive = false;
-    clearAttrBlock(rec.kind, rec.slot);
-    if (rec.marks & kStyled) styles_.drop(nodeStyleList_[n]);
-    rec.marks &= static_cast<std::uint8_t>(~kStyled);
+    retire(rec, nodes_, nodeStyleList_, n);
     --liveNodes_;
 }
 

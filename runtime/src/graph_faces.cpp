@@ -63,16 +63,7 @@ void Graph::removeFace(FaceId f) {
         --at.count;
         touchNode(cr.node);
     }
-    // Swap-remove from the kind's index, fixing the moved face's slot.
-    auto& kindList = kindNodes_[rec.kind];
-    const FaceId moved = kindList.back();
-    kindList[rec.slotInKind] = moved;
-    faces_[moved].slotInKind = rec.slotInKind;
-    kindList.pop_back();
-    rec.alive = false;
-    clearAttrBlock(rec.kind, rec.slot);
-    if (rec.marks & kStyled) styles_.drop(faceStyleList_[f]);
-    rec.marks &= static_cast<std::uint8_t>(~kStyled);
+    retire(rec, faces_, faceStyleList_, f);
     touchFace(f);
     --liveFaces_;
 }

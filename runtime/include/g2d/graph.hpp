@@ -375,6 +375,10 @@ private:
     inline void unlink(EdgeId e);
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
     void removeFacesAt(NodeId n);
+    // A removed node's or face's record: out of its kind's index (swap-remove,
+    // fixing the moved element's place), dead, its attributes and styles dropped.
+    template <class Rec>
+    void retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id);
     NodeCorners& cornersAt(NodeId n);
     [[noreturn]] static void deadEndpoint();
 
@@ -402,6 +406,19 @@ private:
     GrowArray<NodeCorners> nodeCorners_;
     std::vector<FaceId> dirtyFaces_;
 };
+
+template <class Rec>
+void Graph::retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id) {
+    auto& kindList = kindNodes_[rec.kind];
+    const std::uint32_t moved = kindList.back();
+    kindList[rec.slotInKind] = moved;
+    recs[moved].slotInKind = rec.slotInKind;
+    kindList.pop_back();
+    rec.alive = false;
+    clearAttrBlock(rec.kind, rec.slot);
+    if (rec.marks & kStyled) styles_.drop(styleLists[id]);
+    rec.marks &= static_cast<std::uint8_t>(~kStyled);
+}
 
 template <class Each>
 void Graph::eachSideUse(NodeId u, NodeId v, Each&& each) const {
