@@ -47,10 +47,15 @@ struct DrawEdge {
     const char* color = "#444444";
     bool dashed = false;
 };
+struct DrawFace {
+    std::vector<int> corners;     // indices into the panel's nodes
+    std::string label;
+};
 struct Panel {
     std::string caption;
     std::vector<DrawNode> nodes;
     std::vector<DrawEdge> edges;
+    std::vector<DrawFace> faces;
 };
 
 // Evenly on a circle (one node in the middle, two side by side).
@@ -81,6 +86,19 @@ std::string drawPanel(const Panel& p, double left, double top) {
     const double scale = p.nodes.size() > 1 ? (kPanel - 60) / span : 1;
     auto sx = [&](double x) { return kPanel / 2 + (x - (x0 + x1) / 2) * scale; };
     auto sy = [&](double y) { return kPanel / 2 - (y - (y0 + y1) / 2) * scale; };
+    for (const auto& f : p.faces) {   // below the edges, labelled at the corners' mean
+        std::string points;
+        double cx = 0, cy = 0;
+        for (int c : f.corners) {
+            const auto& n = p.nodes[static_cast<std::size_t>(c)];
+            points += (points.empty() ? "" : " ") + num(sx(n.x)) + "," + num(sy(n.y));
+            cx += sx(n.x) / static_cast<double>(f.corners.size());
+            cy += sy(n.y) / static_cast<double>(f.corners.size());
+        }
+        out += "<polygon points=\"" + points + "\" fill=\"#e8e0f4\" stroke=\"#9a86c0\" stroke-width=\"1\"/>\n";
+        out += "<text x=\"" + num(cx) + "\" y=\"" + num(cy) + "\" text-anchor=\"middle\" font-size=\"9\" fill=\"#6a5890\">" +
+               xmlEscape(f.label) + "</text>\n";
+    }
     for (const auto& e : p.edges) {
         const auto& a = p.nodes[static_cast<std::size_t>(e.a)];
         const auto& b = p.nodes[static_cast<std::size_t>(e.b)];
@@ -126,6 +144,8 @@ Panel axiomPanel(const ir::Program& prog) {
     if (!placed) circleLayout(p.nodes, 0, 1);
     for (const auto& e : prog.axiom.edges)
         p.edges.push_back(DrawEdge{e.src, e.dst, kindName(prog, e.kind), directed(prog, e.kind)});
+    for (const auto& f : prog.axiom.faces)
+        p.faces.push_back(DrawFace{f.corners, (f.name.empty() ? "" : f.name + ": ") + kindName(prog, f.kind)});
     return p;
 }
 

@@ -75,4 +75,8 @@ grep -q '^bad.g2d:2:12: error: unknown node kind `Q`' err.txt || fail "grammar e
 expect_code 1 "$g2d" show weighted.g2d -o missing/dir/out.svg
 grep -q "g2d show: error: cannot write \`missing/dir/out.svg\`" err.txt || fail "unwritable: $(cat err.txt)"
 expect_code 2 "$g2d" show weighted.g2d
+# The axiom's faces: a polygon per face, below the edges, labelled with name and kind.
+expect_code 0 "$g2d" show "$src/examples/floor_plan.g2d" -o plan.svg
+[ "$(grep -c '<polygon' plan.svg)" = 3 ] || fail "axiom faces: $(grep -c '<polygon' plan.svg) polygons"
+grep -q '>living: Room</text>' plan.svg || fail "face label missing"
 finish
