@@ -260,12 +260,23 @@ struct DaughterEdge {
     Span span;
 };
 
+// A face the daughter creates (faces are not matched yet, so none is kept).
+struct DaughterFace {
+    std::string name;                  // "" when anonymous
+    int kind = -1;
+    std::vector<int> corners;          // daughter node indices, in order
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
 struct Daughter {
     std::optional<Expr> weightExpr;    // absent: weight 1
     std::optional<double> weight;      // known at compile time
     std::vector<Let> lets;
     std::vector<DaughterNode> nodes;
     std::vector<DaughterEdge> edges;
+    std::vector<DaughterFace> faces;
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     bool autoPlacement = false;        // some new node is placed automatically

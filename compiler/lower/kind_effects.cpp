@@ -86,6 +86,7 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
         if (retyped) changed.add(e.kind, ir::ElemClass::Edge);
         if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
+    for (const auto& f : d.faces) changed.add(f.kind, ir::ElemClass::Face);   // new
     out.changedKinds.push_back(changed.sorted());
 }
 

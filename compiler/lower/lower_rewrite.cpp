@@ -14,6 +14,7 @@ public:
     RewriteProgram lower() {
         p_.nodeHandles = static_cast<int>(d_.nodes.size());
         p_.edgeHandles = static_cast<int>(d_.edges.size());
+        p_.faceHandles = static_cast<int>(d_.faces.size());
         prepare();
         commit();
         return std::move(p_);
@@ -35,7 +36,8 @@ private:
     // Everything is evaluated on the graph before the step, in the order the
     // grammar is written: the lets, automatic placement (which `at` may read
     // as `placed`), then per daughter node its position, attributes and
-    // styles, then per daughter edge its attributes and styles.
+    // styles, then per daughter edge, then per new face, its attributes and
+    // styles.
     void prepare() {
         for (const auto& l : r_.lets) p_.prepare.push_back(EvalLocal{l.slot, &l.value});
         for (const auto& l : d_.lets) p_.prepare.push_back(EvalLocal{l.slot, &l.value});
@@ -60,6 +62,12 @@ private:
         for (std::size_t i = 0; i < d_.edges.size(); ++i) {
             for (const auto& a : d_.edges[i].assigns) edgeAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
             for (const auto& s : d_.edges[i].styles) edgeStyles_[i].emplace_back(&s, operand(s.value));
+        }
+        faceAttrs_.resize(d_.faces.size());
+        faceStyles_.resize(d_.faces.size());
+        for (std::size_t i = 0; i < d_.faces.size(); ++i) {
+            for (const auto& a : d_.faces[i].assigns) faceAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
+            for (const auto& s : d_.faces[i].styles) faceStyles_[i].emplace_back(&s, operand(s.value));
         }
     }
 
@@ -94,7 +102,8 @@ private:
     // The order of the updates: deleted edges go; new nodes come; kept edges
     // that change ends are reconnected (before their old end nodes go, so
     // they survive); deleted nodes go with their remaining edges; then kept
-    // nodes change, and edges are updated or created, in the daughter's order.
+    // nodes change, and edges are updated or created, in the daughter's order;
+    // then the new faces.
     void commit() {
         auto& c = p_.commit;
         for (int e : d_.deletedEdges) c.push_back(DeleteEdge{e});
@@ -130,6 +139,12 @@ private:
             }
             for (const auto& [style, value] : edgeStyles_[i]) c.push_back(SetEdgeStyle{h, style, value});
         }
+        for (std::size_t i = 0; i < d_.faces.size(); ++i) {
+            const auto& df = d_.faces[i];
+            const int h = static_cast<int>(i);
+            c.push_back(CreateFace{h, df.kind, df.corners, faceAttrs_[i]});
+            for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value});
+        }
         writeSet();
     }
 
@@ -154,8 +169,8 @@ private:
     const ir::Daughter& d_;
     RewriteProgram p_;
     std::vector<int> posReg_;
-    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_;
-    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_;
+    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_, faceAttrs_;
+    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_, faceStyles_;
 };
 
 }  // namespace

@@ -421,12 +421,11 @@ private:
         return ir::Condition{std::move(*e), std::vector<ElemRef>(deps.begin(), deps.end())};
     }
 
-    // Faces are declared and built in the axiom; rules do not match or
-    // create them yet (issue #28 is in progress).
+    // Daughters create faces; matches cannot bind them yet (issue #28 is in progress).
     void rejectFaces() {
         auto reject = [&](const ast::GraphStmt& gs) {
             if (const auto* f = asFace(gs))
-                g_.diags.error(f->span, "rules cannot match or create faces yet; faces can be declared and built in the axiom");
+                g_.diags.error(f->span, "rules cannot match faces yet; a daughter can create them");
         };
         std::function<void(const std::vector<ast::MatchStmt>&)> inMatch = [&](const std::vector<ast::MatchStmt>& body) {
             for (const auto& m : body) {
@@ -435,10 +434,6 @@ private:
             }
         };
         inMatch(d_.match);
-        for (const auto& item : d_.items)
-            if (const auto* block = std::get_if<ast::ProduceBlock>(&item.item))
-                for (const auto& ps : block->body)
-                    if (const auto* gs = std::get_if<ast::GraphStmt>(&ps.stmt)) reject(*gs);
     }
 
     // Per-element `where` clauses of a pattern, then stand-alone ones.
@@ -718,7 +713,7 @@ private:
             env.elems = &elems;
             return env;
         };
-        auto daughterNode = [&](const ast::Ident& id) -> int {
+        auto daughterNode = [&](const ast::Ident& id, const char* role = "edge endpoint") -> int {
             if (auto it = newNodes.find(id.name); it != newNodes.end()) return it->second;
             const int mother = nodeIndex(id.name);
             if (mother >= 0) {
@@ -737,7 +732,7 @@ private:
             }
             int edgeIdx = -1;
             if (motherEdge(id.name, &edgeIdx)) {
-                g_.diags.error(id.span, "edge endpoint `" + id.name + "` is an edge, not a node");
+                g_.diags.error(id.span, std::string(role) + " `" + id.name + "` is an edge, not a node");
                 return -1;
             }
             if (!isPoisoned(id.name)) unboundName(id, "a node");
@@ -782,8 +777,11 @@ private:
                 }
                 continue;
             }
+            if (const auto* f = asFace(gs)) {
+                daughterFace(*f, dg, claim, daughterNode, exprEnv());
+                continue;
+            }
             const auto* e = asEdge(gs);
-            if (!e) continue;   // a face (rejected by rejectFaces)
             ir::DaughterEdge de;
             de.span = e->span;
             de.kind = resolveKind(g_, e->kind, ElemClass::Edge);
@@ -835,6 +833,37 @@ private:
         for (std::size_t i = localsBefore; i < locals_.size(); ++i) finishedLocals_.push_back(locals_[i]);
         locals_.resize(localsBefore);
         rule_.daughters.push_back(std::move(dg));
+    }
+
+    // A face the daughter creates, on its nodes (kept or new), in order.
+    template <class Claim, class DaughterNode>
+    void daughterFace(const ast::FaceStmt& f, ir::Daughter& dg, Claim& claim, DaughterNode& daughterNode, const ExprEnv& env) {
+        ir::DaughterFace df;
+        df.span = f.span;
+        df.kind = resolveKind(g_, f.kind, ElemClass::Face);
+        if (f.where) g_.diags.error(f.where->span, "conditions (`where`) belong in the match");
+        if (f.name) {
+            if (!claim(*f.name)) return;
+            int edgeIdx = -1;
+            if (nodeIndex(f.name->name) >= 0 || motherEdge(f.name->name, &edgeIdx)) {
+                g_.diags.error(f.name->span, "`" + f.name->name + "` is matched; a daughter's face needs a new name");
+                return;
+            }
+            df.name = f.name->name;
+        }
+        if (f.corners.size() < 3)
+            g_.diags.error(f.span, "a face needs at least 3 corners, got " + std::to_string(f.corners.size()));
+        std::map<std::string, Span> seen;
+        for (const auto& c : f.corners) {
+            if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
+                auto& d = g_.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
+                d.notes.push_back({prev->second, "first here"});
+                continue;
+            }
+            df.corners.push_back(daughterNode(c, "corner"));
+        }
+        if (df.kind >= 0) checkAssignments(g_, ec_, df.kind, f.assigns, env, df.assigns, df.styles);
+        dg.faces.push_back(std::move(df));
     }
 
     std::string suggestElement(const std::string& name) {

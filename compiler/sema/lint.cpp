@@ -17,6 +17,7 @@ void lintProgram(Globals& g) {
                 if (n.motherNode < 0) created.insert(n.kind);
             for (const auto& e : d.edges)
                 if (e.motherEdge < 0) created.insert(e.kind);
+            for (const auto& f : d.faces) created.insert(f.kind);
         }
     for (const auto& r : p.rules) {
         if (r.span.file != g.mainFile) continue;

@@ -238,6 +238,10 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
     for (const auto& e : d.edges)
         p.edges.push_back(DrawEdge{e.src, e.dst, (e.name.empty() ? "" : e.name + ": ") + kindName(prog, e.kind), directed(prog, e.kind),
                                    e.motherEdge >= 0 ? kKept : kNew});
+    for (const auto& f : d.faces) {
+        if (std::find(f.corners.begin(), f.corners.end(), -1) != f.corners.end()) continue;
+        p.faces.push_back(DrawFace{f.corners, (f.name.empty() ? "" : f.name + ": ") + kindName(prog, f.kind)});
+    }
     return p;
 }
 

@@ -71,6 +71,27 @@ first_line=$(grep -n '<line' i.svg | head -1 | cut -d: -f1)
 grep -q '<polygon points="0,0 6,0 6,5 0,5" fill="#f2e6cc" stroke="none"/>' i.svg || fail "the living room: $(grep polygon i.svg | head -1)"
 grep -q 'opacity="0.85"' i.svg || fail "the garden's own style"
 
+# Faces created by rules: the Koch snowflake of faces has 4^levels faces, all
+# counter-clockwise (positive signed area), the same from the compiled program.
+koch_faces="$src/examples/koch_faces.g2d"
+expect_code 0 "$g2d" build "$koch_faces" -o kf
+for levels in 1 2 3 4; do
+  expect_code 0 "$g2d" run "$koch_faces" -D levels=$levels --no-svg --json kf$levels.json --verify-matches
+  expect_code 0 ./kf -D levels=$levels --no-svg --json kfc$levels.json
+  cmp -s kf$levels.json kfc$levels.json || fail "koch_faces levels=$levels: compiled JSON differs"
+  python3 - kf$levels.json $levels <<'PY' || fail "koch_faces levels=$levels"
+import json, sys
+d = json.load(open(sys.argv[1])); levels = int(sys.argv[2])
+pos = {n["id"]: n["pos"] for n in d["nodes"]}
+faces = d["faces"]
+assert len(faces) == 4 ** levels, len(faces)
+def area(c):
+    return sum(pos[c[i]][0] * pos[c[(i + 1) % len(c)]][1] - pos[c[(i + 1) % len(c)]][0] * pos[c[i]][1] for i in range(len(c))) / 2
+assert all(area(f["corners"]) > 0 for f in faces), "a face runs clockwise"
+assert sorted({f["depth"] for f in faces if f["kind"] == "Bump"}) == list(range(1, levels + 1))
+PY
+done
+
 # A grammar without face kinds writes no "faces" key.
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" --no-svg --json k.json
 grep -q '"faces"' k.json && fail "faces in a grammar without face kinds"

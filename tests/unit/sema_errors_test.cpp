@@ -280,9 +280,17 @@ TEST_CASE("faces in the axiom: kinds, corners, and rules that cannot use them ye
         {nodes + "F(a, b, c) { v = 2 }; }", "4:70: face kind `F` has no attribute `v`"},
         {nodes + "f: F(a, b, c); f: F(a, b, c); }", "4:72: `f` is already declared in the axiom"},
         {nodes + "}\nrule R { match { x: P; y: P; z: P; f: F(x, y, z); } produce { x; y; z; } }",
-         "5:36: rules cannot match or create faces yet; faces can be declared and built in the axiom"},
-        {nodes + "}\nrule R { match { x: P; y: P; z: P; } produce { x; y; z; F(x, y, z); } }",
-         "5:57: rules cannot match or create faces yet; faces can be declared and built in the axiom"},
+         "5:36: rules cannot match faces yet; a daughter can create them"},
+        {nodes + "}\nrule R { match { x: P; y: P; } produce { x; y; F(x, y, x); } }",
+         "5:56: corner `x` appears twice: a face's corners are distinct nodes"},
+        {nodes + "}\nrule R { match { x: P; y: P; e: x -[E]- y; } produce { x; y; F(x, y, e); } }",
+         "5:70: corner `e` is an edge, not a node"},
+        {nodes + "}\nrule R { match { x: P; y: P; } produce { x; y; F(x, y, w); } }",
+         "5:56: unknown name `w`: it is not a node of the match or this daughter"},
+        {nodes + "}\nrule R { match { x: P; y: P; z: P; } produce { x; y; z; x: F(x, y, z); } }",
+         "5:57: `x` appears twice in this daughter"},
+        {nodes + "}\nrule R { match { x: P; y: P; z: P; } produce { y: F(x, y, z); } }",
+         "5:48: `y` is matched; a daughter's face needs a new name"},
         {"face G directed;\naxiom { }", "4:8: expected `;` or `{`, found `directed`"},
     };
     for (const auto& [source, expected] : cases) {
@@ -291,8 +299,18 @@ TEST_CASE("faces in the axiom: kinds, corners, and rules that cannot use them ye
         CHECK(firstError(r) == expected);
         CHECK_FALSE(r.program.has_value());
     }
-    auto ok = compile(kinds + nodes + "f: F(a, b, c) { w = 2 }; }");
+    auto ok = compile(kinds + nodes + "f: F(a, b, c) { w = 2 }; }\n"
+                      "rule R { match { x: P; y: P; } produce { n: P at (0, 0); F(x, n, y) { w = x.pos.x }; } }");
+    INFO(firstError(ok));
     REQUIRE(ok.program);
     REQUIRE(ok.program->axiom.faces.size() == 1);
     CHECK(ok.program->axiom.faces[0].corners == std::vector<int>{0, 1, 2});
+    // A daughter's face: its corners are daughter nodes (naming a matched node keeps it).
+    const auto& d = ok.program->rules[0].daughters[0];
+    REQUIRE(d.faces.size() == 1);
+    REQUIRE(d.faces[0].corners.size() == 3);
+    CHECK(d.nodes[static_cast<std::size_t>(d.faces[0].corners[0])].motherNode == 0);
+    CHECK(d.nodes[static_cast<std::size_t>(d.faces[0].corners[1])].name == "n");
+    CHECK(d.nodes[static_cast<std::size_t>(d.faces[0].corners[2])].motherNode == 1);
+    CHECK(d.deletedNodes.empty());
 }
