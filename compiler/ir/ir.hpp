@@ -188,10 +188,12 @@ struct AxiomEdge {
     Span span;
 };
 
-struct AxiomFace {
+// A face the axiom or a daughter creates (faces are not matched yet, so a
+// daughter keeps none).
+struct NewFace {
     std::string name;                  // "" when anonymous
     int kind = -1;
-    std::vector<int> corners;          // axiom node indices, in order
+    std::vector<int> corners;          // the axiom's or the daughter's node indices, in order
     std::vector<AttrAssign> assigns;
     std::vector<StyleAssign> styles;
     Span span;
@@ -200,7 +202,7 @@ struct AxiomFace {
 struct Axiom {
     std::vector<AxiomNode> nodes;
     std::vector<AxiomEdge> edges;
-    std::vector<AxiomFace> faces;
+    std::vector<NewFace> faces;
     Span span;
 };
 
@@ -260,23 +262,13 @@ struct DaughterEdge {
     Span span;
 };
 
-// A face the daughter creates (faces are not matched yet, so none is kept).
-struct DaughterFace {
-    std::string name;                  // "" when anonymous
-    int kind = -1;
-    std::vector<int> corners;          // daughter node indices, in order
-    std::vector<AttrAssign> assigns;
-    std::vector<StyleAssign> styles;
-    Span span;
-};
-
 struct Daughter {
     std::optional<Expr> weightExpr;    // absent: weight 1
     std::optional<double> weight;      // known at compile time
     std::vector<Let> lets;
     std::vector<DaughterNode> nodes;
     std::vector<DaughterEdge> edges;
-    std::vector<DaughterFace> faces;
+    std::vector<NewFace> faces;
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     bool autoPlacement = false;        // some new node is placed automatically

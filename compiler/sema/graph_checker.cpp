@@ -206,7 +206,7 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
     for (const auto& s : d.body) {
         const auto* f = asFace(s);
         if (!f) continue;
-        ir::AxiomFace face;
+        ir::NewFace face;
         face.span = f->span;
         if (f->name) {
             face.name = f->name->name;
@@ -838,7 +838,7 @@ private:
     // A face the daughter creates, on its nodes (kept or new), in order.
     template <class Claim, class DaughterNode>
     void daughterFace(const ast::FaceStmt& f, ir::Daughter& dg, Claim& claim, DaughterNode& daughterNode, const ExprEnv& env) {
-        ir::DaughterFace df;
+        ir::NewFace df;
         df.span = f.span;
         df.kind = resolveKind(g_, f.kind, ElemClass::Face);
         if (f.where) g_.diags.error(f.where->span, "conditions (`where`) belong in the match");

@@ -38,9 +38,10 @@ std::string edges(const std::vector<TraceEdge>& v) {
 // How a kind is drawn in the player: the resolved style of one of its
 // elements (tag, stroke, stroke width, fill, radius).
 std::string kindStyle(const DrawItem& it) {
-    return "{\"tag\":" + jsonString(styleText(it, "tag", it.cls == ElemClass::Edge ? "line" : "circle")) +
-           ",\"stroke\":" + jsonString(styleText(it, "stroke", "black")) +
-           ",\"stroke_width\":" + num(styleNumber(it, "stroke_width", it.cls == ElemClass::Edge ? 0.05 : 0.02)) +
+    const bool edge = it.cls == ElemClass::Edge, face = it.cls == ElemClass::Face;
+    return "{\"tag\":" + jsonString(styleText(it, "tag", edge ? "line" : face ? "polygon" : "circle")) +
+           ",\"stroke\":" + jsonString(styleText(it, "stroke", face ? "none" : "black")) +
+           ",\"stroke_width\":" + num(styleNumber(it, "stroke_width", edge ? 0.05 : face ? 0 : 0.02)) +
            ",\"fill\":" + jsonString(styleText(it, "fill", "none")) + ",\"r\":" + num(styleNumber(it, "r", 0.1)) + "}";
 }
 
@@ -126,7 +127,7 @@ std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t se
     const Graph& g = grammar_.graph();
     auto note = [&](const std::vector<DrawItem>& items) {
         for (const auto& it : items) {
-            const int kind = it.cls == ElemClass::Edge ? g.edgeKind(it.id) : g.nodeKind(it.id);
+            const int kind = g.kindOf(it.cls, it.id);
             styles.emplace(kind, kindStyle(it));
         }
     };

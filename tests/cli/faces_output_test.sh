@@ -92,6 +92,15 @@ assert sorted({f["depth"] for f in faces if f["kind"] == "Bump"}) == list(range(
 PY
 done
 
+# The trace reads each kind's look from its own elements (a face is not a node).
+expect_code 0 "$g2d" run "$koch_faces" -D levels=2 --no-svg --trace-json trace.json
+python3 - trace.json <<'PY' || fail "trace kinds"
+import json, sys
+kinds = {k["name"]: k for k in json.load(open(sys.argv[1]))["kinds"]}
+assert kinds["P"]["style"]["tag"] == "none", kinds["P"]
+assert kinds["Bump"]["style"]["tag"] == "polygon", kinds["Bump"]
+PY
+
 # A grammar without face kinds writes no "faces" key.
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" --no-svg --json k.json
 grep -q '"faces"' k.json && fail "faces in a grammar without face kinds"
