@@ -33,6 +33,10 @@ examples=(
   "lsystem_tree|1 2 3|L-system tree (original tool's example)"
   "mondrian|1 2 3|Mondrian subdivision (g2d example: weights, styles)"
   "maze|1 2 3|Maze: a grid built by rules, then carved (g2d example: NACs, phases)"
+  "floor_plan|1|Floor plan: faces in the axiom (g2d example: face kinds, styles)"
+  "koch_faces|1|Koch snowflake of faces, level 4 (g2d example: daughters create faces)"
+  "subdivide|1|Quad subdivision, depth 4 (g2d example: matched faces, parallel steps)"
+  "stained_glass|1 2 3|Stained glass: panes split, then coloured unlike their neighbours (g2d example: faces sharing a side)"
 )
 
 {

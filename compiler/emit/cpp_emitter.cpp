@@ -65,6 +65,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     out += in + "info.readDirections = " + listOf(i.readDirections, byteText) + ";\n";
     out += in + "info.newHostAddsNothing = " + listOf(i.newHostAddsNothing, byteText) + ";\n";
     out += in + "info.edgeCount = " + str(i.edgeCount) + ";\n";
+    out += in + "info.faceCount = " + str(i.faceCount) + ";\n";
     out += in + "info.nodeKinds = " + vectorLiteral(i.nodeKinds) + ";\n";
     out += in + "info.kindsKnown = " + (i.kindsKnown ? "true" : "false") + ";\n";
     out += in + "info.readKinds = " + vectorLiteral(i.readKinds) + ";\n";

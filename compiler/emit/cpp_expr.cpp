@@ -130,15 +130,19 @@ std::string ExprGen::gen(const ir::Expr& e, const ExprContext& ctx, std::string&
     case ExprOp::Local: return "L" + std::to_string(e.index);
     case ExprOp::FnArg: return "a" + std::to_string(e.index);
     case ExprOp::Attr: {
-        const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
-        const std::string id = isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index);
-        const int kind = isEdge ? ctx.edgeKind(e.elem.index) : ctx.nodeKind(e.elem.index);
-        return bind(attrAccess(kind, id, e.elem.cls, e.index, ctx.graph));
+        const int i = e.elem.index;
+        switch (e.elem.cls) {
+        case ir::ElemClass::Edge: return bind(attrAccess(ctx.edgeKind(i), ctx.edge(i), e.elem.cls, e.index, ctx.graph));
+        case ir::ElemClass::Face: return bind(attrAccess(ctx.faceKind(i), ctx.face(i), e.elem.cls, e.index, ctx.graph));
+        case ir::ElemClass::Node: break;
+        }
+        return bind(attrAccess(ctx.nodeKind(i), ctx.node(i), e.elem.cls, e.index, ctx.graph));
     }
     case ExprOp::SelfAttr: return bind(attrAccess(ctx.selfKind, ctx.self, ctx.selfClass, e.index, ctx.graph));
     case ExprOp::Fact: {
-        const bool isEdge = e.elem.cls == ir::ElemClass::Edge;
-        return bind(fact(e, isEdge ? ctx.edge(e.elem.index) : ctx.node(e.elem.index), e.elem.cls, ctx.graph));
+        const int i = e.elem.index;
+        const ir::ElemClass cls = e.elem.cls;
+        return bind(fact(e, cls == ir::ElemClass::Edge ? ctx.edge(i) : cls == ir::ElemClass::Face ? ctx.face(i) : ctx.node(i), cls, ctx.graph));
     }
     case ExprOp::SelfFact: return bind(fact(e, ctx.self, ctx.selfClass, ctx.graph));
     case ExprOp::Placed: return bind("*placed[" + std::to_string(e.index) + "]");

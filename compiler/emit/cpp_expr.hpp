@@ -53,6 +53,8 @@ struct ExprContext {
     std::function<std::string(int)> edge;       // host id of pattern edge i
     std::function<int(int)> nodeKind;           // kind of pattern node i
     std::function<int(int)> edgeKind;           // kind of pattern edge i
+    std::function<std::string(int)> face;       // host id of pattern face i
+    std::function<int(int)> faceKind;           // kind of pattern face i
     std::string self;                           // host id of the styled element
     ir::ElemClass selfClass = ir::ElemClass::Node;
     int selfKind = -1;

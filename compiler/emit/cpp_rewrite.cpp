@@ -50,6 +50,7 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
     std::string commit = c + "(void)step;\n" + c + "(void)G;\n";
     for (const auto& op : p.commit) {
         std::visit(lower::Overloaded{
+                       [&](const lower::DeleteFace& o) { commit += c + "G.removeFace(m.faces[" + str(o.matchFace) + "]);\n"; },
                        [&](const lower::DeleteEdge& o) { commit += c + "G.removeEdge(m.edges[" + str(o.matchEdge) + "]);\n"; },
                        [&](const lower::BindNode& o) {
                            commit += c + "const NodeId " + node(o.handle) + " = m.nodes[" + str(o.matchNode) + "];\n" + c + "(void)" + node(o.handle) + ";\n";
@@ -84,6 +85,16 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
                        [&](const lower::SetEdgeStyle& o) {
                            commit += c + "G.setEdgeStyle(" + edge(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
+                       [&](const lower::BindFace& o) {
+                           commit += c + "const FaceId " + face(o.handle) + " = m.faces[" + str(o.matchFace) + "];\n" + c + "(void)" + face(o.handle) + ";\n";
+                       },
+                       [&](const lower::SetFaceAttr& o) {
+                           commit += c + "if (G.faceAlive(" + face(o.handle) + ")) " +
+                                     gen_.attrAccess(o.kind, face(o.handle), ir::ElemClass::Face, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
+                       },
+                       [&](const lower::TouchFace& o) {
+                           commit += c + "if (G.faceAlive(" + face(o.handle) + ")) G.touchFaceValues(" + face(o.handle) + ");\n";
+                       },
                        [&](const lower::CreateFace& o) {
                            std::string corners;
                            for (int n : o.corners) corners += (corners.empty() ? "" : ", ") + node(n);
@@ -92,7 +103,7 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
                                      ";\n" + record(o.kind, o.attrs, face(o.handle), ir::ElemClass::Face, c);
                        },
                        [&](const lower::SetFaceStyle& o) {
-                           commit += c + "G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                           commit += c + "if (G.faceAlive(" + face(o.handle) + ")) G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
                    },
                    op);

@@ -42,6 +42,8 @@ private:
         c.edge = [](int i) { return "e[" + str(i) + "]"; };
         c.nodeKind = [this, nac](int i) { return ir::slotNodeKind(r_, nac, i); };
         c.edgeKind = [this, nac](int i) { return ir::slotEdge(r_, nac, i).kind; };
+        c.face = [](int i) { return "f[" + str(i) + "]"; };
+        c.faceKind = [this](int i) { return r_.faces[static_cast<std::size_t>(i)].kind; };
         return c;
     }
 
@@ -136,6 +138,9 @@ private:
                            steps(ops, i + 1, nac, onComplete, out, body + "    ");
                            out += body + "}\n" + next + "}\n" + in + "}\n";
                        },
+                       [&](const lower::MatchFace& o) { bindFace(o, static_cast<int>(i), [&](std::string& o2, const std::string& in2) {
+                                                              steps(ops, i + 1, nac, onComplete, o2, in2);
+                                                          }, out, in); },
                        [&](const lower::ConnectEdge& o) {
                            const std::string hs = "n[" + str(o.from) + "]", hd = "n[" + str(o.to) + "]";
                            const std::string ed = "e[" + str(o.edge) + "]";
@@ -157,6 +162,55 @@ private:
                    ops[i]);
     }
 
+    // A face and its corners (lower::MatchFace): the candidate faces, then
+    // per rotation the corners tested or bound in order, then `inner`.
+    template <class Inner>
+    void bindFace(const lower::MatchFace& o, int step, const Inner& inner, std::string& out, const std::string& in) {
+        const std::string next = in + "    ", body = next + "    ";
+        const std::string s = str(step), fc = "f[" + str(o.face) + "]", k = str(static_cast<int>(o.corners.size()));
+        std::string faceTest = "g.faceKind(" + fc + ") == " + str(o.kind);
+        if (!o.anyCount) faceTest += " && g.cornerCount(" + fc + ") == " + k;
+        for (int d : o.distinctFaces) faceTest += " && " + fc + " != f[" + str(d) + "]";
+        out += in + "{\n";
+        std::string rotations;   // the loop over the rotations to try, opened at `body`
+        if (o.from < 0) {
+            out += next + "const auto fl" + s + " = g.facesOfKind(" + str(o.kind) + ");\n";
+            out += next + "for (std::size_t fi" + s + " = 0; fi" + s + " < fl" + s + ".size(); ++fi" + s + ") {\n";
+            out += body + fc + " = fl" + s + "[fi" + s + "];\n";
+            out += body + "if (!(" + faceTest + ")) continue;\n";
+            out += body + "CornerId st" + s + " = g.firstCorner(" + fc + ");\n";
+            out += body + "for (int r" + s + " = 0; r" + s + " < " + (o.anyCount ? "1" : k) + "; ++r" + s + ", st" + s + " = g.nextCorner(st" + s + ")) {\n";
+        } else {
+            out += next + "for (CornerId at" + s + " = g.firstCornerAt(n[" + str(o.from) + "]); at" + s + " != kNoId; at" + s +
+                   " = g.nextCornerAt(at" + s + ")) {\n";
+            out += body + fc + " = g.cornerFace(at" + s + ");\n";
+            if (o.anyCount) faceTest += " && at" + s + " == g.firstCorner(" + fc + ")";
+            out += body + "if (!(" + faceTest + ")) continue;\n";
+            out += body + "CornerId st" + s + " = at" + s + ";\n";
+            for (int j = 0; j < o.fromCorner; ++j) out += body + "st" + s + " = g.prevCorner(st" + s + ");\n";
+            out += body + "{\n";
+        }
+        const std::string inner1 = body + "    ";
+        out += inner1 + "CornerId cc" + s + " = st" + s + ";\n";
+        std::string test = "true";
+        for (std::size_t j = 0; j < o.corners.size(); ++j) {
+            const std::string nd = "n[" + str(o.corners[j]) + "]", h = "g.cornerNode(cc" + s + ")";
+            if (j > 0) out += inner1 + "cc" + s + " = g.nextCorner(cc" + s + ");\n";
+            if (o.cornerBound[j]) {
+                out += inner1 + "if (" + h + " != " + nd + ") continue;\n";
+                continue;
+            }
+            out += inner1 + nd + " = " + h + ";\n";
+            std::string t = o.cornerKinds[j] >= 0 ? "g.nodeKind(" + nd + ") != " + str(o.cornerKinds[j]) : "";
+            for (int d : o.distinctNodes) t += (t.empty() ? "" : " || ") + nd + " == n[" + str(d) + "]";
+            if (!t.empty()) out += inner1 + "if (" + t + ") continue;\n";
+        }
+        (void)test;
+        out += inner1 + "{\n";
+        inner(out, inner1 + "    ");
+        out += inner1 + "}\n" + body + "}\n" + next + "}\n" + in + "}\n";
+    }
+
     // The loop header over the edges at `from` that may bind `ed`: a directed
     // edge among `from`'s outgoing (or incoming) edges only, an undirected one
     // among both (outgoing first, self-loops once), as the interpreter.
@@ -175,7 +229,7 @@ private:
                ") == g.target(" + x + ")) continue;\n" + in + "    " + ed + " = " + x + ";\n";
     }
 
-    std::string arrays() const { return str(match_.nodeSlots) + "], e[" + str(match_.edgeSlots); }
+    std::string arrays() const { return str(match_.nodeSlots) + "], e[" + str(match_.edgeSlots) + "], f[" + str(match_.faceSlots); }
 
     // The full matcher (anchor -1), or the one with pattern node `anchor` bound to `host`.
     std::string matcher(int anchor) {
@@ -183,15 +237,16 @@ private:
                                      : "    void match_" + ri_ + "_a" + str(anchor) +
                                            "(const Graph& g, NodeId host, MatchBuffer& out, EdgeId newFrom) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
-        out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n";
+        out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n"
+               "        std::fill(std::begin(f), std::end(f), kNoId);\n";
         if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
         if (anchor >= 0)
             if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(anchor)], "host"); !kinds.empty())
                 out += "        if (!(" + kinds + ")) return;\n";
         std::string complete = "";
         std::string nacTest = "true";
-        for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
-        const std::string push = "out.add(n, e);";
+        for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e, f)";
+        const std::string push = "out.add(n, e, f);";
         std::string body;
         if (anchor < 0) {
             steps(match_.full, 0, nullptr, "@@COMPLETE@@", body, "        ");
@@ -228,7 +283,7 @@ private:
         out += "    void repair_" + ri_ + "(const Graph& g, const RepairArea& area, MatchSet& set) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
         std::string nacTest = "true";
-        for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e)";
+        for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e, f)";
         out += "        for (const NodeId h : area.nodes) {\n            if (!g.nodeAlive(h)) continue;\n";
         out += "            const bool full = area.full(h);\n            const int hk = g.nodeKind(h);\n            (void)full;\n            (void)hk;\n";
         for (int p = 0; p < static_cast<int>(r_.nodes.size()); ++p) {
@@ -237,7 +292,8 @@ private:
             if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(p)], "h"); !kinds.empty())
                 cond += " && " + kinds;
             out += "            if (" + cond + ") {\n";
-            out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n";
+            out += "                std::fill(std::begin(n), std::end(n), kNoId);\n                std::fill(std::begin(e), std::end(e), kNoId);\n"
+                   "                std::fill(std::begin(f), std::end(f), kNoId);\n";
             out += "                n[" + str(p) + "] = h;\n";
             out += "                const EdgeId newFrom = area.newEdgesOnly(full, " + anchor + ");\n                (void)newFrom;\n";
             newEdgeGate_ = "newFrom != kNoId && !(" + bindsNewEdge("newFrom") + ")";
@@ -245,7 +301,7 @@ private:
             steps(match_.anchored[static_cast<std::size_t>(p)], 0, nullptr, "@@COMPLETE@@", body, "                ");
             newEdgeGate_.clear();
             const std::string first = p == 0 ? "" : " && area.firstAnchor(" + str(p) + ", n, e, " + str(static_cast<int>(r_.edges.size())) + ", " + table + ")";
-            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, g);\n");
+            body.replace(body.find("@@COMPLETE@@"), 12, "if (" + nacTest + first + ") set.add(n, e, f, g);\n");
             out += body + "            }\n";
         }
         return out + "        }\n    }\n\n";
@@ -253,7 +309,7 @@ private:
 
     std::string nac(int k) {
         const auto& n = r_.nacs[k];
-        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e) {\n";
+        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e, const FaceId* f) {\n        (void)f;\n";
         std::string body;
         steps(match_.negatives[static_cast<std::size_t>(k)], 0, &n, "@@COMPLETE@@", body, "        ");
         body.replace(body.find("@@COMPLETE@@"), 12, "return true;\n");
@@ -264,6 +320,7 @@ private:
         std::string out = "    void writes_" + ri_ + "_" + str(di) + "(Match m, WriteSet& w) const {\n        (void)m;\n        (void)w;\n";
         for (int n : p.writtenNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
         for (int e : p.writtenEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
+        for (int f : p.writtenFaces) out += "        w.faces.push_back(m.faces[" + str(f) + "]);\n";
         return out + "    }\n\n";
     }
 
@@ -278,24 +335,28 @@ private:
         ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
         ctx.nodeKind = [this](int i) { return r_.nodes[i].kind; };
         ctx.edgeKind = [this](int i) { return r_.edges[i].kind; };
+        ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
+        ctx.faceKind = [this](int i) { return r_.faces[static_cast<std::size_t>(i)].kind; };
         out += rewrite_.prepare(p, ctx, in);
         const std::string commit = rewrite_.commit(p, "        ");
         // Kept in a typed buffer until commit (no allocation once warm).
         const std::string nn = str(static_cast<int>(std::max<std::size_t>(r_.nodes.size(), 1)));
         const std::string ne = str(static_cast<int>(std::max<std::size_t>(r_.edges.size(), 1)));
-        std::string pending = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n";
+        const std::string nf = str(static_cast<int>(std::max<std::size_t>(r_.faces.size(), 1)));
+        std::string pending = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n        FaceId mf[" + nf + "];\n";
         for (std::size_t r = 0; r < p.registers.size(); ++r) pending += "        " + cppType(p.registers[r]) + " " + reg(static_cast<int>(r)) + ";\n";
         // A parallel step keeps one per match: plain records grow without copying.
         pending += "    };\n    GrowableArray<Pending_" + rd + "> pending_" + rd + "_;\n\n";
         out += in + "Pending_" + rd + "& p = pending_" + rd + "_.emplace_back();\n";
         out += in + "std::copy(m.nodes, m.nodes + " + str(static_cast<int>(r_.nodes.size())) + ", p.mn);\n";
         out += in + "std::copy(m.edges, m.edges + " + str(static_cast<int>(r_.edges.size())) + ", p.me);\n";
+        if (!r_.faces.empty()) out += in + "std::copy(m.faces, m.faces + " + str(static_cast<int>(r_.faces.size())) + ", p.mf);\n";
         for (std::size_t r = 0; r < p.registers.size(); ++r) out += in + "p." + reg(static_cast<int>(r)) + " = " + reg(static_cast<int>(r)) + ";\n";
         out += in + "pendingOrder_.push_back(PendingRef{" + str(firstDaughter_ + di) + ", static_cast<std::uint32_t>(pending_" + rd +
                "_.size() - 1)});\n";
         out += "    }\n\n";
         std::string apply = "    void apply_" + rd + "(Graph& G, long long step, const Pending_" + rd + "& p) {\n";
-        apply += "        const Match m{p.mn, p.me};\n        (void)m;\n";
+        apply += "        const Match m{p.mn, p.me, p.mf};\n        (void)m;\n";
         for (std::size_t r = 0; r < p.registers.size(); ++r)
             apply += "        const auto& " + reg(static_cast<int>(r)) + " = p." + reg(static_cast<int>(r)) + ";\n";
         return pending + out + apply + commit + "    }\n\n";

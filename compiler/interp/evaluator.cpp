@@ -64,6 +64,11 @@ Value call(const ir::Expr& e, EvalFrame& f) {
 }
 
 
+// The host element bound to a pattern element.
+std::uint32_t matchElement(const EvalFrame& f, const ir::ElemRef& r) {
+    return r.cls == ir::ElemClass::Edge ? f.edges[r.index] : r.cls == ir::ElemClass::Face ? f.faces[r.index] : f.nodes[r.index];
+}
+
 Value fact(const ir::Expr& e, EvalFrame& f, ir::ElemClass cls, std::uint32_t id) {
     return rt::elementFact(*f.graph, cls, id, e.fact);
 }
@@ -77,13 +82,11 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     case ExprOp::Const: return (*f.consts)[e.index];
     case ExprOp::Local: return (*f.locals)[e.index];
     case ExprOp::FnArg: return (*f.fnArgs)[e.index];
-    case ExprOp::Attr:
-        if (e.elem.cls == ir::ElemClass::Edge) return f.graph->edgeAttr(f.edges[e.elem.index], e.index);
-        return f.graph->nodeAttr(f.nodes[e.elem.index], e.index);
+    case ExprOp::Attr: return f.graph->attrOf(e.elem.cls, matchElement(f, e.elem), e.index);
     case ExprOp::SelfAttr: return f.graph->attrOf(f.selfClass, f.self, e.index);
     case ExprOp::Fact: {
         const ir::ElemClass cls = e.elem.cls;
-        return fact(e, f, cls, cls == ir::ElemClass::Edge ? f.edges[e.elem.index] : f.nodes[e.elem.index]);
+        return fact(e, f, cls, matchElement(f, e.elem));
     }
     case ExprOp::SelfFact: return fact(e, f, f.selfClass, f.self);
     case ExprOp::Placed: return *(*f.placed)[e.index];

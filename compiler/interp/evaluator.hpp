@@ -27,6 +27,7 @@ struct EvalFrame {
     const rt::Graph* graph = nullptr;
     const rt::NodeId* nodes = nullptr;  // the match's host nodes, by pattern index
     const rt::EdgeId* edges = nullptr;
+    const rt::FaceId* faces = nullptr;
     rt::Rng* rng = nullptr;
     const std::vector<std::optional<rt::vec2>>* placed = nullptr;  // automatic positions, by daughter node
     ir::ElemClass selfClass = ir::ElemClass::Node;    // kind style expressions

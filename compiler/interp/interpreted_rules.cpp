@@ -12,7 +12,7 @@ using rt::kNoId;
 using rt::NodeId;
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
-    std::size_t maxNodes = 0, maxEdges = 0;
+    std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
     for (const auto& r : st.prog->rules) {
         lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);
         rt::RuleInfo& info = facts.info;
@@ -31,9 +31,11 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
         const lower::MatchProgram& m = matches_.emplace_back(lower::lowerMatch(*st.prog, r));
         maxNodes = std::max(maxNodes, static_cast<std::size_t>(m.nodeSlots));
         maxEdges = std::max(maxEdges, static_cast<std::size_t>(m.edgeSlots));
+        maxFaces = std::max(maxFaces, static_cast<std::size_t>(m.faceSlots));
     }
     boundNodes_.assign(maxNodes, kNoId);
     boundEdges_.assign(maxEdges, kNoId);
+    boundFaces_.assign(maxFaces, kNoId);
 }
 
 // ---- matching: the lowered match lists, operation by operation -------------------
@@ -76,8 +78,10 @@ bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, s
                 f.graph = &g;
                 f.nodes = boundNodes_.data();
                 f.edges = boundEdges_.data();
+                f.faces = boundFaces_.data();
                 return evaluateBool(*o.condition, f) && search(g, ops, i + 1, onComplete);
             },
+            [&](const lower::MatchFace& o) { return bindFace(g, o, ops, i, onComplete); },
             [&](const lower::ScanNodes& o) {
                 auto tryHost = [&](NodeId h) {
                     if (usedNode(o.distinctNodes, h) || (g.edgeKindsAt(h) & o.edgeKinds) != o.edgeKinds) return false;
@@ -131,6 +135,61 @@ bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, s
         ops[i]);
 }
 
+template <class OnComplete>
+bool InterpretedRules::bindFace(const rt::Graph& g, const lower::MatchFace& o, const lower::MatchList& ops, std::size_t i,
+                                OnComplete& onComplete) {
+    const int k = static_cast<int>(o.corners.size());
+    // Binds face f with `start` (one of its corners) at pattern corner 0.
+    auto tryRotation = [&](rt::FaceId f, rt::CornerId start) {
+        rt::CornerId c = start;
+        bool fits = true;
+        for (int j = 0; j < k && fits; ++j, c = g.nextCorner(c)) {
+            const NodeId h = g.cornerNode(c);
+            const int slot = o.corners[static_cast<std::size_t>(j)];
+            if (o.cornerBound[static_cast<std::size_t>(j)]) {
+                fits = boundNodes_[slot] == h;
+                continue;
+            }
+            const int kind = o.cornerKinds[static_cast<std::size_t>(j)];
+            fits = (kind < 0 || g.nodeKind(h) == kind) &&
+                   std::none_of(o.distinctNodes.begin(), o.distinctNodes.end(), [&](int s) { return boundNodes_[s] == h; });
+            if (fits) boundNodes_[slot] = h;
+        }
+        bool stop = false;
+        if (fits) {
+            boundFaces_[o.face] = f;
+            stop = search(g, ops, i + 1, onComplete);
+            boundFaces_[o.face] = kNoId;
+        }
+        for (int j = 0; j < k; ++j)
+            if (!o.cornerBound[static_cast<std::size_t>(j)]) boundNodes_[o.corners[static_cast<std::size_t>(j)]] = kNoId;
+        return stop;
+    };
+    auto faceFits = [&](rt::FaceId f) {
+        return g.faceKind(f) == o.kind && (o.anyCount || g.cornerCount(f) == k) &&
+               std::none_of(o.distinctFaces.begin(), o.distinctFaces.end(), [&](int s) { return boundFaces_[s] == f; });
+    };
+    if (o.from < 0) {
+        const auto faces = g.facesOfKind(o.kind);
+        for (std::size_t x = 0; x < faces.size(); ++x) {
+            const rt::FaceId f = faces[x];
+            if (!faceFits(f)) continue;
+            rt::CornerId start = g.firstCorner(f);
+            for (int r = 0; r < (o.anyCount ? 1 : k); ++r, start = g.nextCorner(start))
+                if (tryRotation(f, start)) return true;
+        }
+        return false;
+    }
+    for (rt::CornerId c = g.firstCornerAt(boundNodes_[o.from]); c != kNoId; c = g.nextCornerAt(c)) {
+        const rt::FaceId f = g.cornerFace(c);
+        if (!faceFits(f) || (o.anyCount && c != g.firstCorner(f))) continue;
+        rt::CornerId start = c;
+        for (int j = 0; j < o.fromCorner; ++j) start = g.prevCorner(start);
+        if (tryRotation(f, start)) return true;
+    }
+    return false;
+}
+
 // The edges at `from` that may bind a pattern edge: a directed one among
 // `from`'s outgoing (or incoming) edges only, an undirected one among both
 // (outgoing first, self-loops once). Stops when `each` returns true.
@@ -155,7 +214,7 @@ bool InterpretedRules::negativesHold(const rt::Graph& g, const lower::MatchProgr
 void InterpretedRules::collect(const rt::Graph& g, const lower::MatchProgram& m, const lower::MatchList& ops,
                                rt::MatchBuffer& out) {
     auto record = [&] {
-        if (negativesHold(g, m)) out.add(boundNodes_.data(), boundEdges_.data());
+        if (negativesHold(g, m)) out.add(boundNodes_.data(), boundEdges_.data(), boundFaces_.data());
         return false;  // enumerate them all
     };
     search(g, ops, 0, record);
@@ -186,6 +245,7 @@ void InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, rt::Matc
     const lower::RewriteProgram& p = rewrites_[rule][daughter];
     for (int n : p.writtenNodes) w.nodes.push_back(m.nodes[n]);
     for (int e : p.writtenEdges) w.edges.push_back(m.edges[e]);
+    for (int f : p.writtenFaces) w.faces.push_back(m.faces[f]);
 }
 
 void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
@@ -198,6 +258,7 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     f.graph = &g;
     f.nodes = m.nodes;
     f.edges = m.edges;
+    f.faces = m.faces;
     f.locals = &locals_;
 
     if (pendingCount_ == pending_.size()) pending_.emplace_back();
@@ -206,6 +267,7 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     p.daughter = daughter;
     p.nodes.assign(m.nodes, m.nodes + r.nodes.size());
     p.edges.assign(m.edges, m.edges + r.edges.size());
+    p.faces.assign(m.faces, m.faces + r.faces.size());
     p.registers.assign(program.registers.size(), rt::Value{});
     executor_.prepare(program, m, g, f, p.registers);
     ++pendingCount_;
@@ -214,7 +276,7 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (std::size_t k = 0; k < pendingCount_; ++k) {
         Prepared& p = pending_[k];
-        executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data()}, p.registers, g, step);
+        executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, g, step);
     }
     pendingCount_ = 0;
 }

@@ -36,6 +36,7 @@ private:
         std::size_t rule = 0, daughter = 0;
         std::vector<rt::NodeId> nodes;                  // the match
         std::vector<rt::EdgeId> edges;
+        std::vector<rt::FaceId> faces;
         std::vector<rt::Value> registers;               // the rewrite program's
     };
 
@@ -47,6 +48,8 @@ private:
     static bool eachEdgeAt(const rt::Graph& g, rt::NodeId from, bool directed, bool outgoing, Each& each);
     void collect(const rt::Graph& g, const lower::MatchProgram& m, const lower::MatchList& ops, rt::MatchBuffer& out);
     bool orderedOk(const rt::Graph& g, int node, const std::vector<lower::OrderCheck>& checks) const;
+    template <class OnComplete>
+    bool bindFace(const rt::Graph& g, const lower::MatchFace& o, const lower::MatchList& ops, std::size_t i, OnComplete& onComplete);
     bool negativesHold(const rt::Graph& g, const lower::MatchProgram& m);
     // While findAnchored keeps only matches binding a new edge: false where
     // the lowering placed the test and no bound pattern edge is new.
@@ -61,6 +64,7 @@ private:
     RewriteExecutor executor_;
     std::vector<rt::NodeId> boundNodes_;
     std::vector<rt::EdgeId> boundEdges_;
+    std::vector<rt::FaceId> boundFaces_;
     rt::EdgeId newEdgesFrom_ = rt::kNoId;
     std::vector<rt::Value> locals_;
     const ir::Rule* current_ = nullptr;

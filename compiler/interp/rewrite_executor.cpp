@@ -56,6 +56,7 @@ void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::v
     faces.assign(static_cast<std::size_t>(p.faceHandles), rt::kNoId);
     for (const auto& op : p.commit) {
         std::visit(lower::Overloaded{
+                       [&](const lower::DeleteFace& o) { g.removeFace(m.faces[o.matchFace]); },
                        [&](const lower::DeleteEdge& o) { g.removeEdge(m.edges[o.matchEdge]); },
                        [&](const lower::BindNode& o) { nodes[o.handle] = m.nodes[o.matchNode]; },
                        [&](const lower::CreateNode& o) {
@@ -80,6 +81,13 @@ void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::v
                        [&](const lower::SetEdgeStyle& o) {
                            g.setEdgeStyle(edges[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
+                       [&](const lower::BindFace& o) { faces[o.handle] = m.faces[o.matchFace]; },
+                       [&](const lower::SetFaceAttr& o) {
+                           if (g.faceAlive(faces[o.handle])) g.initFaceAttr(faces[o.handle], o.write.attr, value(o.write.value));
+                       },
+                       [&](const lower::TouchFace& o) {
+                           if (g.faceAlive(faces[o.handle])) g.touchFaceValues(faces[o.handle]);
+                       },
                        [&](const lower::CreateFace& o) {
                            corners_.clear();
                            for (int c : o.corners) corners_.push_back(nodes[c]);
@@ -87,7 +95,7 @@ void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::v
                            for (const auto& w : o.attrs) g.initFaceAttr(faces[o.handle], w.attr, value(w.value));
                        },
                        [&](const lower::SetFaceStyle& o) {
-                           g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
+                           if (g.faceAlive(faces[o.handle])) g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
                    },
                    op);

@@ -188,8 +188,7 @@ struct AxiomEdge {
     Span span;
 };
 
-// A face the axiom or a daughter creates (faces are not matched yet, so a
-// daughter keeps none).
+// A face the axiom or a daughter creates.
 struct NewFace {
     std::string name;                  // "" when anonymous
     int kind = -1;
@@ -210,6 +209,11 @@ struct Axiom {
 struct PatternNode {
     std::string name;
     int kind = -1;                     // -1: wildcard, matches any node and is left unchanged
+    // >= 0: not written by the user but bound to the first corner of the
+    // rule's face `anchorOf` (a face pattern without corners), so that every
+    // match binding a face binds a node its changes are marked at
+    // (rt::Graph::anchorOf). A wildcard: always kept, never read.
+    int anchorOf = -1;
     std::optional<Vec2> sketch;        // drawing position (ordering, automatic placement)
     Span span;
 };
@@ -218,6 +222,16 @@ struct PatternEdge {
     std::string name;                  // "" when anonymous
     int kind = -1;
     int src = -1, dst = -1;            // node indices; for undirected kinds either orientation matches
+    Span span;
+};
+
+// A face of a mother graph: `f: Kind(a, b, c)` binds its corners in cyclic
+// order (any rotation: each is a match); `f: Kind` a face of any corner count.
+struct PatternFace {
+    std::string name;
+    int kind = -1;
+    std::vector<int> corners;          // node indices in cyclic order; empty: any corner count
+    int anchor = -1;                   // without corners: the hidden node bound to its first corner
     Span span;
 };
 
@@ -262,6 +276,14 @@ struct DaughterEdge {
     Span span;
 };
 
+// A mother face the daughter keeps (`f;` or `f { attr = … };`).
+struct KeptFace {
+    int motherFace = -1;
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
 struct Daughter {
     std::optional<Expr> weightExpr;    // absent: weight 1
     std::optional<double> weight;      // known at compile time
@@ -269,8 +291,10 @@ struct Daughter {
     std::vector<DaughterNode> nodes;
     std::vector<DaughterEdge> edges;
     std::vector<NewFace> faces;
-    std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges go too)
+    std::vector<KeptFace> keptFaces;
+    std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges and faces go too)
     std::vector<int> deletedEdges;     // mother edges not kept
+    std::vector<int> deletedFaces;     // mother faces not kept
     bool autoPlacement = false;        // some new node is placed automatically
     Span span;
 };
@@ -285,6 +309,7 @@ struct Rule {
     bool parallel = false;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
+    std::vector<PatternFace> faces;
     std::vector<Condition> conditions;
     std::vector<NegativeCondition> nacs;
     std::vector<Let> lets;             // evaluated once per application, before the daughter's

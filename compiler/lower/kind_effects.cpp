@@ -37,6 +37,18 @@ bool anyReadsDegree(const std::vector<ir::Condition>& conditions) {
     return std::any_of(conditions.begin(), conditions.end(), [](const ir::Condition& c) { return readsDegree(c.expr); });
 }
 
+// Facts counting faces of any kind around an element.
+bool readsFaceCounts(const ir::Expr& e) {
+    if (e.op == ir::ExprOp::Fact &&
+        (e.fact == ir::ElemFact::Faces || e.fact == ir::ElemFact::Neighbours))
+        return true;
+    return std::any_of(e.args.begin(), e.args.end(), readsFaceCounts);
+}
+
+bool anyReadsFaceCounts(const std::vector<ir::Condition>& conditions) {
+    return std::any_of(conditions.begin(), conditions.end(), [](const ir::Condition& c) { return readsFaceCounts(c.expr); });
+}
+
 template <class T>
 const T* at(const std::vector<T>& v, int i) {
     return i >= 0 && static_cast<std::size_t>(i) < v.size() ? &v[static_cast<std::size_t>(i)] : nullptr;
@@ -45,12 +57,14 @@ const T* at(const std::vector<T>& v, int i) {
 // The node attributes `e` reads; `kindOf` gives a node's kind by its index
 // in the rule's numbering (match nodes, then a negative condition's).
 template <class KindOf>
-void readValues(const ir::Expr& e, const KindOf& kindOf, std::set<long long>& out) {
+void readValues(const ir::Expr& e, const KindOf& kindOf, const ir::Rule& rule, std::set<long long>& out) {
     if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Node) {
         const int kind = kindOf(e.elem.index);
         if (kind >= 0) out.insert(valueKey(kind, e.index));
     }
-    for (const auto& a : e.args) readValues(a, kindOf, out);
+    if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Face)
+        if (const auto* f = at(rule.faces, e.elem.index); f && f->kind >= 0) out.insert(valueKey(f->kind, e.index));
+    for (const auto& a : e.args) readValues(a, kindOf, rule, out);
 }
 
 // The kinds and attributes daughter `d` changes (KindEffects).
@@ -87,6 +101,11 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
         if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
     for (const auto& f : d.faces) changed.add(f.kind, ir::ElemClass::Face);   // new
+    for (int f : d.deletedFaces) changed.add(at(rule.faces, f) ? at(rule.faces, f)->kind : -1, ir::ElemClass::Face);
+    for (const auto& k : d.keptFaces)
+        if (const auto* f = at(rule.faces, k.motherFace); f && f->kind >= 0)
+            for (const auto& a : k.assigns) values.insert(valueKey(f->kind, a.attr));
+    out.changedValues.back().assign(values.begin(), values.end());
     out.changedKinds.push_back(changed.sorted());
 }
 
@@ -97,10 +116,11 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
     KindSet read(kinds);
     for (const auto& n : rule.nodes) read.add(n.kind, ir::ElemClass::Node);
     for (const auto& e : rule.edges) read.add(e.kind, ir::ElemClass::Edge);
+    for (const auto& f : rule.faces) read.add(f.kind, ir::ElemClass::Face);
     out.readsDegrees = anyReadsDegree(rule.conditions);
     std::set<long long> values;
     const auto matchKind = [&](int i) { return at(rule.nodes, i) ? at(rule.nodes, i)->kind : -1; };
-    for (const auto& c : rule.conditions) readValues(c.expr, matchKind, values);
+    for (const auto& c : rule.conditions) readValues(c.expr, matchKind, rule, values);
     for (const auto& nac : rule.nacs) {
         for (const auto& n : nac.nodes) read.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : nac.edges) read.add(e.kind, ir::ElemClass::Edge);
@@ -108,8 +128,17 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
         const auto nacKind = [&](int i) {
             return i < nac.outerNodes ? matchKind(i) : at(nac.nodes, i - nac.outerNodes) ? at(nac.nodes, i - nac.outerNodes)->kind : -1;
         };
-        for (const auto& c : nac.conditions) readValues(c.expr, nacKind, values);
+        for (const auto& c : nac.conditions) readValues(c.expr, nacKind, rule, values);
     }
+    // A face's geometry moves with any corner, of any node kind, and
+    // removing a node removes its faces; face counts count every face kind.
+    bool facesCounted = anyReadsFaceCounts(rule.conditions);
+    for (const auto& nac : rule.nacs) facesCounted = facesCounted || anyReadsFaceCounts(nac.conditions);
+    if (!rule.faces.empty() || facesCounted) {
+        read.add(-1, ir::ElemClass::Node);
+        out.readsDegrees = true;
+    }
+    if (facesCounted) read.add(-1, ir::ElemClass::Face);
     out.readValues.assign(values.begin(), values.end());
     // A degree counts the edges of every kind.
     if (out.readsDegrees) read.add(-1, ir::ElemClass::Edge);

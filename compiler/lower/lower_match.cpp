@@ -18,10 +18,10 @@ public:
 
     MatchProgram lower() {
         MatchProgram p;
-        p.full = list(buildSearchPlan(r_.nodes, r_.edges, r_.conditions, 0, 0, 0), nullptr, {}, {});
+        p.full = list(buildSearchPlan(r_.nodes, r_.edges, r_.faces, r_.conditions, 0, 0, 0), nullptr, {}, {});
         for (std::size_t a = 0; a < r_.nodes.size(); ++a) {
             const int anchor = static_cast<int>(a);
-            p.anchored.push_back(list(buildSearchPlan(r_.nodes, r_.edges, r_.conditions, 0, 0, 0, anchor), nullptr, {anchor}, {}));
+            p.anchored.push_back(list(buildSearchPlan(r_.nodes, r_.edges, r_.faces, r_.conditions, 0, 0, 0, anchor), nullptr, {anchor}, {}));
             p.anchorEdgeKinds.push_back(edgeKindsNeeded(anchor));
         }
         std::size_t nodes = r_.nodes.size(), edges = r_.edges.size();
@@ -29,7 +29,7 @@ public:
             std::vector<int> outerNodes, outerEdges;
             for (int i = 0; i < nac.outerNodes; ++i) outerNodes.push_back(i);
             for (int i = 0; i < nac.outerEdges; ++i) outerEdges.push_back(i);
-            const auto plan = buildSearchPlan(nac.nodes, nac.edges, nac.conditions, nac.outerNodes, nac.outerEdges,
+            const auto plan = buildSearchPlan(nac.nodes, nac.edges, {}, nac.conditions, nac.outerNodes, nac.outerEdges,
                                               static_cast<int>(r_.nodes.size()));
             p.negatives.push_back(list(plan, &nac, outerNodes, outerEdges));
             nodes = std::max(nodes, r_.nodes.size() + nac.nodes.size());
@@ -37,6 +37,7 @@ public:
         }
         p.nodeSlots = static_cast<int>(std::max<std::size_t>(nodes, 1));
         p.edgeSlots = static_cast<int>(std::max<std::size_t>(edges, 1));
+        p.faceSlots = static_cast<int>(std::max<std::size_t>(r_.faces.size(), 1));
         return p;
     }
 
@@ -66,9 +67,19 @@ private:
         return out;
     }
 
+    // The bound node slots a newly bound node must differ from: a face's
+    // hidden anchor is no pattern node (any host may be a face's first corner).
+    std::vector<int> distinct(const std::vector<int>& bound) const {
+        std::vector<int> out;
+        for (int n : bound)
+            if (n >= static_cast<int>(r_.nodes.size()) || r_.nodes[static_cast<std::size_t>(n)].anchorOf < 0) out.push_back(n);
+        return out;
+    }
+
     MatchList list(const std::vector<PlanStep>& plan, const ir::NegativeCondition* nac, std::vector<int> boundNodes,
                    std::vector<int> boundEdges) const {
         MatchList out;
+        std::vector<int> boundFaces;
         for (const auto& s : plan) {
             // A search keeping only matches that bind a new edge tests that
             // where the pattern's last edge is bound (not in negative conditions).
@@ -80,16 +91,31 @@ private:
                 break;
             }
             case PlanStep::Op::ScanNodes:
-                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), boundNodes,
+                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(boundNodes),
                                         ordered(s.node, boundNodes)});
                 boundNodes.push_back(s.node);
                 break;
             case PlanStep::Op::ExtendEdge: {
                 const auto& pe = edgeOf(s.edge, nac);
                 out.push_back(ExtendEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, s.fromIsSource,
-                                         nodeKind(s.node, nac), boundEdges, boundNodes, ordered(s.node, boundNodes), lastEdge});
+                                         nodeKind(s.node, nac), boundEdges, distinct(boundNodes), ordered(s.node, boundNodes), lastEdge});
                 boundNodes.push_back(s.node);
                 boundEdges.push_back(s.edge);
+                break;
+            }
+            case PlanStep::Op::BindFace: {
+                const ir::PatternFace& pf = r_.faces[static_cast<std::size_t>(s.face)];
+                MatchFace o{s.face, pf.kind, s.from, s.fromCorner, faceSlots(pf), pf.corners.empty(), {}, {},
+                            pf.corners.empty() ? std::vector<int>{} : distinct(boundNodes), boundFaces};
+                for (int c : o.corners) {
+                    const bool bound = std::find(boundNodes.begin(), boundNodes.end(), c) != boundNodes.end();
+                    o.cornerBound.push_back(bound ? 1 : 0);
+                    o.cornerKinds.push_back(bound ? -1 : nodeKind(c, nac));
+                }
+                for (int c : o.corners)
+                    if (std::find(boundNodes.begin(), boundNodes.end(), c) == boundNodes.end()) boundNodes.push_back(c);
+                boundFaces.push_back(s.face);
+                out.push_back(std::move(o));
                 break;
             }
             case PlanStep::Op::ConnectEdge: {

@@ -14,7 +14,7 @@ public:
     RewriteProgram lower() {
         p_.nodeHandles = static_cast<int>(d_.nodes.size());
         p_.edgeHandles = static_cast<int>(d_.edges.size());
-        p_.faceHandles = static_cast<int>(d_.faces.size());
+        p_.faceHandles = static_cast<int>(d_.faces.size() + d_.keptFaces.size());
         prepare();
         commit();
         return std::move(p_);
@@ -69,16 +69,24 @@ private:
             for (const auto& a : d_.faces[i].assigns) faceAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
             for (const auto& s : d_.faces[i].styles) faceStyles_[i].emplace_back(&s, operand(s.value));
         }
+        keptFaceAttrs_.resize(d_.keptFaces.size());
+        keptFaceStyles_.resize(d_.keptFaces.size());
+        for (std::size_t i = 0; i < d_.keptFaces.size(); ++i) {
+            for (const auto& a : d_.keptFaces[i].assigns) keptFaceAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
+            for (const auto& s : d_.keptFaces[i].styles) keptFaceStyles_[i].emplace_back(&s, operand(s.value));
+        }
     }
 
     void place() {
         Place pl;
-        for (const auto& n : r_.nodes) pl.motherSketch.push_back(*n.sketch);
+        // A face's hidden anchor has no sketch and is no reference.
+        for (const auto& n : r_.nodes) pl.motherSketch.push_back(n.sketch.value_or(ir::Vec2{0, 0}));
         for (const auto& dn : d_.nodes)
-            if (dn.motherNode >= 0) pl.refs.emplace_back(*dn.sketch, dn.motherNode);
+            if (dn.motherNode >= 0 && dn.sketch) pl.refs.emplace_back(*dn.sketch, dn.motherNode);
         // No node kept: the whole match is the reference.
         if (pl.refs.empty())
-            for (std::size_t i = 0; i < r_.nodes.size(); ++i) pl.refs.emplace_back(*r_.nodes[i].sketch, static_cast<int>(i));
+            for (std::size_t i = 0; i < r_.nodes.size(); ++i)
+                if (r_.nodes[i].sketch) pl.refs.emplace_back(*r_.nodes[i].sketch, static_cast<int>(i));
         for (const auto& e : r_.edges)
             if (prog_.kinds[e.kind].directed && e.src != e.dst) {
                 pl.directed = std::make_pair(e.src, e.dst);
@@ -99,13 +107,14 @@ private:
         return d_.nodes[de.src].motherNode != me.src || d_.nodes[de.dst].motherNode != me.dst;
     }
 
-    // The order of the updates: deleted edges go; new nodes come; kept edges
-    // that change ends are reconnected (before their old end nodes go, so
-    // they survive); deleted nodes go with their remaining edges; then kept
-    // nodes change, and edges are updated or created, in the daughter's order;
-    // then the new faces.
+    // The order of the updates: deleted faces and edges go; new nodes come;
+    // kept edges that change ends are reconnected (before their old end
+    // nodes go, so they survive); deleted nodes go with their remaining edges
+    // and faces; then kept nodes change, and edges are updated or created, in
+    // the daughter's order; then kept faces change, and new faces come.
     void commit() {
         auto& c = p_.commit;
+        for (int f : d_.deletedFaces) c.push_back(DeleteFace{f});
         for (int e : d_.deletedEdges) c.push_back(DeleteEdge{e});
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
             const auto& dn = d_.nodes[i];
@@ -139,6 +148,14 @@ private:
             }
             for (const auto& [style, value] : edgeStyles_[i]) c.push_back(SetEdgeStyle{h, style, value});
         }
+        for (std::size_t i = 0; i < d_.keptFaces.size(); ++i) {
+            const auto& kf = d_.keptFaces[i];
+            const int h = static_cast<int>(d_.faces.size() + i);
+            c.push_back(BindFace{h, kf.motherFace});
+            for (const auto& w : keptFaceAttrs_[i]) c.push_back(SetFaceAttr{h, r_.faces[kf.motherFace].kind, w});
+            if (!keptFaceAttrs_[i].empty()) c.push_back(TouchFace{h});
+            for (const auto& [style, value] : keptFaceStyles_[i]) c.push_back(SetFaceStyle{h, style, value});
+        }
         for (std::size_t i = 0; i < d_.faces.size(); ++i) {
             const auto& df = d_.faces[i];
             const int h = static_cast<int>(i);
@@ -152,6 +169,9 @@ private:
     void writeSet() {
         p_.writtenNodes = d_.deletedNodes;
         p_.writtenEdges = d_.deletedEdges;
+        p_.writtenFaces = d_.deletedFaces;
+        for (std::size_t i = 0; i < d_.keptFaces.size(); ++i)
+            if (!keptFaceAttrs_[i].empty() || !keptFaceStyles_[i].empty()) p_.writtenFaces.push_back(d_.keptFaces[i].motherFace);
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
             const auto& dn = d_.nodes[i];
             if (dn.motherNode >= 0 && (dn.position || !nodeAttrs_[i].empty() || !nodeStyles_[i].empty()))
@@ -169,8 +189,8 @@ private:
     const ir::Daughter& d_;
     RewriteProgram p_;
     std::vector<int> posReg_;
-    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_, faceAttrs_;
-    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_, faceStyles_;
+    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_, faceAttrs_, keptFaceAttrs_;
+    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_, faceStyles_, keptFaceStyles_;
 };
 
 }  // namespace

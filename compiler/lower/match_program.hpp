@@ -52,10 +52,29 @@ struct ConnectEdge {
     std::vector<int> distinctEdges;
     bool newEdgeGate;
 };
+// face := each face at bound node `from` (-1: each face of `kind`, by id),
+// with each of its rotations putting `from` at corner `fromCorner`: its
+// corners, from that rotation's first on, go to `corners` in order, a slot
+// bound before comparing, one bound here taking the host. Without
+// `anyCount`, the face has exactly corners.size() corners and every
+// rotation is a match; with it (`f: Kind`), `corners` is the face's hidden
+// anchor and only the face's first corner is bound there.
+// Scanned faces go by rotation, from the face's first corner on; faces at a
+// node go by the node's corner list (newest first).
+struct MatchFace {
+    int face, kind;
+    int from, fromCorner;
+    std::vector<int> corners;
+    bool anyCount;
+    std::vector<std::uint8_t> cornerBound;   // per corner
+    std::vector<int> cornerKinds;            // per corner bound here (-1: any)
+    std::vector<int> distinctNodes;          // node slots bound before
+    std::vector<int> distinctFaces;          // face slots bound before
+};
 struct Filter {
     const ir::Expr* condition;
 };
-using MatchOp = std::variant<ScanNodes, ExtendEdge, ConnectEdge, Filter>;
+using MatchOp = std::variant<ScanNodes, ExtendEdge, ConnectEdge, MatchFace, Filter>;
 using MatchList = std::vector<MatchOp>;
 
 struct MatchProgram {
@@ -63,7 +82,7 @@ struct MatchProgram {
     std::vector<MatchList> anchored;             // per pattern node: with it already bound
     std::vector<std::uint32_t> anchorEdgeKinds;  // per pattern node: what a host must have had to anchor it
     std::vector<MatchList> negatives;            // per negative condition: the outer slots already bound
-    int nodeSlots = 1, edgeSlots = 1;            // the most slots any list uses (at least 1)
+    int nodeSlots = 1, edgeSlots = 1, faceSlots = 1;   // the most slots any list uses (at least 1)
 };
 
 MatchProgram lowerMatch(const ir::Program& prog, const ir::Rule& rule);

@@ -63,7 +63,8 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
         out += "  " + std::visit(
                           [&](const auto& o) -> std::string {
                               using T = std::decay_t<decltype(o)>;
-                              if constexpr (std::is_same_v<T, DeleteEdge>) return "delete edge " + rule.edges[o.matchEdge].name;
+                              if constexpr (std::is_same_v<T, DeleteFace>) return "delete face " + rule.faces[o.matchFace].name;
+                              else if constexpr (std::is_same_v<T, DeleteEdge>) return "delete edge " + rule.edges[o.matchEdge].name;
                               else if constexpr (std::is_same_v<T, BindNode>) return h(o.handle) + " = " + rule.nodes[o.matchNode].name;
                               else if constexpr (std::is_same_v<T, CreateNode>)
                                   return h(o.handle) + " = new " + prog.kinds[o.kind].name + " at r" + std::to_string(o.posReg) +
@@ -86,6 +87,12 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                                          attrs(prog, o.kind, o.attrs);
                               else if constexpr (std::is_same_v<T, SetEdgeStyle>)
                                   return k(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              else if constexpr (std::is_same_v<T, BindFace>)
+                                  return "f" + std::to_string(o.handle) + " = " + rule.faces[o.matchFace].name;
+                              else if constexpr (std::is_same_v<T, SetFaceAttr>)
+                                  return "f" + std::to_string(o.handle) + "." + prog.kinds[o.kind].attrs[o.write.attr].name + " = " +
+                                         operand(o.write.value);
+                              else if constexpr (std::is_same_v<T, TouchFace>) return "touch face f" + std::to_string(o.handle);
                               else if constexpr (std::is_same_v<T, CreateFace>) {
                                   std::string corners;
                                   for (int c : o.corners) corners += (corners.empty() ? "" : ", ") + h(c);
@@ -102,6 +109,7 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
     std::string w;
     for (int n : p.writtenNodes) w += " " + rule.nodes[n].name;
     for (int e : p.writtenEdges) w += " " + rule.edges[e].name;
+    for (int f : p.writtenFaces) w += " " + rule.faces[f].name;
     return out + "writes" + w + "\n";
 }
 

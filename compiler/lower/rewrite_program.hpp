@@ -93,16 +93,21 @@ struct CreateEdge {
     std::vector<AttrWrite> attrs;
 };
 struct SetEdgeStyle { int handle; const ir::StyleAssign* style; Operand value; };
-// Faces are addressed by face handle (= the face's index among the rewrite's).
+// Faces are addressed by face handle: the daughter's new faces first, then
+// the faces it keeps (ir::Daughter::keptFaces order).
+struct DeleteFace { int matchFace; };                    // (a face a node deletion removed already: nothing)
+struct BindFace { int handle; int matchFace; };          // a kept face
+struct SetFaceAttr { int handle, kind; AttrWrite write; };   // a kept face's attribute (no change recorded)
+struct TouchFace { int handle; };                        // record that a kept face's attributes changed
 struct CreateFace {
     int handle, kind;
     std::vector<int> corners;                            // node handles, in order (>= 3, distinct)
     std::vector<AttrWrite> attrs;
 };
 struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; };
-using CommitOp = std::variant<DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetNodeAttr, TouchNodeValues,
-                              SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle, CreateFace,
-                              SetFaceStyle>;
+using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetNodeAttr,
+                              TouchNodeValues, SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle,
+                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle>;
 
 struct RewriteProgram {
     std::vector<PrepareOp> prepare;
@@ -112,7 +117,7 @@ struct RewriteProgram {
     bool placement = false;             // prepare has a Place (the `placed` positions exist)
     // What the rewrite deletes or changes, as pattern slots (parallel steps
     // keep rewrites that write what others read apart: rt::WriteSet).
-    std::vector<int> writtenNodes, writtenEdges;
+    std::vector<int> writtenNodes, writtenEdges, writtenFaces;
 };
 
 // For std::visit with one overload per operation and no catch-all: an

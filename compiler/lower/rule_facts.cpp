@@ -26,6 +26,7 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     for (bool nothing : newHostsAddingNothing(r, info.readsIncidence)) info.newHostAddsNothing.push_back(nothing ? 1 : 0);
     for (const auto& n : r.nodes) info.nodeKinds.push_back(n.kind);
     info.edgeCount = static_cast<int>(r.edges.size());
+    info.faceCount = static_cast<int>(r.faces.size());
     info.kindsKnown = true;
     KindEffects effects = kindEffects(r, prog.kinds);
     info.readKinds = std::move(effects.readKinds);
@@ -33,6 +34,7 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.readValues = std::move(effects.readValues);
     info.changedKinds = std::move(effects.changedKinds);
     info.changedValues = std::move(effects.changedValues);
+    // Removing a node removes its edges and faces, of any kind.
     for (const auto& d : r.daughters) info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
     return out;
 }

@@ -8,8 +8,11 @@
 namespace g2d::lower {
 
 
+std::vector<int> faceSlots(const ir::PatternFace& f) { return f.corners.empty() ? std::vector<int>{f.anchor} : f.corners; }
+
 std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
                                       const std::vector<ir::PatternEdge>& edges,
+                                      const std::vector<ir::PatternFace>& faces,
                                       const std::vector<ir::Condition>& conditions, int nodeBase, int edgeBase,
                                       int boundOuterNodes, int anchor) {
     std::vector<PlanStep> plan;
@@ -18,10 +21,13 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
     if (anchor >= 0) boundNodes.insert(anchor);
     std::set<int> boundEdges;
     for (int i = 0; i < edgeBase; ++i) boundEdges.insert(i);
+    std::set<int> boundFaces;
     std::vector<bool> conditionPlaced(conditions.size(), false);
 
     auto isBound = [&](const ir::ElemRef& r) {
-        return r.cls == ir::ElemClass::Node ? boundNodes.count(r.index) > 0 : boundEdges.count(r.index) > 0;
+        return r.cls == ir::ElemClass::Node ? boundNodes.count(r.index) > 0
+               : r.cls == ir::ElemClass::Edge ? boundEdges.count(r.index) > 0
+                                              : boundFaces.count(r.index) > 0;
     };
     auto placeConditions = [&]() {
         for (std::size_t c = 0; c < conditions.size(); ++c) {
@@ -49,10 +55,33 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
     };
 
     placeConditions();
-    const std::size_t total = nodes.size() + edges.size();
+    const std::size_t total = nodes.size() + edges.size() + faces.size();
     std::size_t placed = anchor >= 0 ? 1 : 0;
+    // Binds face `fi` from node `from` (its corner `fromCorner`), or by scanning (-1).
+    auto bindFace = [&](int fi, int from, int fromCorner) {
+        PlanStep s;
+        s.op = PlanStep::Op::BindFace;
+        s.face = fi;
+        s.from = from;
+        s.fromCorner = fromCorner;
+        plan.push_back(s);
+        boundFaces.insert(fi);
+        ++placed;
+        for (int c : faceSlots(faces[static_cast<std::size_t>(fi)]))
+            if (boundNodes.insert(c).second) ++placed;
+    };
     while (placed < total) {
         bool progressed = false;
+        // 0. A face with a bound corner: its few faces there, and its corners with them.
+        for (std::size_t i = 0; i < faces.size() && !progressed; ++i) {
+            if (boundFaces.count(static_cast<int>(i))) continue;
+            const std::vector<int> slots = faceSlots(faces[i]);
+            for (std::size_t c = 0; c < slots.size() && !progressed; ++c)
+                if (boundNodes.count(slots[c])) {
+                    bindFace(static_cast<int>(i), slots[c], static_cast<int>(c));
+                    progressed = true;
+                }
+        }
         // 1. An edge between two bound nodes: a lookup, no new candidates.
         for (std::size_t i = 0; i < edges.size() && !progressed; ++i) {
             const int ei = edgeBase + static_cast<int>(i);
@@ -94,7 +123,13 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
                 progressed = true;
             }
         }
-        // 3. Start a new component: the typed node with the most incident edges.
+        // 3. Start a new component: a face (its kind's index, and it binds
+        // its corners), else the typed node with the most incident edges.
+        for (std::size_t i = 0; i < faces.size() && !progressed; ++i)
+            if (!boundFaces.count(static_cast<int>(i))) {
+                bindFace(static_cast<int>(i), -1, -1);
+                progressed = true;
+            }
         if (!progressed) {
             int best = -1, bestScore = -1;
             for (std::size_t i = 0; i < nodes.size(); ++i) {

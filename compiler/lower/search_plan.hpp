@@ -17,11 +17,14 @@ struct PlanStep {
         ScanNodes,    // node := each host node of its kind (or any node for a wildcard)
         ExtendEdge,   // edge := each edge incident to bound node `from`; node := its other end
         ConnectEdge,  // edge := each edge between two bound nodes
+        BindFace,     // face := each face at bound node `from` (-1: of its kind), with its corners
         Check,        // evaluate conditions[condition]
     } op = Op::ScanNodes;
     int node = -1;
     int edge = -1;
+    int face = -1;
     int from = -1;
+    int fromCorner = -1;               // BindFace: the corner (of the face's pattern corners) `from` is
     bool fromIsSource = true;          // ExtendEdge: `from` is the edge's source
     int condition = -1;
 };
@@ -30,9 +33,13 @@ struct PlanStep {
 // condition extends its rule's match: nodes below nodeBase and edges below
 // edgeBase are already bound).
 // `anchor` >= 0: that node is bound before the search starts.
+// Faces (the rule's only: negative conditions have none) are bound from a
+// bound corner, or else scanned before any node: a face binds its corners.
 std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes, const std::vector<ir::PatternEdge>& edges,
-                                      const std::vector<ir::Condition>& conditions, int nodeBase, int edgeBase,
-                                      int boundOuterNodes, int anchor = -1);
+                                      const std::vector<ir::PatternFace>& faces, const std::vector<ir::Condition>& conditions,
+                                      int nodeBase, int edgeBase, int boundOuterNodes, int anchor = -1);
+// A pattern face's node slots in cyclic order: its corners, or its hidden anchor.
+std::vector<int> faceSlots(const ir::PatternFace& f);
 
 // How far (in edges) from a changed node a match can be affected: 0 without
 // negative conditions (a match reads only its own elements), else the depth

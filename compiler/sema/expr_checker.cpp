@@ -173,7 +173,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         for (const auto& b : *env.elems) {
             if (b.name != id) continue;
             if (b.poisoned) return std::nullopt;
-            const char* what = b.ref.cls == ir::ElemClass::Node ? "a node" : "an edge";
+            const char* what = b.ref.cls == ir::ElemClass::Node ? "a node" : b.ref.cls == ir::ElemClass::Edge ? "an edge" : "a face";
             g_.diags.error(e.span, "`" + id + "` is " + what + ", not a value; read one of its attributes" +
                                        (b.ref.cls == ir::ElemClass::Node ? " or `" + id + ".pos`" : "") +
                                        " instead");

@@ -253,7 +253,7 @@ public:
         rule_.name = d_.name.name;
         rule_.span = d_.span;
         options();
-        rejectFaces();
+        rejectFacesInNacs();
         match();
         items();
         warnUnusedLets();
@@ -287,6 +287,13 @@ private:
         }
     }
 
+    // `f: Kind;` in a match where Kind is a face kind: a face of any corner count.
+    bool isCornerlessFace(const ast::NodeStmt& n) const {
+        if (!n.kind || n.wildcard) return false;
+        const auto it = g_.kinds.find(n.kind->name);
+        return it != g_.kinds.end() && g_.prog.kinds[it->second].cls == ElemClass::Face;
+    }
+
     // Declares pattern nodes (first pass) so edges may name nodes written later.
     void declarePatternNodes(const std::vector<ast::MatchStmt>& body, std::vector<ir::PatternNode>& out,
                              int indexBase, bool inNac) {
@@ -294,7 +301,7 @@ private:
             const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
             if (!gs) continue;
             const auto* n = asNode(*gs);
-            if (!n) continue;
+            if (!n || (!inNac && isCornerlessFace(*n))) continue;
             if (auto prev = findName(n->name.name)) {
                 reportDuplicate(g_, n->name, *prev);
                 continue;
@@ -421,26 +428,97 @@ private:
         return ir::Condition{std::move(*e), std::vector<ElemRef>(deps.begin(), deps.end())};
     }
 
-    // Daughters create faces; matches cannot bind them yet (issue #28 is in progress).
-    void rejectFaces() {
-        auto reject = [&](const ast::GraphStmt& gs) {
-            if (const auto* f = asFace(gs))
-                g_.diags.error(f->span, "rules cannot match faces yet; a daughter can create them");
-        };
-        std::function<void(const std::vector<ast::MatchStmt>&)> inMatch = [&](const std::vector<ast::MatchStmt>& body) {
-            for (const auto& m : body) {
-                if (const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt)) reject(*gs);
-                else if (const auto* nac = std::get_if<ast::NacBlock>(&m.stmt)) inMatch(nac->body);
+    // Negative conditions cannot name faces yet (their repair needs faces
+    // in the repair radius).
+    void rejectFacesInNacs() {
+        for (const auto& m : d_.match)
+            if (const auto* nac = std::get_if<ast::NacBlock>(&m.stmt))
+                for (const auto& inner : nac->body)
+                    if (const auto* gs = std::get_if<ast::GraphStmt>(&inner.stmt))
+                        if (const auto* f = asFace(*gs))
+                            g_.diags.error(f->span, "negative conditions cannot name faces yet; test the face's facts "
+                                                    "(`f.neighbours`, `n.faces`, `e.faces`) with `where` instead");
+    }
+
+    // The match's faces, after its nodes and edges: `f: Kind(a, b, c)` on
+    // match nodes, or `f: Kind` (any corner count, bound through a hidden
+    // node at its first corner; see ir::PatternNode::anchorOf).
+    void declarePatternFaces(const std::vector<ast::MatchStmt>& body) {
+        for (const auto& m : body) {
+            const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
+            const ast::FaceStmt* f = gs ? asFace(*gs) : nullptr;
+            const ast::NodeStmt* n = gs ? asNode(*gs) : nullptr;
+            ast::FaceStmt cornerless;   // `f: Kind;` read as a face
+            if (!f && n && isCornerlessFace(*n)) {
+                if (n->position || n->sketch || n->hasAssignBlock)
+                    g_.diags.error(n->span, "a matched face takes no position, sketch or assignments; test it with `where`");
+                cornerless.name = n->name;
+                cornerless.kind = *n->kind;
+                cornerless.span = n->span;
+                f = &cornerless;
             }
-        };
-        inMatch(d_.match);
+            if (!f) continue;
+            ir::PatternFace pf;
+            pf.span = f->span;
+            pf.kind = resolveKind(g_, f->kind, ElemClass::Face);
+            if (!f->name) {
+                g_.diags.error(f->span, "name the matched face (`f: " + f->kind.name + "(…)`): a daughter keeps it by name "
+                                        "(`f;`) or deletes it");
+                continue;
+            }
+            if (auto prev = findName(f->name->name)) {
+                reportDuplicate(g_, *f->name, *prev);
+                continue;
+            }
+            pf.name = f->name->name;
+            if (!f->assigns.empty())
+                g_.diags.error(f->assigns.front().name.span, "a match cannot assign attributes; test them with `where`");
+            if (!f->corners.empty() && f->corners.size() < 3)
+                g_.diags.error(f->span, "a face needs at least 3 corners, got " + std::to_string(f->corners.size()));
+            std::map<std::string, Span> seen;
+            bool ok = pf.kind >= 0;
+            for (const auto& c : f->corners) {
+                if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
+                    auto& d = g_.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
+                    d.notes.push_back({prev->second, "first here"});
+                    ok = false;
+                    continue;
+                }
+                const int idx = nodeIndex(c.name);
+                if (idx < 0) {
+                    if (!isPoisoned(c.name)) g_.diags.error(c.span, "corner `" + c.name + "` is not a node of the match");
+                    ok = false;
+                }
+                pf.corners.push_back(idx);
+            }
+            const int index = static_cast<int>(rule_.faces.size());
+            if (ok && pf.corners.empty()) {
+                ir::PatternNode anchor;
+                anchor.kind = -1;
+                anchor.anchorOf = index;
+                anchor.span = f->span;
+                pf.anchor = static_cast<int>(rule_.nodes.size());
+                rule_.nodes.push_back(std::move(anchor));
+            }
+            if (!ok) pf.kind = -1;
+            ElemBinding b;
+            b.name = pf.name;
+            b.ref = ElemRef{ElemClass::Face, index};
+            b.kind = pf.kind;
+            b.span = f->name->span;
+            b.poisoned = !ok;
+            bindings_.push_back(b);
+            rule_.faces.push_back(std::move(pf));
+        }
     }
 
     // Per-element `where` clauses of a pattern, then stand-alone ones.
     void patternConditions(const std::vector<ast::MatchStmt>& body, std::vector<ir::Condition>& out) {
         for (const auto& m : body) {
             if (const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt)) {
-                const ast::Expr* w = asNode(*gs) ? asNode(*gs)->where.get() : asEdge(*gs) ? asEdge(*gs)->where.get() : nullptr;
+                const ast::Expr* w = asNode(*gs)   ? asNode(*gs)->where.get()
+                                     : asEdge(*gs) ? asEdge(*gs)->where.get()
+                                                   : asFace(*gs)->where.get();
                 if (w)
                     if (auto c = condition(*w, "a `where` condition")) out.push_back(std::move(*c));
             } else if (const auto* ws = std::get_if<ast::WhereStmt>(&m.stmt)) {
@@ -452,20 +530,27 @@ private:
     void match() {
         declarePatternNodes(d_.match, rule_.nodes, 0, false);
         declarePatternEdges(d_.match, rule_.edges, 0, "the match");
+        declarePatternFaces(d_.match);
+        if (rule_.ordered && !rule_.faces.empty())
+            g_.diags.error(rule_.faces.front().span, "an `ordered` rule cannot match faces: a face's corners are bound in "
+                                                     "cyclic order, whatever their positions");
         const bool anyNodeStmt = std::any_of(d_.match.begin(), d_.match.end(), [](const ast::MatchStmt& m) {
             const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
-            return gs && asNode(*gs);
+            return gs && (asNode(*gs) || asFace(*gs));
         });
         if (!anyNodeStmt)
             g_.diags.error(d_.matchSpan, "the match of rule `" + rule_.name + "` has no nodes");
         for (std::size_t i = 0; i < rule_.nodes.size(); ++i) {
-            if (rule_.nodes[i].kind >= 0) continue;
+            if (rule_.nodes[i].kind >= 0 || rule_.nodes[i].anchorOf >= 0) continue;
+            const int node = static_cast<int>(i);
             const bool connected = std::any_of(rule_.edges.begin(), rule_.edges.end(), [&](const ir::PatternEdge& e) {
-                return e.src == static_cast<int>(i) || e.dst == static_cast<int>(i);
+                return e.src == node || e.dst == node;
+            }) || std::any_of(rule_.faces.begin(), rule_.faces.end(), [&](const ir::PatternFace& f) {
+                return std::find(f.corners.begin(), f.corners.end(), node) != f.corners.end();
             });
             if (!connected)
                 g_.diags.error(rule_.nodes[i].span, "wildcard node `" + rule_.nodes[i].name +
-                                                        "` must be an endpoint of an edge of the match");
+                                                        "` must be an endpoint of an edge or a corner of a face of the match");
         }
         patternConditions(d_.match, rule_.conditions);
         const std::size_t outerBindings = bindings_.size();
@@ -590,6 +675,12 @@ private:
         return nullptr;
     }
 
+    int motherFace(const std::string& name) const {
+        for (std::size_t i = 0; i < rule_.faces.size(); ++i)
+            if (rule_.faces[i].name == name) return static_cast<int>(i);
+        return -1;
+    }
+
     void unboundName(const ast::Ident& id, const std::string& what) {
         if (auto it = nacNames_.find(id.name); it != nacNames_.end()) {
             auto& d = g_.diags.error(id.span, "`" + id.name + "` belongs to a negative condition, which binds nothing "
@@ -630,7 +721,7 @@ private:
         // Pass 1: lets (in order) and nodes (so edges can name nodes written later).
         struct PendingNode { const ast::NodeStmt* stmt; int index; };
         std::vector<PendingNode> pendingNodes;
-        std::vector<std::pair<const ast::NodeStmt*, int>> keptEdgeStmts;
+        std::vector<std::pair<const ast::NodeStmt*, int>> keptEdgeStmts, keptFaceStmts;
         for (const auto& s : p.body) {
             if (std::holds_alternative<ast::LetStmt>(s.stmt)) continue;
             const auto* n = asNode(std::get<ast::GraphStmt>(s.stmt));
@@ -645,6 +736,15 @@ private:
                     g_.diags.error(n->name.span, "`" + n->name.name + "` is an edge of the match; keep it with `" +
                                                      n->name.name + ";` or `" + n->name.name + " { … };`");
                 keptEdgeStmts.push_back({n, motherEdgeIndex});
+                continue;
+            }
+            if (const int face = mother < 0 ? motherFace(n->name.name) : -1; face >= 0) {
+                // `f;` or `f { … };` keeps a mother face.
+                if (!claim(n->name)) continue;
+                if (n->kind || n->wildcard || n->sketch || n->position)
+                    g_.diags.error(n->name.span, "`" + n->name.name + "` is a face of the match; keep it with `" +
+                                                     n->name.name + ";` or `" + n->name.name + " { … };`");
+                keptFaceStmts.push_back({n, face});
                 continue;
             }
             if (!claim(n->name)) continue;
@@ -731,8 +831,9 @@ private:
                 return keptNodes[mother];
             }
             int edgeIdx = -1;
-            if (motherEdge(id.name, &edgeIdx)) {
-                g_.diags.error(id.span, std::string(role) + " `" + id.name + "` is an edge, not a node");
+            if (motherEdge(id.name, &edgeIdx) || motherFace(id.name) >= 0) {
+                g_.diags.error(id.span, std::string(role) + " `" + id.name + "` is " +
+                                            (edgeIdx >= 0 ? "an edge" : "a face") + ", not a node");
                 return -1;
             }
             if (!isPoisoned(id.name)) unboundName(id, "a node");
@@ -774,6 +875,15 @@ private:
                     if (me.kind >= 0) checkAssignments(g_, ec_, me.kind, n->assigns, exprEnv(), de.assigns, de.styles);
                     keptEdges[motherIndex] = static_cast<int>(dg.edges.size());
                     dg.edges.push_back(std::move(de));
+                }
+                for (const auto& [stmt, motherIndex] : keptFaceStmts) {
+                    if (stmt != n) continue;
+                    ir::KeptFace kf;
+                    kf.motherFace = motherIndex;
+                    kf.span = n->span;
+                    const int kind = rule_.faces[motherIndex].kind;
+                    if (kind >= 0) checkAssignments(g_, ec_, kind, n->assigns, exprEnv(), kf.assigns, kf.styles);
+                    dg.keptFaces.push_back(std::move(kf));
                 }
                 continue;
             }
@@ -827,8 +937,12 @@ private:
             if (!keptNodes.count(static_cast<int>(i))) dg.deletedNodes.push_back(static_cast<int>(i));
         for (std::size_t i = 0; i < rule_.edges.size(); ++i)
             if (!keptEdges.count(static_cast<int>(i))) dg.deletedEdges.push_back(static_cast<int>(i));
+        for (std::size_t i = 0; i < rule_.faces.size(); ++i)
+            if (std::none_of(dg.keptFaces.begin(), dg.keptFaces.end(), [&](const ir::KeptFace& k) { return k.motherFace == static_cast<int>(i); }))
+                dg.deletedFaces.push_back(static_cast<int>(i));
         checkAutoPlacement(dg);
         warnAnonymousEdgesDeleted(dg);
+        warnKeptFacesLosingCorners(dg);
         // Daughter-level lets go out of scope; warn about unused ones now.
         for (std::size_t i = localsBefore; i < locals_.size(); ++i) finishedLocals_.push_back(locals_[i]);
         locals_.resize(localsBefore);
@@ -845,7 +959,7 @@ private:
         if (f.name) {
             if (!claim(*f.name)) return;
             int edgeIdx = -1;
-            if (nodeIndex(f.name->name) >= 0 || motherEdge(f.name->name, &edgeIdx)) {
+            if (nodeIndex(f.name->name) >= 0 || motherEdge(f.name->name, &edgeIdx) || motherFace(f.name->name) >= 0) {
                 g_.diags.error(f.name->span, "`" + f.name->name + "` is matched; a daughter's face needs a new name");
                 return;
             }
@@ -913,10 +1027,29 @@ private:
         }
     }
 
+    // A kept face whose corner the daughter deletes goes with that corner.
+    void warnKeptFacesLosingCorners(const ir::Daughter& dg) {
+        if (d_.name.span.file != g_.mainFile) return;
+        for (const auto& kf : dg.keptFaces) {
+            const auto& mf = rule_.faces[static_cast<std::size_t>(kf.motherFace)];
+            for (int c : mf.corners) {
+                if (std::find(dg.deletedNodes.begin(), dg.deletedNodes.end(), c) == dg.deletedNodes.end()) continue;
+                const std::string corner = rule_.nodes[static_cast<std::size_t>(c)].name;
+                Diagnostic d;
+                d.span = kf.span;
+                d.message = "face `" + mf.name + "` is kept but its corner `" + corner + "` is deleted, and the face with it; " +
+                            "to keep the face, keep `" + corner + "` too (`" + corner + ";`)";
+                d.notes.push_back({dg.span, "in this daughter"});
+                pendingWarnings_.push_back(std::move(d));
+                break;
+            }
+        }
+    }
+
     void checkAutoPlacement(const ir::Daughter& dg) {
         if (!dg.autoPlacement) return;
         for (const auto& mn : rule_.nodes) {
-            if (mn.sketch) continue;
+            if (mn.sketch || mn.anchorOf >= 0) continue;
             auto& d = g_.diags.error(mn.span, "automatic placement needs a sketch position for every matched node: "
                                               "give `" + mn.name + "` one with `@ (x, y)`");
             d.notes.push_back({dg.span, "a new node of this daughter is placed automatically"});
@@ -931,7 +1064,7 @@ private:
                 g_.diags.warning(l.span, "`" + l.name + "` is never used");
         if (rule_.ordered)
             for (const auto& n : rule_.nodes)
-                if (!n.sketch) {
+                if (!n.sketch && n.anchorOf < 0) {
                     g_.diags.error(n.span, "rule `" + rule_.name + "` is `ordered`: every matched node needs a sketch "
                                                                   "position; give `" + n.name + "` one with `@ (x, y)`");
                     break;

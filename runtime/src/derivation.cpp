@@ -13,10 +13,11 @@
 
 namespace g2d::rt {
 
-long long ageSum(Match m, int nodes, int edges, const Graph& g) {
+long long ageSum(Match m, int nodes, int edges, const Graph& g, int faces) {
     long long sum = 0;
     for (int i = 0; i < nodes; ++i) sum += g.nodeAge(m.nodes[i]);
     for (int i = 0; i < edges; ++i) sum += g.edgeAge(m.edges[i]);
+    for (int i = 0; i < faces; ++i) sum += g.faceAge(m.faces[i]);
     return sum;
 }
 
@@ -58,7 +59,7 @@ public:
     std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step,
                     StepTracer* tracer) {
         const RuleInfo& info = rules.info(rule);
-        const int nn = set.nodes(), ne = set.edges();
+        const int nn = set.nodes(), ne = set.edges(), nf = set.faces();
         // The matches are read in place: the set is repaired only after
         // commit(), so the views the rules keep until then stay valid.
         order_.resize(set.size());
@@ -71,11 +72,12 @@ public:
             std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return sums_[a] < sums_[b]; });
         }
         if (++stamp_ >= 0x7fffffffu) {   // about to wrap: forget every old mark
-            for (auto* v : {&nodeMarks_, &edgeMarks_}) std::fill(v->begin(), v->end(), 0);
+            for (auto* v : {&nodeMarks_, &edgeMarks_, &faceMarks_}) std::fill(v->begin(), v->end(), 0);
             stamp_ = 1;
         }
         grow(nodeMarks_, g.nodeCapacity());
         grow(edgeMarks_, g.edgeCapacity());
+        grow(faceMarks_, g.faceCapacity());
         const std::uint32_t read = stamp_ * 2, written = stamp_ * 2 + 1;
         // daughter_[i]: the daughter drawn for the set's match i, kNotTaken if it is not rewritten.
         daughter_.assign(set.size(), kNotTaken);
@@ -85,17 +87,21 @@ public:
             bool clash = false;
             for (int k = 0; k < nn; ++k) clash = clash || nodeMarks_[m.nodes[k]] == written;
             for (int k = 0; k < ne; ++k) clash = clash || edgeMarks_[m.edges[k]] == written;
+            for (int k = 0; k < nf; ++k) clash = clash || faceMarks_[m.faces[k]] == written;
             if (clash) continue;
             const std::size_t daughter = pickDaughter(info.weights, rng);
             writes_.clear();
             rules.writeSet(rule, daughter, m, writes_);
             for (NodeId n : writes_.nodes) clash = clash || (nodeMarks_[n] >> 1) == stamp_;
             for (EdgeId e : writes_.edges) clash = clash || (edgeMarks_[e] >> 1) == stamp_;
+            for (FaceId f : writes_.faces) clash = clash || (faceMarks_[f] >> 1) == stamp_;
             if (clash) continue;
             for (int k = 0; k < nn; ++k) nodeMarks_[m.nodes[k]] = read;   // none was written (no clash)
             for (int k = 0; k < ne; ++k) edgeMarks_[m.edges[k]] = read;
+            for (int k = 0; k < nf; ++k) faceMarks_[m.faces[k]] = read;
             for (NodeId n : writes_.nodes) nodeMarks_[n] = written;
             for (EdgeId e : writes_.edges) edgeMarks_[e] = written;
+            for (FaceId f : writes_.faces) faceMarks_[f] = written;
             daughter_[i] = static_cast<std::uint32_t>(daughter);
             ++taken;
         }
@@ -123,7 +129,7 @@ private:
     std::vector<long long> sums_;
     // Per element, stamp * 2 if a taken match reads it in this step, stamp *
     // 2 + 1 if one writes it (a match writes only elements it reads).
-    std::vector<std::uint32_t> nodeMarks_, edgeMarks_;
+    std::vector<std::uint32_t> nodeMarks_, edgeMarks_, faceMarks_;
     std::uint32_t stamp_ = 0;
     WriteSet writes_;
 };

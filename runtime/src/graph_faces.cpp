@@ -47,12 +47,14 @@ FaceId Graph::addFace(int kind, std::span<const NodeId> corners, long long age) 
     dirtyFaces_.push_back(id);
     faces_[id].marks |= kFaceChanged;
     ++liveFaces_;
+    touchNeighbourAnchors(id);
     return id;
 }
 
 void Graph::removeFace(FaceId f) {
     FaceRec& rec = faces_[f];
     if (!rec.alive) return;
+    touchNeighbourAnchors(f);
     CornerId c = rec.firstCorner;
     for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) {
         CornerRec& cr = corners_[c];
@@ -121,7 +123,19 @@ vec2 Graph::centroid(FaceId f) const {
 
 void Graph::setFaceAttr(FaceId f, int i, Value v) {
     initFaceAttr(f, i, std::move(v));
-    touchFace(f);
+    touchFaceValues(f);
+}
+
+void Graph::touchFacesAt(NodeId n) {
+    for (CornerId c = firstCornerAt(n); c != kNoId; c = nextCornerAt(c)) touchNode(anchorOf(cornerFace(c)));
+}
+
+void Graph::touchNeighbourAnchors(FaceId f) {
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c))
+        eachSideUse(cornerNode(c), cornerNode(nextCorner(c)), [&](FaceId g, bool) {
+            if (g != f) touchNode(anchorOf(g));
+        });
 }
 
 void Graph::initFaceAttr(FaceId f, int i, Value v) { pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)] = std::move(v); }

@@ -42,7 +42,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
-        sets_.emplace_back(nn, info.edgeCount, info.pick == Pick::Oldest, info.readsIncidence, info.readDirections);
+        sets_.emplace_back(nn, info.edgeCount, info.faceCount, info.pick == Pick::Oldest, info.readsIncidence, info.readDirections);
         radius_.push_back(info.radius);
         anchors_.push_back(repairAnchors(info));
         refill(r, g);
@@ -201,7 +201,7 @@ void IncrementalMatches::prefetchMatch(const Graph& g, Match m, int nodes, int e
 void IncrementalMatches::refill(std::size_t rule, const Graph& g) {
     MatchSet& set = sets_[rule];
     set.clear();
-    found_.reset(set.nodes(), set.edges());
+    found_.reset(set.nodes(), set.edges(), set.faces());
     rules_.findMatches(rule, g, found_);
     for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
 }
@@ -215,7 +215,7 @@ void RuleSet::repair(std::size_t rule, const Graph& g, const RepairArea& area, c
         const int hostKind = g.nodeKind(h);
         for (int p = 0; p < nn; ++p) {
             if (!area.searchesAt(h, full, hostKind, anchors[p])) continue;
-            scratch.reset(nn, set.edges());
+            scratch.reset(nn, set.edges(), set.faces());
             findAnchored(rule, g, p, h, scratch, area.newEdgesOnly(full, anchors[p]));
             for (std::size_t i = 0; i < scratch.size(); ++i) {
                 const std::uint32_t* ids = scratch.ids(i);
@@ -237,8 +237,8 @@ void IncrementalMatches::verify(const Graph& g, long long step) {
     for (std::size_t r = 0; r < sets_.size(); ++r) {
         if (retired_[r]) continue;
         const MatchSet& set = sets_[r];
-        const std::size_t width = static_cast<std::size_t>(set.nodes() + set.edges());
-        found_.reset(set.nodes(), set.edges());
+        const std::size_t width = static_cast<std::size_t>(set.nodes() + set.edges() + set.faces());
+        found_.reset(set.nodes(), set.edges(), set.faces());
         rules_.findMatches(r, g, found_);
         std::vector<Key> all, kept;
         for (std::size_t i = 0; i < found_.size(); ++i) all.emplace_back(found_.ids(i), found_.ids(i) + width);

@@ -8,8 +8,8 @@
 
 namespace g2d::rt {
 
-MatchSet::MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
-    : nn_(nodes), ne_(edges), width_(static_cast<std::size_t>(nodes + edges)),
+MatchSet::MatchSet(int nodes, int edges, int faces, bool byAge, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
+    : nn_(nodes), ne_(edges), nf_(faces), width_(static_cast<std::size_t>(nodes + edges + faces)),
       stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 3 : 0)), byAge_(byAge) {
     if (nodes <= 0) throw std::logic_error("a pattern without nodes");
     const IncidenceShape shape = incidenceShape(nodes, reads, directions);
@@ -47,9 +47,9 @@ long long MatchSet::ageSum(Id id) const {
     return sum;
 }
 
-void MatchSet::add(const std::uint32_t* ids, const Graph& g) { add(ids, ids + nn_, g); }
+void MatchSet::add(const std::uint32_t* ids, const Graph& g) { add(ids, ids + nn_, ids + nn_ + ne_, g); }
 
-void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
+void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const FaceId* faces, const Graph& g) {
     Id id;
     if (!free_.empty()) {
         id = free_.back();
@@ -63,6 +63,7 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
     std::uint32_t* p = data(id);
     for (int i = 0; i < nn_; ++i) p[i] = nodes[i];
     for (int i = 0; i < ne_; ++i) p[nn_ + i] = edges[i];
+    for (int i = 0; i < nf_; ++i) p[nn_ + ne_ + i] = faces[i];
     p[width_] = static_cast<std::uint32_t>(live_.size());
     live_.push_back(id);
     std::uint32_t* links = p + width_ + 1;
@@ -81,6 +82,7 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const Graph& g) {
         long long sum = 0;
         for (int i = 0; i < nn_; ++i) sum += g.nodeAge(p[i]);
         for (int i = 0; i < ne_; ++i) sum += g.edgeAge(p[nn_ + i]);
+        for (int i = 0; i < nf_; ++i) sum += g.faceAge(p[nn_ + ne_ + i]);
         std::memcpy(p + stride_ - 2, &sum, sizeof sum);
         p[stride_ - 3] = ageBuckets_.insert(id, sum);
     }

@@ -178,7 +178,7 @@ TEST_CASE("wildcards are used only as the thesis allows", "[sema][wildcards]") {
          "5:49: wildcard node `w` matches any kind, so it has no attribute `w`; only pos, age, id, degree, in_degree, "
          "out_degree, faces can be read"},
         {"isolated wildcard", "rule R { match { x: P; w: *; } produce { x; } }",
-         "5:24: wildcard node `w` must be an endpoint of an edge of the match"},
+         "5:24: wildcard node `w` must be an endpoint of an edge or a corner of a face of the match"},
     });
     auto axiom = compile("node P;\naxiom { a: *; }\n");
     CHECK(firstError(axiom) == "2:12: wildcard nodes (`*`) belong in a rule's match, not in the axiom");
@@ -267,7 +267,7 @@ TEST_CASE("an unknown edge kind is reported once, not again at each use", "[sema
     CHECK(lines[0] == "5:39: error: unknown edge kind `Q`");
 }
 
-TEST_CASE("faces in the axiom: kinds, corners, and rules that cannot use them yet", "[sema][faces]") {
+TEST_CASE("faces in the axiom, matches and daughters: kinds, corners, names", "[sema][faces]") {
     const std::string kinds = "node P;\nedge E;\nface F { w: float = 1; }\n";   // 3 lines
     const std::string nodes = "axiom { a: P at (0, 0); b: P at (1, 0); c: P at (1, 1); ";
     const std::vector<std::pair<std::string, std::string>> cases = {
@@ -279,8 +279,20 @@ TEST_CASE("faces in the axiom: kinds, corners, and rules that cannot use them ye
         {nodes + "Q(a, b, c); }", "4:57: unknown face kind `Q`"},
         {nodes + "F(a, b, c) { v = 2 }; }", "4:70: face kind `F` has no attribute `v`"},
         {nodes + "f: F(a, b, c); f: F(a, b, c); }", "4:72: `f` is already declared in the axiom"},
-        {nodes + "}\nrule R { match { x: P; y: P; z: P; f: F(x, y, z); } produce { x; y; z; } }",
-         "5:36: rules cannot match faces yet; a daughter can create them"},
+        {nodes + "}\nrule R { match { x: P; y: P; z: P; F(x, y, z); } produce { x; y; z; } }",
+         "5:36: name the matched face (`f: F(…)`): a daughter keeps it by name (`f;`) or deletes it"},
+        {nodes + "}\nrule R { match { x: P; y: P; f: F(x, y); } produce { x; y; } }", "5:30: a face needs at least 3 corners, got 2"},
+        {nodes + "}\nrule R { match { x: P; y: P; f: F(x, y, q); } produce { x; y; } }", "5:41: corner `q` is not a node of the match"},
+        {nodes + "}\nrule R { match { x: P; y: P; z: P; not { f: F(x, y, z); } } produce { x; y; z; } }",
+         "5:42: negative conditions cannot name faces yet; test the face's facts (`f.neighbours`, `n.faces`, `e.faces`) with `where` instead"},
+        {nodes + "}\nrule R { match { f: F where f.v > 1; } produce { } }", "5:31: face kind `F` has no attribute `v`"},
+        {nodes + "}\nrule R { match { f: F; x: P; } produce { x; y: P at (0, 0); F(x, y, f); } }", "5:69: corner `f` is a face, not a node"},
+        {nodes + "}\nrule R { match { f: F; } produce { f at (0, 0); } }", "5:36: `f` is a face of the match; keep it with `f;` or `f { … };`"},
+        {nodes + "}\nrule R { match { f: F @ (1, 1); } produce { f; } }",
+         "5:18: a matched face takes no position, sketch or assignments; test it with `where`"},
+        {nodes + "}\nrule R ordered { match { x: P @ (0, 0); y: P @ (1, 0); z: P @ (0, 1); f: F(x, y, z); } produce { } }",
+         "5:71: an `ordered` rule cannot match faces: a face's corners are bound in cyclic order, whatever their positions"},
+        {nodes + "}\nrule R { match { f: F; } produce { f: F(a, b, c); } }", "5:36: `f` is matched; a daughter's face needs a new name"},
         {nodes + "}\nrule R { match { x: P; y: P; } produce { x; y; F(x, y, x); } }",
          "5:56: corner `x` appears twice: a face's corners are distinct nodes"},
         {nodes + "}\nrule R { match { x: P; y: P; e: x -[E]- y; } produce { x; y; F(x, y, e); } }",

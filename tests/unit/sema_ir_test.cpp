@@ -54,7 +54,7 @@ TEST_CASE("the Koch snowflake lowers to one rule with an unrolled search plan", 
     CHECK(d.nodes[2].motherNode == -1);
     CHECK(d.nodes[2].position.has_value());
     // Plan: scan s, walk the edge to e, then test `old.lod < max_lod`.
-    const auto plan = lower::buildSearchPlan(rule.nodes, rule.edges, rule.conditions, 0, 0, 0);
+    const auto plan = lower::buildSearchPlan(rule.nodes, rule.edges, rule.faces, rule.conditions, 0, 0, 0);
     REQUIRE(plan.size() == 3);
     CHECK(plan[0].op == lower::PlanStep::Op::ScanNodes);
     CHECK(plan[0].node == 0);
@@ -87,7 +87,7 @@ TEST_CASE("conditions are tested as soon as their elements are bound", "[ir][pla
                      "}\n");
     REQUIRE(r.program);
     const auto& rule = r.program->rules[0];
-    const auto plan = lower::buildSearchPlan(rule.nodes, rule.edges, rule.conditions, 0, 0, 0);
+    const auto plan = lower::buildSearchPlan(rule.nodes, rule.edges, rule.faces, rule.conditions, 0, 0, 0);
     using Op = lower::PlanStep::Op;
     std::vector<Op> ops;
     for (const auto& s : plan) ops.push_back(s.op);

@@ -54,6 +54,7 @@ struct RuleInfo {
     // anywhere, so every change means a full search for this rule).
     std::vector<int> nodeKinds;
     int edgeCount = 0;
+    int faceCount = 0;
     int radius = 0;
     // Per pattern node: which edge changes alone at its host matter (see
     // IncrementalMatches); empty means all do.
@@ -159,9 +160,11 @@ struct RepairArea {
 struct WriteSet {
     std::vector<NodeId> nodes;
     std::vector<EdgeId> edges;
+    std::vector<FaceId> faces;
     void clear() {
         nodes.clear();
         edges.clear();
+        faces.clear();
     }
 };
 
@@ -268,7 +271,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& options
 
 // Helpers shared with tests: the selection rules, as specified above.
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);
-long long ageSum(Match m, int nodes, int edges, const Graph& g);
+long long ageSum(Match m, int nodes, int edges, const Graph& g, int faces = 0);
 template <class T>
 void shuffle(std::vector<T>& v, Rng& rng) {
     for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);

@@ -140,7 +140,11 @@ public:
 
     int nodeKind(NodeId n) const { return nodes_[n].kind; }
     vec2 pos(NodeId n) const { return nodes_[n].pos; }
-    void setPos(NodeId n, vec2 p) { nodes_[n].pos = p; touchNode(n); }
+    void setPos(NodeId n, vec2 p) {
+        nodes_[n].pos = p;
+        touchNode(n);
+        if (faceCountAt(n) != 0) touchFacesAt(n);   // their geometry moved
+    }
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
     void setNodeAttr(NodeId n, int i, Value v);
@@ -229,6 +233,17 @@ public:
     // Faces created, removed or changed (attributes) since forgetChanges(),
     // each once; new ones have ids from the step's first new id on.
     void touchFace(FaceId f);
+    // A match binding a face binds the face's first corner too, so changes
+    // to a face are marked there for incremental matching: touchFace and a
+    // moved corner mark it (values only for an attribute write), and adding
+    // or removing a face marks its corners and its neighbours' first corners
+    // (their `neighbours` changed).
+    NodeId anchorOf(FaceId f) const { return cornerNode(firstCorner(f)); }
+    void touchFaceValues(FaceId f) {
+        touchFace(f);
+        touchNodeValues(anchorOf(f));
+    }
+    void touchFacesAt(NodeId n);
     std::span<const FaceId> changedFaces() const { return {dirtyFaces_.data(), dirtyFaces_.size()}; }
 
     // Any element by class: its kind, its back end's attribute handle, an attribute.
@@ -375,6 +390,7 @@ private:
     inline void unlink(EdgeId e);
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
     void removeFacesAt(NodeId n);
+    void touchNeighbourAnchors(FaceId f);
     // A removed node's or face's record: out of its kind's index (swap-remove,
     // fixing the moved element's place), dead, its attributes and styles dropped.
     template <class Rec>

@@ -30,41 +30,46 @@ enum class Incidence : std::uint8_t {
     AllEdges,      // every edge (degrees, negative conditions): any change may make or break one
 };
 
-// One match: the host nodes bound to the pattern's nodes, and the host edges
-// bound to its edges, in pattern order. A view: valid while what it points
+// One match: the host nodes bound to the pattern's nodes, the host edges
+// bound to its edges and the host faces bound to its faces, in pattern
+// order, stored one after the other. A view: valid while what it points
 // into is unchanged.
 struct Match {
     const NodeId* nodes = nullptr;
     const EdgeId* edges = nullptr;
+    const FaceId* faces = nullptr;
 };
 
-// Matches as a search finds them, stored flat: a rule's node ids then edge ids.
+// Matches as a search finds them, stored flat: a rule's node ids, edge ids, then face ids.
 class MatchBuffer {
 public:
-    void reset(int nodes, int edges) {
+    void reset(int nodes, int edges, int faces = 0) {
         nn_ = nodes;
         ne_ = edges;
+        nf_ = faces;
         used_ = 0;
         count_ = 0;
     }
-    void add(const NodeId* nodes, const EdgeId* edges) {
+    void add(const NodeId* nodes, const EdgeId* edges, const FaceId* faces = nullptr) {
         // The buffer only grows (no value-initialising resize per match).
-        const std::size_t width = static_cast<std::size_t>(nn_ + ne_);
+        const std::size_t width = static_cast<std::size_t>(nn_ + ne_ + nf_);
         if (used_ + width > ids_.size()) ids_.resize(std::max<std::size_t>(64, 2 * (used_ + width)));
         std::uint32_t* out = ids_.data() + used_;
         for (int i = 0; i < nn_; ++i) *out++ = nodes[i];
         for (int i = 0; i < ne_; ++i) *out++ = edges[i];
+        for (int i = 0; i < nf_; ++i) *out++ = faces[i];
         used_ += width;
         ++count_;
     }
     std::size_t size() const { return count_; }
-    const std::uint32_t* ids(std::size_t i) const { return ids_.data() + i * static_cast<std::size_t>(nn_ + ne_); }
-    Match operator[](std::size_t i) const { return Match{ids(i), ids(i) + nn_}; }
+    const std::uint32_t* ids(std::size_t i) const { return ids_.data() + i * static_cast<std::size_t>(nn_ + ne_ + nf_); }
+    Match operator[](std::size_t i) const { return Match{ids(i), ids(i) + nn_, ids(i) + nn_ + ne_}; }
     int nodes() const { return nn_; }
     int edges() const { return ne_; }
+    int faces() const { return nf_; }
 
 private:
-    int nn_ = 0, ne_ = 0;
+    int nn_ = 0, ne_ = 0, nf_ = 0;
     std::vector<std::uint32_t> ids_;   // the first used_ entries are matches
     std::size_t used_ = 0;
     std::size_t count_ = 0;
@@ -89,11 +94,14 @@ public:
     // can be dropped alone (empty: every node reads every edge).
     // `directions[i]`: which of the host's edge lists it reads
     // (RepairArea::kOut | kIn; empty: both, wherever it reads any).
-    MatchSet(int nodes, int edges, bool byAge, std::vector<Incidence> reads = {}, std::vector<std::uint8_t> directions = {});
+    // A match binding a face binds that face's first corner too (see
+    // lower::MatchFace), so the lists by node also drop matches of removed faces.
+    MatchSet(int nodes, int edges, int faces, bool byAge, std::vector<Incidence> reads = {}, std::vector<std::uint8_t> directions = {});
 
-    // Adds a match (nodes, then edges); the caller guarantees it is not there yet.
+    // Adds a match (nodes, edges, then faces); the caller guarantees it is not there yet.
     void add(const std::uint32_t* ids, const Graph& g);
-    void add(const NodeId* nodes, const EdgeId* edges, const Graph& g);
+    void add(const NodeId* nodes, const EdgeId* edges, const Graph& g) { add(nodes, edges, nullptr, g); }
+    void add(const NodeId* nodes, const EdgeId* edges, const FaceId* faces, const Graph& g);
     // Removes every match that binds node `n`.
     // Inline: most nodes of a repaired area head no list of a given rule.
     void removeTouching(NodeId n) {
@@ -130,6 +138,7 @@ public:
     const std::uint32_t* idsAt(std::size_t i) const { return data(live_[i]); }
     int nodes() const { return nn_; }
     int edges() const { return ne_; }
+    int faces() const { return nf_; }
     long long ageSumAt(std::size_t i) const { return ageSum(live_[i]); }
     Match pickRandom(Rng& rng) const;
     Match pickOldest(Rng& rng);
@@ -154,7 +163,7 @@ public:
 private:
     using Id = std::uint32_t;
     // One record per match id, so that dropping a match touches one place:
-    //   words [0, width_)            its node ids, then its edge ids
+    //   words [0, width_)            its node ids, edge ids, then face ids
     //   word  width_                 its position in live_ (kNoId: free)
     //   words width_ + 1 + 2i, +1    next / prev in the list of matches
     //                                binding its node i (see below)
@@ -170,10 +179,10 @@ private:
         return static_cast<std::uint32_t>(static_cast<std::size_t>(id) * stride_ + width_ + 1 + 2 * static_cast<std::size_t>(position));
     }
     long long ageSum(Id id) const;
-    Match view(Id id) const { return Match{data(id), data(id) + nn_}; }
+    Match view(Id id) const { return Match{data(id), data(id) + nn_, data(id) + nn_ + ne_}; }
     void remove(Id id);
 
-    int nn_, ne_;
+    int nn_, ne_, nf_;
     std::size_t width_, stride_;
     bool byAge_;
     GrowArray<std::uint32_t> rec_;           // stride_ words per id
