@@ -69,8 +69,11 @@ whereClause : 'where' expr ;
 
 // [name:] a -[Kind {..}]-> b   directed,   a -[Kind]- b   undirected
 edgeStmt
-    : (name=ID ':')? src=ID edgeArrow dst=ID whereClause? ';'
+    : (name=ID ':')? src=nodeRef edgeArrow dst=nodeRef whereClause? ';'
     ;
+// A node: its name, or in a `for` loop `prev.NAME` / `next.NAME`, the node
+// NAME of the neighbouring turn.
+nodeRef     : ID ('.' member=ID)? ;
 edgeArrow
     : '-[' edgeLabel ']->'     # directedArrow
     | '<-[' edgeLabel ']-'     # reversedArrow
@@ -80,7 +83,7 @@ edgeLabel   : ID assignments? ;
 
 // [name:] Kind(corner, corner, corner, ...) [{ assignments }] [where condition] ;
 faceStmt
-    : (name=ID ':')? kind=ID '(' corners+=ID (',' corners+=ID)* ')' assignments? whereClause? ';'
+    : (name=ID ':')? kind=ID '(' corners+=nodeRef (',' corners+=nodeRef)* ')' assignments? whereClause? ';'
     ;
 
 // ---- rules -----------------------------------------------------------------
@@ -106,6 +109,11 @@ produceBlock: 'produce' ('weight' expr)? '{' produceStmt* '}' ;
 produceStmt
     : letStmt
     | graphStmt
+    | forStmt
+    ;
+// for (u, v) in f.sides { … }   or   for c in f.corners { … }
+forStmt
+    : 'for' (var=ID | '(' first=ID ',' second=ID ')') 'in' face=ID '.' what=ID '{' produceStmt* '}'
     ;
 
 // ---- expressions (lowest precedence last) ----------------------------------

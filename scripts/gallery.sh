@@ -35,6 +35,7 @@ examples=(
   "maze|1 2 3|Maze: a grid built by rules, then carved (g2d example: NACs, phases)"
   "floor_plan|1|Floor plan: faces in the axiom (g2d example: face kinds, styles)"
   "koch_faces|1|Koch snowflake of faces, level 4 (g2d example: daughters create faces)"
+  "fan|1|Fans: one rule for any corner count (g2d example: for (u, v) in f.sides)"
   "subdivide|1|Quad subdivision, depth 4 (g2d example: matched faces, parallel steps)"
   "stained_glass|1 2 3|Stained glass: panes split, then coloured unlike their neighbours (g2d example: faces sharing a side)"
 )

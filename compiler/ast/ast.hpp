@@ -110,8 +110,17 @@ struct LetStmt {
     Span span;
 };
 
+struct ProduceStmt;
+// `for (u, v) in f.sides { … }` or `for c in f.corners { … }` in a daughter.
+struct ForBlock {
+    std::vector<Ident> vars;           // (u, v), or c
+    Ident face;
+    Ident what;                        // `sides` or `corners`
+    std::vector<ProduceStmt> body;
+    Span span;
+};
 struct ProduceStmt {
-    std::variant<LetStmt, GraphStmt> stmt;
+    std::variant<LetStmt, GraphStmt, ForBlock> stmt;
 };
 
 struct ProduceBlock {

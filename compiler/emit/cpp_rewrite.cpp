@@ -8,20 +8,90 @@ std::string str(int i) { return std::to_string(i); }
 std::string node(int h) { return "h" + str(h); }
 std::string edge(int h) { return "k" + str(h); }
 std::string face(int h) { return "q" + str(h); }
-std::string reg(int r) { return RewritePrinter::reg(r); }
-// An attribute's value at commit time: a literal as it is, a register as prepare kept it.
-std::string attrValue(const lower::Operand& v) {
-    return v.reg >= 0 ? reg(v.reg) : cppLiteral(v.literal->value, v.literal->type);
-}
-// A new node's position: its register, or the origin (an axiom node without `at`).
-std::string position(int posReg) { return posReg >= 0 ? reg(posReg) : "vec2(0.0, 0.0)"; }
 
 }  // namespace
+
+// An attribute's value at commit time: a literal as it is, a register as prepare kept it.
+std::string RewritePrinter::attrValue(const lower::Operand& v) const {
+    return v.reg >= 0 ? regName(v.reg) : cppLiteral(v.literal->value, v.literal->type);
+}
+// A new node's position: its register, or the origin (an axiom node without `at`).
+std::string RewritePrinter::position(int posReg) const { return posReg >= 0 ? regName(posReg) : "vec2(0.0, 0.0)"; }
 
 std::string RewritePrinter::prepare(const lower::RewriteProgram& p, const ExprContext& ctx, const std::string& in) {
     std::string out;
     if (p.placement) out += in + "std::optional<vec2> placed[" + str(p.nodeHandles) + "];\n";
-    for (const auto& op : p.prepare) {
+    return out + prepareOps(p.prepare, p, ctx, in);
+}
+
+// Each turn evaluates into its own registers, kept in a turn record with its corners.
+std::string RewritePrinter::prepareLoop(int loop, const lower::RewriteProgram& p, const ExprContext& ctx, const std::string& in) {
+    const lower::LoopProgram& l = p.loops[static_cast<std::size_t>(loop)];
+    const std::string L = str(loop), turns = "turns_" + loopNames_ + "_" + L + "_", b = in + "    ", t = b + "    ";
+    std::string out = in + "const std::uint32_t loopFirst" + L + " = static_cast<std::uint32_t>(" + turns + ".size());\n";
+    out += in + "{\n" + b + "const FaceId lf = m.faces[" + str(l.matchFace) + "];\n";
+    out += b + "const int lk = g.cornerCount(lf);\n" + b + "CornerId lc = g.firstCorner(lf);\n";
+    out += b + "const NodeId l0 = g.cornerNode(lc);\n";
+    out += b + "for (int lt = 0; lt < lk; ++lt, lc = g.nextCorner(lc)) {\n";
+    out += t + "const NodeId lu = g.cornerNode(lc);\n" + t + "const NodeId lv = lt + 1 < lk ? g.cornerNode(g.nextCorner(lc)) : l0;\n";
+    out += t + "(void)lu;\n" + t + "(void)lv;\n";
+    ExprContext turn = ctx;
+    const auto outer = ctx.node;
+    turn.node = [outer, first = l.firstVar](int i) { return i == first ? std::string("lu") : i == first + 1 ? std::string("lv") : outer(i); };
+    turn.nodeKind = [k = ctx.nodeKind, first = l.firstVar](int i) { return i >= first ? -1 : k(i); };
+    const std::string saved = regPrefix_;
+    regPrefix_ = "l" + L + "r";
+    out += prepareOps(l.prepare, p, turn, t);
+    out += t + "Turn_" + loopNames_ + "_" + L + "& T = " + turns + ".emplace_back();\n" + t + "T.u = lu;\n" + t + "T.v = lv;\n";
+    for (std::size_t r = 0; r < l.registers.size(); ++r) out += t + "T." + regName(static_cast<int>(r)) + " = " + regName(static_cast<int>(r)) + ";\n";
+    regPrefix_ = saved;
+    out += b + "}\n" + in + "}\n";
+    out += in + "const std::uint32_t loopCount" + L + " = static_cast<std::uint32_t>(" + turns + ".size()) - loopFirst" + L + ";\n";
+    return out;
+}
+
+// Every turn's new nodes first (kept in loopNodes_), then every turn's
+// edges and faces, which may join the neighbouring turns' nodes.
+std::string RewritePrinter::commitLoop(int loop, const lower::RewriteProgram& p, const std::string& c) {
+    const lower::LoopProgram& l = p.loops[static_cast<std::size_t>(loop)];
+    const std::string L = str(loop), turns = "turns_" + loopNames_ + "_" + L + "_", b = c + "    ", t = b + "    ";
+    const int H = l.outerNodes, n = l.localNodes;
+    const std::string N = str(n);
+    std::string out = c + "{\n" + b + "const std::uint32_t lfirst = p.loopFirst" + L + ", lcount = p.loopCount" + L + ";\n";
+    out += b + "loopNodes_.assign(std::size_t{lcount} * " + N + ", kNoId);\n";
+    const std::string saved = regPrefix_;
+    regPrefix_ = "l" + L + "r";
+    auto turnHead = [&]() {
+        std::string h = t + "const Turn_" + loopNames_ + "_" + L + "& T = " + turns + "[lfirst + lt];\n";
+        h += t + "const NodeId h" + str(H) + " = T.u;\n" + t + "const NodeId h" + str(H + 1) + " = T.v;\n";
+        h += t + "(void)h" + str(H) + ";\n" + t + "(void)h" + str(H + 1) + ";\n";
+        for (std::size_t r = 0; r < l.registers.size(); ++r)
+            h += t + "const auto& " + regName(static_cast<int>(r)) + " = T." + regName(static_cast<int>(r)) + ";\n" + t + "(void)" +
+                 regName(static_cast<int>(r)) + ";\n";
+        return h;
+    };
+    out += b + "for (std::uint32_t lt = 0; lt < lcount; ++lt) {\n" + turnHead();
+    out += commitOps(l.create, p, t);
+    for (int i = 0; i < n; ++i) out += t + "loopNodes_[std::size_t{lt} * " + N + " + " + str(i) + "] = h" + str(H + 2 + i) + ";\n";
+    out += b + "}\n";
+    out += b + "for (std::uint32_t lt = 0; lt < lcount; ++lt) {\n" + turnHead();
+    for (int i = 0; i < n; ++i) {
+        const std::string at = " * " + N + " + " + str(i) + "];\n";
+        out += t + "const NodeId h" + str(H + 2 + i) + " = loopNodes_[std::size_t{lt}" + at;
+        out += t + "const NodeId h" + str(H + 2 + n + i) + " = loopNodes_[std::size_t{(lt + lcount - 1) % lcount}" + at;
+        out += t + "const NodeId h" + str(H + 2 + 2 * n + i) + " = loopNodes_[std::size_t{(lt + 1) % lcount}" + at;
+        for (int k : {H + 2 + i, H + 2 + n + i, H + 2 + 2 * n + i}) out += t + "(void)h" + str(k) + ";\n";
+    }
+    out += commitOps(l.link, p, t);
+    out += b + "}\n" + c + "}\n";
+    regPrefix_ = saved;
+    return out;
+}
+
+std::string RewritePrinter::prepareOps(const std::vector<lower::PrepareOp>& ops, const lower::RewriteProgram& p, const ExprContext& ctx,
+                                       const std::string& in) {
+    std::string out;
+    for (const auto& op : ops) {
         std::visit(lower::Overloaded{
                        [&](const lower::EvalLocal& o) {
                            const std::string v = gen_.gen(*o.value, ctx, out, in);
@@ -31,15 +101,16 @@ std::string RewritePrinter::prepare(const lower::RewriteProgram& p, const ExprCo
                        [&](const lower::Place& o) { out += placement(o, in); },
                        [&](const lower::Eval& o) {
                            const std::string v = gen_.gen(*o.value, ctx, out, in);
-                           out += in + "const auto " + reg(o.reg) + " = " + v + ";\n";
+                           out += in + "const auto " + regName(o.reg) + " = " + v + ";\n";
                        },
                        [&](const lower::EvalPosition& o) {
                            const std::string v = gen_.gen(*o.value, ctx, out, in);
-                           out += in + "const vec2 " + reg(o.reg) + " = " + v + ";\n";
-                           out += in + "if (!std::isfinite(" + reg(o.reg) + ".x) || !std::isfinite(" + reg(o.reg) + ".y)) throw PlacedError(" +
+                           out += in + "const vec2 " + regName(o.reg) + " = " + v + ";\n";
+                           out += in + "if (!std::isfinite(" + regName(o.reg) + ".x) || !std::isfinite(" + regName(o.reg) + ".y)) throw PlacedError(" +
                                   str(places_.add(o.value->span)) + ", " + cppString(o.message) + ");\n";
                        },
-                       [&](const lower::TakePlaced& o) { out += in + "const vec2 " + reg(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n"; },
+                       [&](const lower::TakePlaced& o) { out += in + "const vec2 " + regName(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n"; },
+                       [&](const lower::PrepareLoop& o) { out += prepareLoop(o.loop, p, ctx, in); },
                    },
                    op);
     }
@@ -47,8 +118,12 @@ std::string RewritePrinter::prepare(const lower::RewriteProgram& p, const ExprCo
 }
 
 std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::string& c) {
-    std::string commit = c + "(void)step;\n" + c + "(void)G;\n";
-    for (const auto& op : p.commit) {
+    return c + "(void)step;\n" + c + "(void)G;\n" + commitOps(p.commit, p, c);
+}
+
+std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, const lower::RewriteProgram& p, const std::string& c) {
+    std::string commit;
+    for (const auto& op : ops) {
         std::visit(lower::Overloaded{
                        [&](const lower::DeleteFace& o) { commit += c + "G.removeFace(m.faces[" + str(o.matchFace) + "]);\n"; },
                        [&](const lower::DeleteEdge& o) { commit += c + "G.removeEdge(m.edges[" + str(o.matchEdge) + "]);\n"; },
@@ -63,7 +138,7 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
                            commit += c + "G.reconnectEdge(m.edges[" + str(o.matchEdge) + "], " + node(o.src) + ", " + node(o.dst) + ");\n";
                        },
                        [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
-                       [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + reg(o.reg) + ");\n"; },
+                       [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + regName(o.reg) + ");\n"; },
                        [&](const lower::SetNodeAttr& o) {
                            commit += c + gen_.attrAccess(o.kind, node(o.handle), ir::ElemClass::Node, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
                        },
@@ -105,6 +180,7 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
                        [&](const lower::SetFaceStyle& o) {
                            commit += c + "if (G.faceAlive(" + face(o.handle) + ")) G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
+                       [&](const lower::CommitLoop& o) { commit += commitLoop(o.loop, p, c); },
                    },
                    op);
     }
@@ -114,7 +190,7 @@ std::string RewritePrinter::commit(const lower::RewriteProgram& p, const std::st
 // A style's value: a literal is one shared constant of the grammar.
 std::string RewritePrinter::styleValue(const lower::Operand& v) {
     if (v.reg < 0) return constants_.add(valueInit(v.type, cppLiteral(v.literal->value, v.literal->type)));
-    return valueOf(v.type, reg(v.reg));
+    return valueOf(v.type, regName(v.reg));
 }
 
 // A new element's attribute record: the kind's defaults, then the rewrite's values.

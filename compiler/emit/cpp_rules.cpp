@@ -337,6 +337,7 @@ private:
         ctx.edgeKind = [this](int i) { return r_.edges[i].kind; };
         ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
         ctx.faceKind = [this](int i) { return r_.faces[static_cast<std::size_t>(i)].kind; };
+        rewrite_.setLoopNames(rd);
         out += rewrite_.prepare(p, ctx, in);
         const std::string commit = rewrite_.commit(p, "        ");
         // Kept in a typed buffer until commit (no allocation once warm).
@@ -345,13 +346,27 @@ private:
         const std::string nf = str(static_cast<int>(std::max<std::size_t>(r_.faces.size(), 1)));
         std::string pending = "    struct Pending_" + rd + " {\n        NodeId mn[" + nn + "];\n        EdgeId me[" + ne + "];\n        FaceId mf[" + nf + "];\n";
         for (std::size_t r = 0; r < p.registers.size(); ++r) pending += "        " + cppType(p.registers[r]) + " " + reg(static_cast<int>(r)) + ";\n";
+        for (std::size_t l = 0; l < p.loops.size(); ++l)
+            pending += "        std::uint32_t loopFirst" + str(static_cast<int>(l)) + ", loopCount" + str(static_cast<int>(l)) + ";\n";
         // A parallel step keeps one per match: plain records grow without copying.
         pending += "    };\n    GrowableArray<Pending_" + rd + "> pending_" + rd + "_;\n\n";
+        // A loop's turns: their corners and registers.
+        for (std::size_t l = 0; l < p.loops.size(); ++l) {
+            const std::string L = str(static_cast<int>(l));
+            pending += "    struct Turn_" + rd + "_" + L + " {\n        NodeId u, v;\n";
+            for (std::size_t r = 0; r < p.loops[l].registers.size(); ++r)
+                pending += "        " + cppType(p.loops[l].registers[r]) + " " + RewritePrinter::loopReg(static_cast<int>(l), static_cast<int>(r)) + ";\n";
+            pending += "    };\n    GrowableArray<Turn_" + rd + "_" + L + "> turns_" + rd + "_" + L + "_;\n\n";
+        }
         out += in + "Pending_" + rd + "& p = pending_" + rd + "_.emplace_back();\n";
         out += in + "std::copy(m.nodes, m.nodes + " + str(static_cast<int>(r_.nodes.size())) + ", p.mn);\n";
         out += in + "std::copy(m.edges, m.edges + " + str(static_cast<int>(r_.edges.size())) + ", p.me);\n";
         if (!r_.faces.empty()) out += in + "std::copy(m.faces, m.faces + " + str(static_cast<int>(r_.faces.size())) + ", p.mf);\n";
         for (std::size_t r = 0; r < p.registers.size(); ++r) out += in + "p." + reg(static_cast<int>(r)) + " = " + reg(static_cast<int>(r)) + ";\n";
+        for (std::size_t l = 0; l < p.loops.size(); ++l) {
+            const std::string L = str(static_cast<int>(l));
+            out += in + "p.loopFirst" + L + " = loopFirst" + L + ";\n" + in + "p.loopCount" + L + " = loopCount" + L + ";\n";
+        }
         out += in + "pendingOrder_.push_back(PendingRef{" + str(firstDaughter_ + di) + ", static_cast<std::uint32_t>(pending_" + rd +
                "_.size() - 1)});\n";
         out += "    }\n\n";

@@ -269,14 +269,15 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     p.edges.assign(m.edges, m.edges + r.edges.size());
     p.faces.assign(m.faces, m.faces + r.faces.size());
     p.registers.assign(program.registers.size(), rt::Value{});
-    executor_.prepare(program, m, g, f, p.registers);
+    executor_.prepare(program, m, g, f, p.registers, p.loops);
     ++pendingCount_;
 }
 
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (std::size_t k = 0; k < pendingCount_; ++k) {
         Prepared& p = pending_[k];
-        executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, g, step);
+        executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, p.loops,
+                         g, step);
     }
     pendingCount_ = 0;
 }

@@ -38,6 +38,7 @@ private:
         std::vector<rt::EdgeId> edges;
         std::vector<rt::FaceId> faces;
         std::vector<rt::Value> registers;               // the rewrite program's
+        std::vector<LoopValues> loops;                  // and its loops'
     };
 
     // Calls onComplete() for every way to finish binding `ops` from

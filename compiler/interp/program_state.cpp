@@ -42,8 +42,9 @@ rt::Graph startRun(const ir::Program& prog, std::vector<rt::Value> params, rt::R
     EvalFrame f = st.frame(&rng);
     std::vector<rt::Value> registers(start.axiom.registers.size());
     RewriteExecutor axiom;
-    axiom.prepare(start.axiom, rt::Match{}, g, f, registers);
-    axiom.commit(start.axiom, rt::Match{}, registers, g, 0);
+    std::vector<interp::LoopValues> loops;   // the axiom has none
+    axiom.prepare(start.axiom, rt::Match{}, g, f, registers, loops);
+    axiom.commit(start.axiom, rt::Match{}, registers, loops, g, 0);
     return g;
 }
 

@@ -7,9 +7,10 @@
 namespace g2d::interp {
 
 void RewriteExecutor::prepare(const lower::RewriteProgram& p, rt::Match m, const rt::Graph& g, EvalFrame& f,
-                              std::vector<rt::Value>& registers) {
+                              std::vector<rt::Value>& registers, std::vector<LoopValues>& loops) {
     placed_.assign(static_cast<std::size_t>(p.nodeHandles), std::nullopt);
     f.placed = &placed_;
+    loops.resize(p.loops.size());
     for (const auto& op : p.prepare) {
         std::visit(lower::Overloaded{
                        [&](const lower::EvalLocal& o) { (*f.locals)[o.slot] = evaluate(*o.value, f); },
@@ -21,9 +22,40 @@ void RewriteExecutor::prepare(const lower::RewriteProgram& p, rt::Match m, const
                            registers[o.reg] = pos;
                        },
                        [&](const lower::TakePlaced& o) { registers[o.reg] = *placed_[o.daughterNode]; },
+                       [&](const lower::PrepareLoop& o) { prepareLoop(p.loops[o.loop], m, g, f, loops[o.loop]); },
                    },
                    op);
     }
+}
+
+void RewriteExecutor::prepareLoop(const lower::LoopProgram& l, rt::Match m, const rt::Graph& g, EvalFrame& f, LoopValues& out) {
+    const rt::FaceId face = m.faces[l.matchFace];
+    out.corners.clear();
+    rt::CornerId c = g.firstCorner(face);
+    for (int i = 0; i < g.cornerCount(face); ++i, c = g.nextCorner(c)) out.corners.push_back(g.cornerNode(c));
+    const std::size_t turns = out.corners.size(), regs = l.registers.size();
+    out.registers.assign(turns * regs, rt::Value{});
+    // The turn's corners read as match nodes firstVar (u) and firstVar + 1 (v).
+    loopFrame_.assign(m.nodes, m.nodes + l.firstVar);
+    loopFrame_.resize(static_cast<std::size_t>(l.firstVar) + 2, rt::kNoId);
+    const rt::NodeId* matchNodes = f.nodes;
+    f.nodes = loopFrame_.data();
+    for (std::size_t t = 0; t < turns; ++t) {
+        loopFrame_[static_cast<std::size_t>(l.firstVar)] = out.corners[t];
+        loopFrame_[static_cast<std::size_t>(l.firstVar) + 1] = out.corners[(t + 1) % turns];
+        rt::Value* r = out.registers.data() + t * regs;
+        for (const auto& op : l.prepare) {
+            if (const auto* e = std::get_if<lower::Eval>(&op)) {
+                r[e->reg] = evaluate(*e->value, f);
+            } else {
+                const auto& o = std::get<lower::EvalPosition>(op);
+                const rt::vec2 pos = evaluateVec(*o.value, f);
+                if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(o.value->span, o.message);
+                r[o.reg] = pos;
+            }
+        }
+    }
+    f.nodes = matchNodes;
 }
 
 void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph& g) {
@@ -44,17 +76,59 @@ void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph&
     }
 }
 
-void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g,
-                             long long step) {
+void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::vector<rt::Value>& registers,
+                             std::vector<LoopValues>& loops, rt::Graph& g, long long step) {
+    hostOf_.assign(static_cast<std::size_t>(p.nodeHandles), rt::kNoId);
+    edgeOf_.assign(static_cast<std::size_t>(p.edgeHandles), rt::kNoId);
+    faceOf_.assign(static_cast<std::size_t>(p.faceHandles), rt::kNoId);
+    apply(p.commit, m, registers, g, step, p, loops);
+}
+
+void RewriteExecutor::commitLoop(const lower::LoopProgram& l, LoopValues& values, rt::Graph& g, long long step,
+                                 const lower::RewriteProgram& p, std::vector<LoopValues>& loops) {
+    const std::size_t turns = values.corners.size(), regs = l.registers.size(), L = static_cast<std::size_t>(l.localNodes);
+    const std::size_t H = static_cast<std::size_t>(l.outerNodes);
+    const std::vector<rt::NodeId> outer(hostOf_.begin(), hostOf_.begin() + static_cast<long>(H));
+    turnNodes_.assign(turns * L, rt::kNoId);
+    std::vector<rt::Value> turnRegisters;
+    // The handles of turn t (lower::LoopProgram's numbering).
+    auto frame = [&](std::size_t t) {
+        hostOf_ = outer;
+        hostOf_.resize(static_cast<std::size_t>(l.nodeHandles()), rt::kNoId);
+        hostOf_[H] = values.corners[t];
+        hostOf_[H + 1] = values.corners[(t + 1) % turns];
+        for (std::size_t i = 0; i < L; ++i) {
+            hostOf_[H + 2 + i] = turnNodes_[t * L + i];
+            hostOf_[H + 2 + L + i] = turnNodes_[((t + turns - 1) % turns) * L + i];
+            hostOf_[H + 2 + 2 * L + i] = turnNodes_[((t + 1) % turns) * L + i];
+        }
+        edgeOf_.assign(static_cast<std::size_t>(l.edgeHandles), rt::kNoId);
+        faceOf_.assign(static_cast<std::size_t>(l.faceHandles), rt::kNoId);
+        turnRegisters.assign(std::make_move_iterator(values.registers.begin() + static_cast<long>(t * regs)),
+                             std::make_move_iterator(values.registers.begin() + static_cast<long>((t + 1) * regs)));
+    };
+    for (std::size_t t = 0; t < turns; ++t) {
+        frame(t);
+        // Styles and attributes are used once each: create moves them, link gets the rest.
+        apply(l.create, rt::Match{}, turnRegisters, g, step, p, loops);
+        for (std::size_t i = 0; i < L; ++i) turnNodes_[t * L + i] = hostOf_[H + 2 + i];
+        std::move(turnRegisters.begin(), turnRegisters.end(), values.registers.begin() + static_cast<long>(t * regs));
+    }
+    for (std::size_t t = 0; t < turns; ++t) {
+        frame(t);
+        apply(l.link, rt::Match{}, turnRegisters, g, step, p, loops);
+    }
+    hostOf_ = outer;
+}
+
+void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g,
+                            long long step, const lower::RewriteProgram& p, std::vector<LoopValues>& loops) {
     auto value = [&](const lower::Operand& v) { return v.reg >= 0 ? std::move(registers[v.reg]) : fromLiteral(v.literal->value); };
     auto position = [&](int reg) { return reg >= 0 ? std::get<rt::vec2>(registers[reg]) : rt::vec2{0, 0}; };
     auto& nodes = hostOf_;
     auto& edges = edgeOf_;
     auto& faces = faceOf_;
-    nodes.assign(static_cast<std::size_t>(p.nodeHandles), rt::kNoId);
-    edges.assign(static_cast<std::size_t>(p.edgeHandles), rt::kNoId);
-    faces.assign(static_cast<std::size_t>(p.faceHandles), rt::kNoId);
-    for (const auto& op : p.commit) {
+    for (const auto& op : ops) {
         std::visit(lower::Overloaded{
                        [&](const lower::DeleteFace& o) { g.removeFace(m.faces[o.matchFace]); },
                        [&](const lower::DeleteEdge& o) { g.removeEdge(m.edges[o.matchEdge]); },
@@ -97,6 +171,7 @@ void RewriteExecutor::commit(const lower::RewriteProgram& p, rt::Match m, std::v
                        [&](const lower::SetFaceStyle& o) {
                            if (g.faceAlive(faces[o.handle])) g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
+                       [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },
                    },
                    op);
     }

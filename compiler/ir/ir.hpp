@@ -284,6 +284,49 @@ struct KeptFace {
     Span span;
 };
 
+// A node a turn of a `for` loop names: one of the daughter's (kept or new),
+// the turn's corner (`u`) or the next corner (`v`), one the turn creates,
+// or one the previous or next turn creates (`prev.m`, `next.m`).
+struct LoopNodeRef {
+    enum class Scope { Daughter, Var, Local, Prev, Next } scope = Scope::Daughter;
+    int index = -1;
+};
+struct LoopNode {                      // a node each turn creates
+    std::string name;
+    int kind = -1;
+    Expr position;
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+struct LoopEdge {
+    int kind = -1;
+    LoopNodeRef src, dst;
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+struct LoopFace {
+    int kind = -1;
+    std::vector<LoopNodeRef> corners;
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+// `for (u, v) in f.sides { … }` (a turn per side, u its corner, v the next)
+// or `for c in f.corners { … }`, over a matched face's corners in their
+// order as the match found them (from the face's first corner).
+// Expressions read `u` and `v` as match nodes numbered firstVar, firstVar + 1.
+struct FaceLoop {
+    int motherFace = -1;
+    bool sides = true;
+    int firstVar = -1;
+    std::vector<LoopNode> nodes;
+    std::vector<LoopEdge> edges;
+    std::vector<LoopFace> faces;
+    Span span;
+};
+
 struct Daughter {
     std::optional<Expr> weightExpr;    // absent: weight 1
     std::optional<double> weight;      // known at compile time
@@ -292,6 +335,7 @@ struct Daughter {
     std::vector<DaughterEdge> edges;
     std::vector<NewFace> faces;
     std::vector<KeptFace> keptFaces;
+    std::vector<FaceLoop> loops;
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges and faces go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     std::vector<int> deletedFaces;     // mother faces not kept

@@ -101,6 +101,11 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
         if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
     for (const auto& f : d.faces) changed.add(f.kind, ir::ElemClass::Face);   // new
+    for (const auto& l : d.loops) {   // new, every turn
+        for (const auto& n : l.nodes) changed.add(n.kind, ir::ElemClass::Node);
+        for (const auto& e : l.edges) changed.add(e.kind, ir::ElemClass::Edge);
+        for (const auto& f : l.faces) changed.add(f.kind, ir::ElemClass::Face);
+    }
     for (int f : d.deletedFaces) changed.add(at(rule.faces, f) ? at(rule.faces, f)->kind : -1, ir::ElemClass::Face);
     for (const auto& k : d.keptFaces)
         if (const auto* f = at(rule.faces, k.motherFace); f && f->kind >= 0)

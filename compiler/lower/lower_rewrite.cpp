@@ -26,18 +26,70 @@ private:
         return static_cast<int>(p_.registers.size() - 1);
     }
     // A literal is written as it is; anything else is evaluated by prepare.
-    Operand operand(const ir::Expr& value) {
+    Operand operand(const ir::Expr& value) { return operandIn(value, p_.registers, p_.prepare); }
+    static Operand operandIn(const ir::Expr& value, std::vector<ir::Type>& registers, std::vector<PrepareOp>& prepare) {
         if (value.op == ir::ExprOp::Literal) return Operand{-1, &value, value.type};
-        const int reg = newRegister(value.type);
-        p_.prepare.push_back(Eval{reg, &value});
+        registers.push_back(value.type);
+        const int reg = static_cast<int>(registers.size() - 1);
+        prepare.push_back(Eval{reg, &value});
         return Operand{reg, nullptr, value.type};
+    }
+
+    // A loop's turn, as its own little rewrite (LoopProgram): per turn, the
+    // new nodes' positions, attributes and styles, then the edges', then
+    // the faces', in order.
+    LoopProgram lowerLoop(const ir::FaceLoop& l) const {
+        LoopProgram lp;
+        lp.matchFace = l.motherFace;
+        lp.sides = l.sides;
+        lp.firstVar = l.firstVar;
+        lp.outerNodes = static_cast<int>(d_.nodes.size());
+        lp.localNodes = static_cast<int>(l.nodes.size());
+        const int H = lp.outerNodes, L = lp.localNodes;
+        auto handle = [&](const ir::LoopNodeRef& r) {
+            switch (r.scope) {
+            case ir::LoopNodeRef::Scope::Daughter: return r.index;
+            case ir::LoopNodeRef::Scope::Var: return H + r.index;
+            case ir::LoopNodeRef::Scope::Local: return H + 2 + r.index;
+            case ir::LoopNodeRef::Scope::Prev: return H + 2 + L + r.index;
+            case ir::LoopNodeRef::Scope::Next: break;
+            }
+            return H + 2 + 2 * L + r.index;
+        };
+        auto operand = [&](const ir::Expr& v) { return operandIn(v, lp.registers, lp.prepare); };
+        for (std::size_t i = 0; i < l.nodes.size(); ++i) {
+            const auto& n = l.nodes[i];
+            lp.registers.push_back(ir::kVec2Type);
+            const int pos = static_cast<int>(lp.registers.size() - 1);
+            lp.prepare.push_back(EvalPosition{pos, &n.position, "position of `" + n.name + "` is not finite"});
+            CreateNode c{H + 2 + static_cast<int>(i), n.kind, pos, {}};
+            for (const auto& a : n.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+            lp.create.push_back(std::move(c));
+            for (const auto& st : n.styles) lp.create.push_back(SetNodeStyle{H + 2 + static_cast<int>(i), &st, operand(st.value)});
+        }
+        for (const auto& e : l.edges) {
+            CreateEdge c{lp.edgeHandles, e.kind, handle(e.src), handle(e.dst), {}};
+            for (const auto& a : e.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+            lp.link.push_back(std::move(c));
+            for (const auto& st : e.styles) lp.link.push_back(SetEdgeStyle{lp.edgeHandles, &st, operand(st.value)});
+            ++lp.edgeHandles;
+        }
+        for (const auto& f : l.faces) {
+            CreateFace c{lp.faceHandles, f.kind, {}, {}};
+            for (const auto& r : f.corners) c.corners.push_back(handle(r));
+            for (const auto& a : f.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+            lp.link.push_back(std::move(c));
+            for (const auto& st : f.styles) lp.link.push_back(SetFaceStyle{lp.faceHandles, &st, operand(st.value)});
+            ++lp.faceHandles;
+        }
+        return lp;
     }
 
     // Everything is evaluated on the graph before the step, in the order the
     // grammar is written: the lets, automatic placement (which `at` may read
     // as `placed`), then per daughter node its position, attributes and
     // styles, then per daughter edge, then per new face, its attributes and
-    // styles.
+    // styles, then per kept face, then the loops (each turn in turn).
     void prepare() {
         for (const auto& l : r_.lets) p_.prepare.push_back(EvalLocal{l.slot, &l.value});
         for (const auto& l : d_.lets) p_.prepare.push_back(EvalLocal{l.slot, &l.value});
@@ -74,6 +126,10 @@ private:
         for (std::size_t i = 0; i < d_.keptFaces.size(); ++i) {
             for (const auto& a : d_.keptFaces[i].assigns) keptFaceAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
             for (const auto& s : d_.keptFaces[i].styles) keptFaceStyles_[i].emplace_back(&s, operand(s.value));
+        }
+        for (std::size_t i = 0; i < d_.loops.size(); ++i) {
+            p_.loops.push_back(lowerLoop(d_.loops[i]));
+            p_.prepare.push_back(PrepareLoop{static_cast<int>(i)});
         }
     }
 
@@ -162,6 +218,7 @@ private:
             c.push_back(CreateFace{h, df.kind, df.corners, faceAttrs_[i]});
             for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value});
         }
+        for (std::size_t i = 0; i < d_.loops.size(); ++i) c.push_back(CommitLoop{static_cast<int>(i)});
         writeSet();
     }
 

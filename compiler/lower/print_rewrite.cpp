@@ -38,8 +38,8 @@ std::string attrs(const ir::Program& prog, int kind, const std::vector<AttrWrite
 
 std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const RewriteProgram& p) {
     std::string out = "prepare\n";
-    for (const auto& op : p.prepare) {
-        out += "  " + std::visit(
+    auto prepareLine = [&](const PrepareOp& op) {
+        return std::visit(
                           [&](const auto& o) -> std::string {
                               using T = std::decay_t<decltype(o)>;
                               if constexpr (std::is_same_v<T, EvalLocal>) return "let L" + std::to_string(o.slot) + " <- expr " + at(o.value->span);
@@ -50,17 +50,17 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                               } else if constexpr (std::is_same_v<T, Eval>) return "r" + std::to_string(o.reg) + " <- expr " + at(o.value->span);
                               else if constexpr (std::is_same_v<T, EvalPosition>)
                                   return "r" + std::to_string(o.reg) + " <- finite position " + at(o.value->span);
-                              else {
-                                  static_assert(std::is_same_v<T, TakePlaced>, "an operation the printer does not know");
+                              else if constexpr (std::is_same_v<T, TakePlaced>)
                                   return "r" + std::to_string(o.reg) + " <- placed " + h(o.daughterNode);
+                              else {
+                                  static_assert(std::is_same_v<T, PrepareLoop>, "an operation the printer does not know");
+                                  return "loop " + std::to_string(o.loop) + ": corners of " + rule.faces[p.loops[o.loop].matchFace].name;
                               }
                           },
-                          op) +
-               "\n";
-    }
-    out += "commit\n";
-    for (const auto& op : p.commit) {
-        out += "  " + std::visit(
+                          op);
+    };
+    auto commitLine = [&](const CommitOp& op) {
+        return std::visit(
                           [&](const auto& o) -> std::string {
                               using T = std::decay_t<decltype(o)>;
                               if constexpr (std::is_same_v<T, DeleteFace>) return "delete face " + rule.faces[o.matchFace].name;
@@ -98,14 +98,30 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                                   for (int c : o.corners) corners += (corners.empty() ? "" : ", ") + h(c);
                                   return "f" + std::to_string(o.handle) + " = new " + prog.kinds[o.kind].name + "(" + corners + ")" +
                                          attrs(prog, o.kind, o.attrs);
-                              } else {
-                                  static_assert(std::is_same_v<T, SetFaceStyle>, "an operation the printer does not know");
+                              } else if constexpr (std::is_same_v<T, SetFaceStyle>)
                                   return "f" + std::to_string(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              else {
+                                  static_assert(std::is_same_v<T, CommitLoop>, "an operation the printer does not know");
+                                  return "loop " + std::to_string(o.loop);
                               }
                           },
-                          op) +
-               "\n";
+                          op);
+    };
+    for (const auto& op : p.prepare) out += "  " + prepareLine(op) + "\n";
+    for (std::size_t i = 0; i < p.loops.size(); ++i) {
+        const LoopProgram& l = p.loops[i];
+        out += "loop " + std::to_string(i) + " over " + (l.sides ? "sides" : "corners") + " of " + rule.faces[l.matchFace].name +
+               ": u = h" + std::to_string(l.outerNodes) + ", v = h" + std::to_string(l.outerNodes + 1) + ", new h" +
+               std::to_string(l.outerNodes + 2) + ".., prev h" + std::to_string(l.outerNodes + 2 + l.localNodes) + ".., next h" +
+               std::to_string(l.outerNodes + 2 + 2 * l.localNodes) + "..\n  per turn\n";
+        for (const auto& op : l.prepare) out += "    " + prepareLine(op) + "\n";
+        out += "  create\n";
+        for (const auto& op : l.create) out += "    " + commitLine(op) + "\n";
+        out += "  link\n";
+        for (const auto& op : l.link) out += "    " + commitLine(op) + "\n";
     }
+    out += "commit\n";
+    for (const auto& op : p.commit) out += "  " + commitLine(op) + "\n";
     std::string w;
     for (int n : p.writtenNodes) w += " " + rule.nodes[n].name;
     for (int e : p.writtenEdges) w += " " + rule.edges[e].name;

@@ -62,7 +62,8 @@ struct TakePlaced {         // reg <- the automatic position of a daughter node
     int reg;
     int daughterNode;
 };
-using PrepareOp = std::variant<EvalLocal, Place, Eval, EvalPosition, TakePlaced>;
+struct PrepareLoop { int loop; };   // RewriteProgram::loops[loop]: its corners, and each turn's values
+using PrepareOp = std::variant<EvalLocal, Place, Eval, EvalPosition, TakePlaced, PrepareLoop>;
 
 // ---- commit --------------------------------------------------------------------
 // Nodes of the daughter are addressed by handle (= daughter node index), its
@@ -105,13 +106,36 @@ struct CreateFace {
     std::vector<AttrWrite> attrs;
 };
 struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; };
+struct CommitLoop { int loop; };    // RewriteProgram::loops[loop]: every turn's create, then every turn's link
 using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetNodeAttr,
                               TouchNodeValues, SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle,
-                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle>;
+                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, CommitLoop>;
+
+// A `for` loop (ir::FaceLoop), one turn per corner of the matched face, from
+// its first corner. Prepare takes the corners (before the step changes
+// anything) and evaluates `prepare` per turn into that turn's registers.
+// Commit runs `create` for every turn (the turns' new nodes), then `link`
+// for every turn (edges and faces, which may join neighbouring turns' nodes).
+// In their operations, node handles below `outerNodes` are the daughter's;
+// then come the turn's corner u (outerNodes) and the next corner v (+1), its
+// new nodes (+2 + i), the previous turn's (+2 + L + i) and the next turn's
+// (+2 + 2L + i), L = localNodes. Edge and face handles are per turn.
+struct LoopProgram {
+    int matchFace = -1;
+    bool sides = true;
+    int firstVar = -1;                  // expressions read u and v as match nodes firstVar and firstVar + 1
+    int outerNodes = 0, localNodes = 0;
+    std::vector<PrepareOp> prepare;
+    std::vector<ir::Type> registers;
+    std::vector<CommitOp> create, link;
+    int edgeHandles = 0, faceHandles = 0;
+    int nodeHandles() const { return outerNodes + 2 + 3 * localNodes; }
+};
 
 struct RewriteProgram {
     std::vector<PrepareOp> prepare;
     std::vector<CommitOp> commit;
+    std::vector<LoopProgram> loops;
     std::vector<ir::Type> registers;
     int nodeHandles = 0, edgeHandles = 0, faceHandles = 0;
     bool placement = false;             // prepare has a Place (the `placed` positions exist)

@@ -1,6 +1,7 @@
 #include "lsp/symbol_index.hpp"
 
 #include <algorithm>
+#include <functional>
 
 namespace g2d::lsp {
 
@@ -98,14 +99,23 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
                             if (const auto* let = std::get_if<ast::LetStmt>(&item.item)) {
                                 add(SymbolKind::Let, let->name, d.span, d.name.name, let->type ? let->type->name.name : "");
                             } else if (const auto* block = std::get_if<ast::ProduceBlock>(&item.item)) {
-                                for (const auto& ps : block->body) {
-                                    if (const auto* let = std::get_if<ast::LetStmt>(&ps.stmt))
-                                        add(SymbolKind::Let, let->name, block->span, d.name.name,
-                                            let->type ? let->type->name.name : "");
-                                    else if (const auto* g = std::get_if<ast::GraphStmt>(&ps.stmt))
-                                        graphStmt(*g, SymbolKind::DaughterNode, SymbolKind::DaughterEdge, block->span,
-                                                  d.name.name);
-                                }
+                                // A `for` loop's variables and nodes are visible in its body.
+                                std::function<void(const std::vector<ast::ProduceStmt>&, Span)> body =
+                                    [&](const std::vector<ast::ProduceStmt>& stmts, Span scope) {
+                                        for (const auto& ps : stmts) {
+                                            if (const auto* let = std::get_if<ast::LetStmt>(&ps.stmt))
+                                                add(SymbolKind::Let, let->name, scope, d.name.name,
+                                                    let->type ? let->type->name.name : "");
+                                            else if (const auto* g = std::get_if<ast::GraphStmt>(&ps.stmt))
+                                                graphStmt(*g, SymbolKind::DaughterNode, SymbolKind::DaughterEdge, scope,
+                                                          d.name.name);
+                                            else if (const auto* loop = std::get_if<ast::ForBlock>(&ps.stmt)) {
+                                                for (const auto& v : loop->vars) add(SymbolKind::DaughterNode, v, loop->span, d.name.name);
+                                                body(loop->body, loop->span);
+                                            }
+                                        }
+                                    };
+                                body(block->body, block->span);
                             }
                         }
                     } else if constexpr (std::is_same_v<T, ast::FnDecl>) {

@@ -56,6 +56,22 @@ public:
 
     Ident ident(antlr4::tree::TerminalNode* n) const { return Ident{n->getText(), span(n)}; }
     Ident ident(antlr4::Token* t) const { return Ident{t->getText(), span(t)}; }
+    // `name`, or `prev.name` / `next.name` (sema tells where those may stand).
+    Ident nodeRef(P::NodeRefContext* ctx) const { return Ident{ctx->getText(), span(ctx)}; }
+
+    ProduceStmt produceStmt(P::ProduceStmtContext* s) {
+        if (s->letStmt()) return ProduceStmt{let(s->letStmt())};
+        if (s->graphStmt()) return ProduceStmt{graphStmt(s->graphStmt())};
+        auto* f = s->forStmt();
+        ForBlock b;
+        b.span = span(f);
+        if (f->var) b.vars.push_back(ident(f->var));
+        else b.vars = {ident(f->first), ident(f->second)};
+        b.face = ident(f->face);
+        b.what = ident(f->what);
+        for (auto* inner : f->produceStmt()) b.body.push_back(produceStmt(inner));
+        return ProduceStmt{std::move(b)};
+    }
     TypeRef typeRef(P::TypeRefContext* ctx) const { return TypeRef{ident(ctx->ID())}; }
 
     Program program(P::ProgramContext* ctx) {
@@ -190,7 +206,7 @@ public:
             s.span = span(f);
             if (f->name) s.name = ident(f->name);
             s.kind = ident(f->kind);
-            for (auto* c : f->corners) s.corners.push_back(ident(c));
+            for (auto* c : f->corners) s.corners.push_back(nodeRef(c));
             s.assigns = assignments(f->assignments());
             if (auto* w = f->whereClause()) s.where = expr(w->expr());
             return GraphStmt{std::move(s)};
@@ -199,8 +215,8 @@ public:
         EdgeStmt s;
         s.span = span(e);
         if (e->name) s.name = ident(e->name);
-        s.src = ident(e->src);
-        s.dst = ident(e->dst);
+        s.src = nodeRef(e->src);
+        s.dst = nodeRef(e->dst);
         P::EdgeLabelContext* label = nullptr;
         if (auto* a = dynamic_cast<P::DirectedArrowContext*>(e->edgeArrow())) {
             s.arrow = EdgeStmt::Arrow::Forward; label = a->edgeLabel();
@@ -262,10 +278,7 @@ public:
             ProduceBlock b;
             b.span = span(p);
             if (p->expr()) b.weight = expr(p->expr());
-            for (auto* s : p->produceStmt()) {
-                if (s->letStmt()) b.body.push_back(ProduceStmt{let(s->letStmt())});
-                else b.body.push_back(ProduceStmt{graphStmt(s->graphStmt())});
-            }
+            for (auto* s : p->produceStmt()) b.body.push_back(produceStmt(s));
             r.items.push_back(RuleItem{std::move(b)});
         }
         return r;

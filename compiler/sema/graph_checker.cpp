@@ -682,6 +682,10 @@ private:
     }
 
     void unboundName(const ast::Ident& id, const std::string& what) {
+        if (id.name.rfind("prev.", 0) == 0 || id.name.rfind("next.", 0) == 0) {
+            g_.diags.error(id.span, "`" + id.name + "` names a node of a `for` loop's neighbouring turn: only inside `for`");
+            return;
+        }
         if (auto it = nacNames_.find(id.name); it != nacNames_.end()) {
             auto& d = g_.diags.error(id.span, "`" + id.name + "` belongs to a negative condition, which binds nothing "
                                                               "the daughter could use");
@@ -723,7 +727,7 @@ private:
         std::vector<PendingNode> pendingNodes;
         std::vector<std::pair<const ast::NodeStmt*, int>> keptEdgeStmts, keptFaceStmts;
         for (const auto& s : p.body) {
-            if (std::holds_alternative<ast::LetStmt>(s.stmt)) continue;
+            if (!std::holds_alternative<ast::GraphStmt>(s.stmt)) continue;
             const auto* n = asNode(std::get<ast::GraphStmt>(s.stmt));
             if (!n) continue;
             if (n->where) g_.diags.error(n->where->span, "conditions (`where`) belong in the match");
@@ -843,6 +847,10 @@ private:
         for (const auto& s : p.body) {
             if (const auto* l = std::get_if<ast::LetStmt>(&s.stmt)) {
                 let(*l, dg.lets, elems);
+                continue;
+            }
+            if (const auto* loop = std::get_if<ast::ForBlock>(&s.stmt)) {
+                daughterLoop(*loop, dg, claim, daughterNode, exprEnv(), elems);
                 continue;
             }
             const auto& gs = std::get<ast::GraphStmt>(s.stmt);
@@ -978,6 +986,164 @@ private:
         }
         if (df.kind >= 0) checkAssignments(g_, ec_, df.kind, f.assigns, env, df.assigns, df.styles);
         dg.faces.push_back(std::move(df));
+    }
+
+    // `for (u, v) in f.sides { … }` or `for c in f.corners { … }`: what each
+    // turn creates, on the turn's corners, the daughter's nodes, its own new
+    // nodes and the neighbouring turns' (`prev.m`, `next.m`).
+    template <class Claim, class DaughterNode>
+    void daughterLoop(const ast::ForBlock& fb, ir::Daughter& dg, Claim& claim, DaughterNode& daughterNode, ExprEnv env,
+                      const std::vector<ElemBinding>& elems) {
+        ir::FaceLoop loop;
+        loop.span = fb.span;
+        loop.motherFace = motherFace(fb.face.name);
+        loop.sides = fb.vars.size() == 2;
+        loop.firstVar = static_cast<int>(rule_.nodes.size());
+        bool ok = true;
+        if (loop.motherFace < 0) {
+            g_.diags.error(fb.face.span, "`" + fb.face.name + "` is not a face of the match: a loop walks a matched face");
+            ok = false;
+        }
+        const char* want = loop.sides ? "sides" : "corners";
+        if (fb.what.name != want) {
+            g_.diags.error(fb.what.span, fb.what.name == "sides" || fb.what.name == "corners"
+                                             ? std::string(loop.sides ? "`for (u, v)` walks a face's sides: write `" + fb.face.name + ".sides`"
+                                                                      : "`for c` walks a face's corners: write `" + fb.face.name + ".corners`")
+                                             : "a loop walks `" + fb.face.name + ".sides` or `" + fb.face.name + ".corners`, not `" +
+                                                   fb.face.name + "." + fb.what.name + "`");
+            ok = false;
+        }
+        std::vector<ElemBinding> loopElems = elems;
+        for (std::size_t i = 0; i < fb.vars.size(); ++i) {
+            const auto& v = fb.vars[i];
+            if (auto prev = findName(v.name)) {
+                reportDuplicate(g_, v, *prev);
+                ok = false;
+                continue;
+            }
+            if (!claim(v)) { ok = false; continue; }
+            ElemBinding b;
+            b.name = v.name;
+            b.ref = ElemRef{ElemClass::Node, loop.firstVar + static_cast<int>(i)};
+            b.kind = -1;   // a face's corners may be of any kind
+            b.span = v.span;
+            loopElems.push_back(b);
+        }
+        // Pass 1: the nodes each turn creates (so statements may name later ones).
+        std::map<std::string, int> locals;
+        std::vector<const ast::NodeStmt*> localStmts;
+        for (const auto& st : fb.body) {
+            if (const auto* l = std::get_if<ast::LetStmt>(&st.stmt)) {
+                g_.diags.error(l->span, "a `let` inside `for` is not supported yet; compute the value in the loop's statements");
+                ok = false;
+                continue;
+            }
+            if (const auto* inner = std::get_if<ast::ForBlock>(&st.stmt)) {
+                g_.diags.error(inner->span, "loops cannot be nested");
+                ok = false;
+                continue;
+            }
+            const auto* n = asNode(std::get<ast::GraphStmt>(st.stmt));
+            if (!n) continue;
+            if (!n->kind || n->wildcard) {
+                g_.diags.error(n->span, "a loop creates elements (`m: Kind at …;`); keep or change matched ones outside it");
+                ok = false;
+                continue;
+            }
+            if (!claim(n->name)) { ok = false; continue; }
+            if (findName(n->name.name)) {
+                reportDuplicate(g_, n->name, *findName(n->name.name));
+                ok = false;
+                continue;
+            }
+            ir::LoopNode ln;
+            ln.name = n->name.name;
+            ln.span = n->span;
+            ln.kind = resolveKind(g_, *n->kind, ElemClass::Node);
+            if (!n->position) {
+                g_.diags.error(n->name.span, "a node a loop creates needs a position: `at EXPR`");
+                ok = false;
+            }
+            if (n->where) g_.diags.error(n->where->span, "conditions (`where`) belong in the match");
+            locals[ln.name] = static_cast<int>(loop.nodes.size());
+            ElemBinding b;
+            b.name = ln.name;
+            b.ref = ElemRef{ElemClass::Node, -1};
+            b.kind = ln.kind;
+            b.span = n->name.span;
+            b.unreadable = "`" + ln.name + "` is created by this loop; expressions can read only the matched elements and "
+                                           "the loop's corners";
+            loopElems.push_back(b);
+            localStmts.push_back(n);
+            loop.nodes.push_back(std::move(ln));
+        }
+        env.elems = &loopElems;
+        auto ref = [&](const ast::Ident& id, const char* role) -> std::optional<ir::LoopNodeRef> {
+            using Scope = ir::LoopNodeRef::Scope;
+            for (std::size_t i = 0; i < fb.vars.size(); ++i)
+                if (fb.vars[i].name == id.name) return ir::LoopNodeRef{Scope::Var, static_cast<int>(i)};
+            if (auto it = locals.find(id.name); it != locals.end()) return ir::LoopNodeRef{Scope::Local, it->second};
+            for (const auto& [prefix, scope] : {std::pair{"prev.", Scope::Prev}, std::pair{"next.", Scope::Next}})
+                if (id.name.rfind(prefix, 0) == 0) {
+                    const std::string name = id.name.substr(5);
+                    if (auto it = locals.find(name); it != locals.end()) return ir::LoopNodeRef{scope, it->second};
+                    g_.diags.error(id.span, "`" + id.name + "`: `" + name + "` is not a node this loop creates");
+                    return std::nullopt;
+                }
+            const int d = daughterNode(id, role);
+            if (d < 0) return std::nullopt;
+            return ir::LoopNodeRef{Scope::Daughter, d};
+        };
+        // Pass 2: positions and attributes of the new nodes, then edges and faces, in order.
+        for (std::size_t i = 0; i < localStmts.size(); ++i) {
+            const auto* n = localStmts[i];
+            auto& ln = loop.nodes[i];
+            if (n->position)
+                if (auto pos = ec_.checkAs(*n->position, ir::kVec2Type, env, "a position")) ln.position = std::move(*pos);
+            if (n->sketch) g_.diags.error(n->sketch->span, "a node a loop creates is placed with `at`, not a sketch position");
+            if (ln.kind >= 0) checkAssignments(g_, ec_, ln.kind, n->assigns, env, ln.assigns, ln.styles);
+        }
+        for (const auto& st : fb.body) {
+            const auto* gs = std::get_if<ast::GraphStmt>(&st.stmt);
+            if (!gs || asNode(*gs)) continue;
+            if (const auto* e = asEdge(*gs)) {
+                ir::LoopEdge le;
+                le.span = e->span;
+                le.kind = resolveKind(g_, e->kind, ElemClass::Edge);
+                checkArrow(g_, *e, le.kind);
+                if (e->name) g_.diags.error(e->name->span, "elements a loop creates cannot be named (but its nodes)");
+                if (e->where) g_.diags.error(e->where->span, "conditions (`where`) belong in the match");
+                auto src = ref(e->src, "edge endpoint"), dst = ref(e->dst, "edge endpoint");
+                if (e->arrow == ast::EdgeStmt::Arrow::Backward) std::swap(src, dst);
+                if (le.kind >= 0) checkAssignments(g_, ec_, le.kind, e->assigns, env, le.assigns, le.styles);
+                if (!src || !dst) { ok = false; continue; }
+                le.src = *src;
+                le.dst = *dst;
+                loop.edges.push_back(std::move(le));
+            } else if (const auto* f = asFace(*gs)) {
+                ir::LoopFace lf;
+                lf.span = f->span;
+                lf.kind = resolveKind(g_, f->kind, ElemClass::Face);
+                if (f->name) g_.diags.error(f->name->span, "elements a loop creates cannot be named (but its nodes)");
+                if (f->where) g_.diags.error(f->where->span, "conditions (`where`) belong in the match");
+                if (f->corners.size() < 3)
+                    g_.diags.error(f->span, "a face needs at least 3 corners, got " + std::to_string(f->corners.size()));
+                std::map<std::string, Span> seen;
+                for (const auto& c : f->corners) {
+                    if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
+                        auto& d = g_.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
+                        d.notes.push_back({prev->second, "first here"});
+                        ok = false;
+                        continue;
+                    }
+                    if (auto r = ref(c, "corner")) lf.corners.push_back(*r);
+                    else ok = false;
+                }
+                if (lf.kind >= 0) checkAssignments(g_, ec_, lf.kind, f->assigns, env, lf.assigns, lf.styles);
+                loop.faces.push_back(std::move(lf));
+            }
+        }
+        if (ok) dg.loops.push_back(std::move(loop));
     }
 
     std::string suggestElement(const std::string& name) {

@@ -18,6 +18,11 @@ void lintProgram(Globals& g) {
             for (const auto& e : d.edges)
                 if (e.motherEdge < 0) created.insert(e.kind);
             for (const auto& f : d.faces) created.insert(f.kind);
+            for (const auto& l : d.loops) {
+                for (const auto& n : l.nodes) created.insert(n.kind);
+                for (const auto& e : l.edges) created.insert(e.kind);
+                for (const auto& f : l.faces) created.insert(f.kind);
+            }
         }
     for (const auto& r : p.rules) {
         if (r.span.file != g.mainFile) continue;
@@ -28,6 +33,9 @@ void lintProgram(Globals& g) {
         if (why.empty())
             for (const auto& e : r.edges)
                 if (missing(e.kind)) { why = "edge kind `" + p.kinds[e.kind].name + "`"; break; }
+        if (why.empty())
+            for (const auto& f : r.faces)
+                if (missing(f.kind)) { why = "face kind `" + p.kinds[f.kind].name + "`"; break; }
         if (!why.empty())
             g.diags.warning(r.span, "rule `" + r.name + "` can never match: no element of " + why +
                                         " is ever created (the axiom has none and no rule makes one)");

@@ -326,3 +326,38 @@ TEST_CASE("faces in the axiom, matches and daughters: kinds, corners, names", "[
     CHECK(d.nodes[static_cast<std::size_t>(d.faces[0].corners[2])].motherNode == 1);
     CHECK(d.deletedNodes.empty());
 }
+
+TEST_CASE("for loops over a face's sides and corners: located errors", "[sema][faces][loops]") {
+    const std::string head = "node P { w: float = 0; }\nedge E;\nface F { w: float = 1; }\n"
+                             "axiom { a: P at (0, 0); b: P at (1, 0); c: P at (1, 1); F(a, b, c); }\n";   // 4 lines
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"rule R { match { f: F; x: P; } produce { x; for (u, v) in x.sides { u -[E]- v; } } }",
+         "5:59: `x` is not a face of the match: a loop walks a matched face"},
+        {"rule R { match { f: F; } produce { for (u, v) in f.corners { u -[E]- v; } } }",
+         "5:52: `for (u, v)` walks a face's sides: write `f.sides`"},
+        {"rule R { match { f: F; } produce { for c in f.edges { } } }", "5:47: a loop walks `f.sides` or `f.corners`, not `f.edges`"},
+        {"rule R { match { f: F; } produce { for c in f.corners { let k = 1; } } }",
+         "5:57: a `let` inside `for` is not supported yet; compute the value in the loop's statements"},
+        {"rule R { match { f: F; } produce { for c in f.corners { for d in f.corners { } } } }", "5:57: loops cannot be nested"},
+        {"rule R { match { f: F; x: P; } produce { for c in f.corners { x; } } }",
+         "5:63: a loop creates elements (`m: Kind at …;`); keep or change matched ones outside it"},
+        {"rule R { match { f: F; } produce { for c in f.corners { m: P; c -[E]- m; } } }",
+         "5:57: a node a loop creates needs a position: `at EXPR`"},
+        {"rule R { match { f: F; } produce { for c in f.corners { m: P at c.pos; c -[E]- prev.z; } } }",
+         "5:80: `prev.z`: `z` is not a node this loop creates"},
+        {"rule R { match { f: F; x: P; } produce { x; m: P at x.pos; x -[E]- prev.m; } }",
+         "5:68: `prev.m` names a node of a `for` loop's neighbouring turn: only inside `for`"},
+        {"rule R { match { f: F; } produce { for (u, v) in f.sides { m: P at u.pos; n: P at m.pos; } } }",
+         "5:83: `m` is created by this loop; expressions can read only the matched elements and the loop's corners"},
+        {"rule R { match { f: F; } produce { for (u, v) in f.sides { m: P at u.pos { w = u.w }; } } }",
+         "5:82: wildcard node `u` matches any kind, so it has no attribute `w`; only pos, age, id, degree, in_degree, out_degree, faces can be read"},
+        {"rule R { match { f: F; } produce { for (u, v) in f.sides { e: u -[E]- v; } } }",
+         "5:60: elements a loop creates cannot be named (but its nodes)"},
+    };
+    for (const auto& [rule, expected] : cases) {
+        INFO(rule);
+        auto r = compile(head + rule);
+        CHECK(firstError(r) == expected);
+        CHECK_FALSE(r.program.has_value());
+    }
+}
