@@ -14,6 +14,7 @@ Benchmarks:
   koch-oldest / koch-random / koch-parallel  examples/koch_snowflake.g2d, levels 5..10
   sierpinski   the AGTIVE 2007 case (examples/sierpinski.g2d), generations up to 14
   mutex-sts    Varró's mutual exclusion benchmark, STS (bench/grammars/mutex_sts.g2d), n up to 10^6
+  subdivide    faces: examples/subdivide.g2d, a square split into 4^depth quads, depth up to 9
   thesis       the thesis's examples at the original tool's step counts, with
                the speed-up over its measured seconds (../shared/reference/README.md)
 
@@ -262,6 +263,12 @@ def mutex(s, quick):
         s.case("mutex-sts", f"n={n}", grammar, exe, ["-D", f"n={n}"], interpret=n <= 100000)
 
 
+def subdivide(s, quick):
+    grammar, exe = s.build("subdivide", open(os.path.join(ROOT, "examples/subdivide.g2d")).read())
+    for d in ([4, 5] if quick else [5, 7, 9]):
+        s.case("subdivide", f"depth {d}: {4 ** d:,} faces", grammar, exe, ["-D", f"depth={d}"], interpret=d <= 7)
+
+
 def thesis(s, quick):
     for name, (steps, seconds) in ORIGINAL.items():
         grammar, exe = s.build(name, open(os.path.join(ROOT, "examples", name + ".g2d")).read())
@@ -296,14 +303,15 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
     ap.add_argument("--short-repeat", type=int, default=21,
                     help="runs per case when its runs take under 10 ms (default 21)")
-    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "instructions"])
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "instructions"])
     args = ap.parse_args()
     if args.quick:
         args.repeat = args.short_repeat = 1
     s = Suite(args)
     print(f"g2d benchmark suite — {time.strftime('%Y-%m-%d')}, {os.cpu_count()} cores; fastest of {args.repeat}"
           + (f" ({max(args.repeat, args.short_repeat)} for runs under 10 ms)" if args.short_repeat > args.repeat else ""))
-    timed = [(n, fn) for n, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex)]
+    timed = [(n, fn) for n, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex),
+                                     ("subdivide", subdivide)]
              if not args.only or n in args.only]
     if timed:
         print()

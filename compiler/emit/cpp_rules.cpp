@@ -43,7 +43,7 @@ private:
         c.nodeKind = [this, nac](int i) { return ir::slotNodeKind(r_, nac, i); };
         c.edgeKind = [this, nac](int i) { return ir::slotEdge(r_, nac, i).kind; };
         c.face = [](int i) { return "f[" + str(i) + "]"; };
-        c.faceKind = [this](int i) { return r_.faces[static_cast<std::size_t>(i)].kind; };
+        c.faceKind = [this, nac](int i) { return ir::slotFace(r_, nac, i).kind; };
         return c;
     }
 
@@ -309,7 +309,7 @@ private:
 
     std::string nac(int k) {
         const auto& n = r_.nacs[k];
-        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e, const FaceId* f) {\n        (void)f;\n";
+        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e, FaceId* f) {\n        (void)f;\n";
         std::string body;
         steps(match_.negatives[static_cast<std::size_t>(k)], 0, &n, "@@COMPLETE@@", body, "        ");
         body.replace(body.find("@@COMPLETE@@"), 12, "return true;\n");

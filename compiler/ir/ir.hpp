@@ -242,9 +242,10 @@ struct Condition {
 
 struct NegativeCondition {
     // Indices continue after the enclosing match's: node outerNodes+i is nodes[i].
-    int outerNodes = 0, outerEdges = 0;
+    int outerNodes = 0, outerEdges = 0, outerFaces = 0;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
+    std::vector<PatternFace> faces;
     std::vector<Condition> conditions;
     Span span;
 };
@@ -375,6 +376,12 @@ inline int slotNodeKind(const Rule& r, const NegativeCondition* nac, int i) {
 }
 inline const PatternEdge& slotEdge(const Rule& r, const NegativeCondition* nac, int i) {
     return i < static_cast<int>(r.edges.size()) ? r.edges[i] : nac->edges[i - nac->outerEdges];
+}
+inline const PatternFace& slotFace(const Rule& r, const NegativeCondition* nac, int i) {
+    return i < static_cast<int>(r.faces.size()) ? r.faces[i] : nac->faces[i - nac->outerFaces];
+}
+inline const PatternNode& slotNode(const Rule& r, const NegativeCondition* nac, int i) {
+    return i < static_cast<int>(r.nodes.size()) ? r.nodes[i] : nac->nodes[i - nac->outerNodes];
 }
 
 struct Program {

@@ -57,14 +57,18 @@ const T* at(const std::vector<T>& v, int i) {
 // The node attributes `e` reads; `kindOf` gives a node's kind by its index
 // in the rule's numbering (match nodes, then a negative condition's).
 template <class KindOf>
-void readValues(const ir::Expr& e, const KindOf& kindOf, const ir::Rule& rule, std::set<long long>& out) {
+void readValues(const ir::Expr& e, const KindOf& kindOf, const ir::Rule& rule, const ir::NegativeCondition* nac,
+                std::set<long long>& out) {
     if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Node) {
         const int kind = kindOf(e.elem.index);
         if (kind >= 0) out.insert(valueKey(kind, e.index));
     }
-    if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Face)
-        if (const auto* f = at(rule.faces, e.elem.index); f && f->kind >= 0) out.insert(valueKey(f->kind, e.index));
-    for (const auto& a : e.args) readValues(a, kindOf, rule, out);
+    if (e.op == ir::ExprOp::Attr && e.elem.cls == ir::ElemClass::Face) {
+        const int i = e.elem.index, outer = static_cast<int>(rule.faces.size());
+        const ir::PatternFace* f = i < outer ? at(rule.faces, i) : nac ? at(nac->faces, i - nac->outerFaces) : nullptr;
+        if (f && f->kind >= 0) out.insert(valueKey(f->kind, e.index));
+    }
+    for (const auto& a : e.args) readValues(a, kindOf, rule, nac, out);
 }
 
 // The kinds and attributes daughter `d` changes (KindEffects).
@@ -125,21 +129,25 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
     out.readsDegrees = anyReadsDegree(rule.conditions);
     std::set<long long> values;
     const auto matchKind = [&](int i) { return at(rule.nodes, i) ? at(rule.nodes, i)->kind : -1; };
-    for (const auto& c : rule.conditions) readValues(c.expr, matchKind, rule, values);
+    for (const auto& c : rule.conditions) readValues(c.expr, matchKind, rule, nullptr, values);
     for (const auto& nac : rule.nacs) {
         for (const auto& n : nac.nodes) read.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : nac.edges) read.add(e.kind, ir::ElemClass::Edge);
+        for (const auto& f : nac.faces) read.add(f.kind, ir::ElemClass::Face);
         out.readsDegrees = out.readsDegrees || anyReadsDegree(nac.conditions);
         const auto nacKind = [&](int i) {
             return i < nac.outerNodes ? matchKind(i) : at(nac.nodes, i - nac.outerNodes) ? at(nac.nodes, i - nac.outerNodes)->kind : -1;
         };
-        for (const auto& c : nac.conditions) readValues(c.expr, nacKind, rule, values);
+        for (const auto& c : nac.conditions) readValues(c.expr, nacKind, rule, &nac, values);
     }
     // A face's geometry moves with any corner, of any node kind, and
     // removing a node removes its faces; face counts count every face kind.
-    bool facesCounted = anyReadsFaceCounts(rule.conditions);
-    for (const auto& nac : rule.nacs) facesCounted = facesCounted || anyReadsFaceCounts(nac.conditions);
-    if (!rule.faces.empty() || facesCounted) {
+    bool facesCounted = anyReadsFaceCounts(rule.conditions), facePatterns = !rule.faces.empty();
+    for (const auto& nac : rule.nacs) {
+        facesCounted = facesCounted || anyReadsFaceCounts(nac.conditions);
+        facePatterns = facePatterns || !nac.faces.empty();
+    }
+    if (facePatterns || facesCounted) {
         read.add(-1, ir::ElemClass::Node);
         out.readsDegrees = true;
     }

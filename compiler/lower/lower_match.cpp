@@ -29,15 +29,17 @@ public:
             std::vector<int> outerNodes, outerEdges;
             for (int i = 0; i < nac.outerNodes; ++i) outerNodes.push_back(i);
             for (int i = 0; i < nac.outerEdges; ++i) outerEdges.push_back(i);
-            const auto plan = buildSearchPlan(nac.nodes, nac.edges, {}, nac.conditions, nac.outerNodes, nac.outerEdges,
-                                              static_cast<int>(r_.nodes.size()));
+            const auto plan = buildSearchPlan(nac.nodes, nac.edges, nac.faces, nac.conditions, nac.outerNodes, nac.outerEdges,
+                                              static_cast<int>(r_.nodes.size()), -1, nac.outerFaces);
             p.negatives.push_back(list(plan, &nac, outerNodes, outerEdges));
             nodes = std::max(nodes, r_.nodes.size() + nac.nodes.size());
             edges = std::max(edges, r_.edges.size() + nac.edges.size());
         }
         p.nodeSlots = static_cast<int>(std::max<std::size_t>(nodes, 1));
         p.edgeSlots = static_cast<int>(std::max<std::size_t>(edges, 1));
-        p.faceSlots = static_cast<int>(std::max<std::size_t>(r_.faces.size(), 1));
+        std::size_t faces = r_.faces.size();
+        for (const auto& nac : r_.nacs) faces = std::max(faces, r_.faces.size() + nac.faces.size());
+        p.faceSlots = static_cast<int>(std::max<std::size_t>(faces, 1));
         return p;
     }
 
@@ -69,10 +71,10 @@ private:
 
     // The bound node slots a newly bound node must differ from: a face's
     // hidden anchor is no pattern node (any host may be a face's first corner).
-    std::vector<int> distinct(const std::vector<int>& bound) const {
+    std::vector<int> distinct(const std::vector<int>& bound, const ir::NegativeCondition* nac) const {
         std::vector<int> out;
         for (int n : bound)
-            if (n >= static_cast<int>(r_.nodes.size()) || r_.nodes[static_cast<std::size_t>(n)].anchorOf < 0) out.push_back(n);
+            if (ir::slotNode(r_, nac, n).anchorOf < 0) out.push_back(n);
         return out;
     }
 
@@ -80,6 +82,8 @@ private:
                    std::vector<int> boundEdges) const {
         MatchList out;
         std::vector<int> boundFaces;
+        if (nac)
+            for (int i = 0; i < nac->outerFaces; ++i) boundFaces.push_back(i);
         for (const auto& s : plan) {
             // A search keeping only matches that bind a new edge tests that
             // where the pattern's last edge is bound (not in negative conditions).
@@ -91,22 +95,22 @@ private:
                 break;
             }
             case PlanStep::Op::ScanNodes:
-                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(boundNodes),
+                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(boundNodes, nac),
                                         ordered(s.node, boundNodes)});
                 boundNodes.push_back(s.node);
                 break;
             case PlanStep::Op::ExtendEdge: {
                 const auto& pe = edgeOf(s.edge, nac);
                 out.push_back(ExtendEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, s.fromIsSource,
-                                         nodeKind(s.node, nac), boundEdges, distinct(boundNodes), ordered(s.node, boundNodes), lastEdge});
+                                         nodeKind(s.node, nac), boundEdges, distinct(boundNodes, nac), ordered(s.node, boundNodes), lastEdge});
                 boundNodes.push_back(s.node);
                 boundEdges.push_back(s.edge);
                 break;
             }
             case PlanStep::Op::BindFace: {
-                const ir::PatternFace& pf = r_.faces[static_cast<std::size_t>(s.face)];
+                const ir::PatternFace& pf = ir::slotFace(r_, nac, s.face);
                 MatchFace o{s.face, pf.kind, s.from, s.fromCorner, faceSlots(pf), pf.corners.empty(), {}, {},
-                            pf.corners.empty() ? std::vector<int>{} : distinct(boundNodes), boundFaces};
+                            pf.corners.empty() ? std::vector<int>{} : distinct(boundNodes, nac), boundFaces};
                 for (int c : o.corners) {
                     const bool bound = std::find(boundNodes.begin(), boundNodes.end(), c) != boundNodes.end();
                     o.cornerBound.push_back(bound ? 1 : 0);

@@ -14,7 +14,7 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
                                       const std::vector<ir::PatternEdge>& edges,
                                       const std::vector<ir::PatternFace>& faces,
                                       const std::vector<ir::Condition>& conditions, int nodeBase, int edgeBase,
-                                      int boundOuterNodes, int anchor) {
+                                      int boundOuterNodes, int anchor, int faceBase) {
     std::vector<PlanStep> plan;
     std::set<int> boundNodes;
     for (int i = 0; i < boundOuterNodes; ++i) boundNodes.insert(i);
@@ -22,6 +22,7 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
     std::set<int> boundEdges;
     for (int i = 0; i < edgeBase; ++i) boundEdges.insert(i);
     std::set<int> boundFaces;
+    for (int i = 0; i < faceBase; ++i) boundFaces.insert(i);
     std::vector<bool> conditionPlaced(conditions.size(), false);
 
     auto isBound = [&](const ir::ElemRef& r) {
@@ -57,15 +58,15 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
     placeConditions();
     const std::size_t total = nodes.size() + edges.size() + faces.size();
     std::size_t placed = anchor >= 0 ? 1 : 0;
-    // Binds face `fi` from node `from` (its corner `fromCorner`), or by scanning (-1).
+    // Binds faces[fi] from node `from` (its corner `fromCorner`), or by scanning (-1).
     auto bindFace = [&](int fi, int from, int fromCorner) {
         PlanStep s;
         s.op = PlanStep::Op::BindFace;
-        s.face = fi;
+        s.face = faceBase + fi;
         s.from = from;
         s.fromCorner = fromCorner;
         plan.push_back(s);
-        boundFaces.insert(fi);
+        boundFaces.insert(faceBase + fi);
         ++placed;
         for (int c : faceSlots(faces[static_cast<std::size_t>(fi)]))
             if (boundNodes.insert(c).second) ++placed;
@@ -74,7 +75,7 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
         bool progressed = false;
         // 0. A face with a bound corner: its few faces there, and its corners with them.
         for (std::size_t i = 0; i < faces.size() && !progressed; ++i) {
-            if (boundFaces.count(static_cast<int>(i))) continue;
+            if (boundFaces.count(faceBase + static_cast<int>(i))) continue;
             const std::vector<int> slots = faceSlots(faces[i]);
             for (std::size_t c = 0; c < slots.size() && !progressed; ++c)
                 if (boundNodes.count(slots[c])) {
@@ -126,7 +127,7 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
         // 3. Start a new component: a face (its kind's index, and it binds
         // its corners), else the typed node with the most incident edges.
         for (std::size_t i = 0; i < faces.size() && !progressed; ++i)
-            if (!boundFaces.count(static_cast<int>(i))) {
+            if (!boundFaces.count(faceBase + static_cast<int>(i))) {
                 bindFace(static_cast<int>(i), -1, -1);
                 progressed = true;
             }
@@ -177,6 +178,10 @@ int repairRadius(const ir::Rule& rule) {
         auto valid = [&](const ir::PatternEdge& e) { return e.src >= 0 && e.dst >= 0 && e.src < total && e.dst < total; };
         std::vector<int> depth(static_cast<std::size_t>(total), -1);
         for (int i = 0; i < outer; ++i) depth[static_cast<std::size_t>(i)] = 0;
+        // A face joins its corners, as an edge its ends (repair walks both).
+        for (const auto& f : nac.faces)
+            if (f.corners.empty()) return -1;   // any face of its kind, anywhere
+        auto validNode = [&](int n) { return n >= 0 && n < total; };
         for (bool grew = true; grew;) {
             grew = false;
             for (const auto& e : nac.edges) {
@@ -185,6 +190,19 @@ int repairRadius(const ir::Rule& rule) {
                 auto& b = depth[static_cast<std::size_t>(e.dst)];
                 if (a >= 0 && (b < 0 || b > a + 1)) { b = a + 1; grew = true; }
                 if (b >= 0 && (a < 0 || a > b + 1)) { a = b + 1; grew = true; }
+            }
+            for (const auto& f : nac.faces) {
+                int nearest = -1;
+                for (int c : f.corners)
+                    if (validNode(c) && depth[static_cast<std::size_t>(c)] >= 0 &&
+                        (nearest < 0 || depth[static_cast<std::size_t>(c)] < nearest))
+                        nearest = depth[static_cast<std::size_t>(c)];
+                if (nearest < 0) continue;
+                for (int c : f.corners) {
+                    if (!validNode(c)) continue;
+                    auto& d = depth[static_cast<std::size_t>(c)];
+                    if (d < 0 || d > nearest + 1) { d = nearest + 1; grew = true; }
+                }
             }
         }
         for (int d : depth)
@@ -201,6 +219,11 @@ int repairRadius(const ir::Rule& rule) {
         }
         for (const auto& e : nac.edges)
             if (valid(e) && e.src >= outer && e.dst >= outer) radius = std::max(radius, std::min(at(e.src), at(e.dst)));
+        // A face changes for a match at any of its corners (its first corner,
+        // when it moves or its attributes are written; all when it comes or goes).
+        for (const auto& f : nac.faces)
+            for (int c : f.corners)
+                if (validNode(c)) radius = std::max(radius, at(c));
     }
     return radius;
 }

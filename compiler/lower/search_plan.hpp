@@ -33,11 +33,11 @@ struct PlanStep {
 // condition extends its rule's match: nodes below nodeBase and edges below
 // edgeBase are already bound).
 // `anchor` >= 0: that node is bound before the search starts.
-// Faces (the rule's only: negative conditions have none) are bound from a
-// bound corner, or else scanned before any node: a face binds its corners.
+// Faces (numbered from faceBase) are bound from a bound corner, or else
+// scanned before any node: a face binds its corners.
 std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes, const std::vector<ir::PatternEdge>& edges,
                                       const std::vector<ir::PatternFace>& faces, const std::vector<ir::Condition>& conditions,
-                                      int nodeBase, int edgeBase, int boundOuterNodes, int anchor = -1);
+                                      int nodeBase, int edgeBase, int boundOuterNodes, int anchor = -1, int faceBase = 0);
 // A pattern face's node slots in cyclic order: its corners, or its hidden anchor.
 std::vector<int> faceSlots(const ir::PatternFace& f);
 

@@ -253,7 +253,6 @@ public:
         rule_.name = d_.name.name;
         rule_.span = d_.span;
         options();
-        rejectFacesInNacs();
         match();
         items();
         warnUnusedLets();
@@ -301,7 +300,7 @@ private:
             const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
             if (!gs) continue;
             const auto* n = asNode(*gs);
-            if (!n || (!inNac && isCornerlessFace(*n))) continue;
+            if (!n || isCornerlessFace(*n)) continue;
             if (auto prev = findName(n->name.name)) {
                 reportDuplicate(g_, n->name, *prev);
                 continue;
@@ -428,22 +427,12 @@ private:
         return ir::Condition{std::move(*e), std::vector<ElemRef>(deps.begin(), deps.end())};
     }
 
-    // Negative conditions cannot name faces yet (their repair needs faces
-    // in the repair radius).
-    void rejectFacesInNacs() {
-        for (const auto& m : d_.match)
-            if (const auto* nac = std::get_if<ast::NacBlock>(&m.stmt))
-                for (const auto& inner : nac->body)
-                    if (const auto* gs = std::get_if<ast::GraphStmt>(&inner.stmt))
-                        if (const auto* f = asFace(*gs))
-                            g_.diags.error(f->span, "negative conditions cannot name faces yet; test the face's facts "
-                                                    "(`f.neighbours`, `n.faces`, `e.faces`) with `where` instead");
-    }
-
-    // The match's faces, after its nodes and edges: `f: Kind(a, b, c)` on
-    // match nodes, or `f: Kind` (any corner count, bound through a hidden
-    // node at its first corner; see ir::PatternNode::anchorOf).
-    void declarePatternFaces(const std::vector<ast::MatchStmt>& body) {
+    // A match's (or a negative condition's) faces, after its nodes and
+    // edges: `f: Kind(a, b, c)` on its nodes, or `f: Kind` (any corner count,
+    // bound through a hidden node at its first corner, appended to `nodes`;
+    // see ir::PatternNode::anchorOf). Indices continue from faceBase and nodeBase.
+    void declarePatternFaces(const std::vector<ast::MatchStmt>& body, std::vector<ir::PatternFace>& faces,
+                             std::vector<ir::PatternNode>& nodes, int faceBase, int nodeBase, bool inNac) {
         for (const auto& m : body) {
             const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
             const ast::FaceStmt* f = gs ? asFace(*gs) : nullptr;
@@ -461,16 +450,17 @@ private:
             ir::PatternFace pf;
             pf.span = f->span;
             pf.kind = resolveKind(g_, f->kind, ElemClass::Face);
-            if (!f->name) {
+            if (!f->name && !inNac) {
                 g_.diags.error(f->span, "name the matched face (`f: " + f->kind.name + "(…)`): a daughter keeps it by name "
                                         "(`f;`) or deletes it");
                 continue;
             }
-            if (auto prev = findName(f->name->name)) {
-                reportDuplicate(g_, *f->name, *prev);
-                continue;
-            }
-            pf.name = f->name->name;
+            if (f->name)
+                if (auto prev = findName(f->name->name)) {
+                    reportDuplicate(g_, *f->name, *prev);
+                    continue;
+                }
+            if (f->name) pf.name = f->name->name;
             if (!f->assigns.empty())
                 g_.diags.error(f->assigns.front().name.span, "a match cannot assign attributes; test them with `where`");
             if (!f->corners.empty() && f->corners.size() < 3)
@@ -486,29 +476,33 @@ private:
                 }
                 const int idx = nodeIndex(c.name);
                 if (idx < 0) {
-                    if (!isPoisoned(c.name)) g_.diags.error(c.span, "corner `" + c.name + "` is not a node of the match");
+                    if (!isPoisoned(c.name))
+                        g_.diags.error(c.span, "corner `" + c.name + "` is not a node of the match" +
+                                                   (inNac ? " or this negative condition" : ""));
                     ok = false;
                 }
                 pf.corners.push_back(idx);
             }
-            const int index = static_cast<int>(rule_.faces.size());
+            const int index = faceBase + static_cast<int>(faces.size());
             if (ok && pf.corners.empty()) {
                 ir::PatternNode anchor;
                 anchor.kind = -1;
                 anchor.anchorOf = index;
                 anchor.span = f->span;
-                pf.anchor = static_cast<int>(rule_.nodes.size());
-                rule_.nodes.push_back(std::move(anchor));
+                pf.anchor = nodeBase + static_cast<int>(nodes.size());
+                nodes.push_back(std::move(anchor));
             }
             if (!ok) pf.kind = -1;
-            ElemBinding b;
-            b.name = pf.name;
-            b.ref = ElemRef{ElemClass::Face, index};
-            b.kind = pf.kind;
-            b.span = f->name->span;
-            b.poisoned = !ok;
-            bindings_.push_back(b);
-            rule_.faces.push_back(std::move(pf));
+            if (f->name) {
+                ElemBinding b;
+                b.name = pf.name;
+                b.ref = ElemRef{ElemClass::Face, index};
+                b.kind = pf.kind;
+                b.span = f->name->span;
+                b.poisoned = !ok;
+                bindings_.push_back(b);
+            }
+            faces.push_back(std::move(pf));
         }
     }
 
@@ -530,7 +524,7 @@ private:
     void match() {
         declarePatternNodes(d_.match, rule_.nodes, 0, false);
         declarePatternEdges(d_.match, rule_.edges, 0, "the match");
-        declarePatternFaces(d_.match);
+        declarePatternFaces(d_.match, rule_.faces, rule_.nodes, 0, 0, false);
         if (rule_.ordered && !rule_.faces.empty())
             g_.diags.error(rule_.faces.front().span, "an `ordered` rule cannot match faces: a face's corners are bound in "
                                                      "cyclic order, whatever their positions");
@@ -561,6 +555,7 @@ private:
             n.span = nac->span;
             n.outerNodes = static_cast<int>(rule_.nodes.size());
             n.outerEdges = static_cast<int>(rule_.edges.size());
+            n.outerFaces = static_cast<int>(rule_.faces.size());
             for (const auto& inner : nac->body)
                 if (const auto* nested = std::get_if<ast::NacBlock>(&inner.stmt))
                     g_.diags.error(nested->span, "negative conditions (`not { … }`) cannot be nested");
@@ -568,6 +563,7 @@ private:
                 g_.diags.error(nac->span, "empty negative condition: `not { }` would reject every match");
             declarePatternNodes(nac->body, n.nodes, n.outerNodes, true);
             declarePatternEdges(nac->body, n.edges, n.outerEdges, "the match or this negative condition");
+            declarePatternFaces(nac->body, n.faces, n.nodes, n.outerFaces, n.outerNodes, true);
             patternConditions(nac->body, n.conditions);
             // NAC names are visible only inside the NAC.
             for (std::size_t i = outerBindings; i < bindings_.size(); ++i) nacNames_[bindings_[i].name] = bindings_[i].span;

@@ -126,6 +126,9 @@ void IncrementalMatches::region(const Graph& g, int radius, bool values) {
             if (!g.nodeAlive(n)) continue;
             for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) reach(g.target(e));
             for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) reach(g.source(e));
+            // A face joins its corners (lower::repairRadius counts them as near).
+            for (CornerId c = g.firstCornerAt(n); c != kNoId; c = g.nextCornerAt(c))
+                for (CornerId k = g.nextCorner(c); k != c; k = g.nextCorner(k)) reach(g.cornerNode(k));
         }
         begin = end;
     }

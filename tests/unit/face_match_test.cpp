@@ -40,6 +40,9 @@ struct Case {
     std::vector<int> patKind;               // -1: wildcard
     std::vector<PatFace> patFaces;
     int nodeCond = -1, nodeCondMin = 0;     // where p[nodeCond].v > nodeCondMin (typed nodes only)
+    // A negative condition: 1: no face of kind nacKind with v < 3 on (p1, p0, z)
+    // with z an A node outside the match; 2: no face of kind nacKind with v > 2.
+    int nac = 0, nacKind = 0;
 };
 
 const char* nodeKind(int k) { return k == 0 ? "A" : k == 1 ? "B" : "*"; }
@@ -73,6 +76,8 @@ std::string source(const Case& c) {
         s << ";\n";
     }
     if (c.nodeCond >= 0) s << "    where p" << c.nodeCond << ".v > " << c.nodeCondMin << ";\n";
+    if (c.nac == 1) s << "    not { z: A; g: " << faceKind(c.nacKind) << "(p1, p0, z) where g.v < 3; }\n";
+    if (c.nac == 2) s << "    not { g: " << faceKind(c.nacKind) << " where g.v > 2; }\n";
     s << "  }\n  produce {";
     for (std::size_t i = 0; i < c.patKind.size(); ++i) s << " p" << i << ";";
     for (std::size_t i = 0; i < c.patFaces.size(); ++i) s << " f" << i << ";";
@@ -133,6 +138,18 @@ std::set<std::vector<std::uint32_t>> bruteForce(const Case& c) {
                     if (nodes[q] == h) return;
             }
             if (c.nodeCond >= 0 && !(c.hostValue[static_cast<std::size_t>(nodes[static_cast<std::size_t>(c.nodeCond)])] > c.nodeCondMin)) return;
+            for (int h = 0; h < static_cast<int>(c.hostFaces.size()) && c.nac; ++h) {
+                const auto& hf = c.hostFaces[static_cast<std::size_t>(h)];
+                if (hf.kind != c.nacKind || std::find(faces.begin(), faces.end(), h) != faces.end()) continue;
+                if (c.nac == 2 && hf.value > 2) return;
+                if (c.nac != 1 || hf.corners.size() != 3 || !(hf.value < 3)) continue;
+                for (std::size_t r = 0; r < 3; ++r) {
+                    const int z = hf.corners[(r + 2) % 3];
+                    if (hf.corners[r] == nodes[1] && hf.corners[(r + 1) % 3] == nodes[0] && c.hostKind[static_cast<std::size_t>(z)] == 0 &&
+                        std::find(nodes.begin(), nodes.end(), z) == nodes.end())
+                        return;
+                }
+            }
             std::vector<std::uint32_t> m(nodes.begin(), nodes.end());
             for (std::size_t k = 0; k < pf; ++k)
                 if (c.patFaces[k].corners.empty()) m.push_back(static_cast<std::uint32_t>(c.hostFaces[static_cast<std::size_t>(faces[k])].corners[0]));
@@ -224,6 +241,10 @@ Case randomCase(std::mt19937& gen) {
         f.big = pick(4) == 0;
         f.lonely = pick(5) == 0;
     }
+    if (pick(3) == 0) {
+        c.nac = c.patKind.size() >= 2 && pick(2) ? 1 : 2;
+        c.nacKind = pick(2);
+    }
     for (std::size_t i = 0; i < c.patKind.size(); ++i)
         if (c.patKind[i] >= 0 && pick(4) == 0) {
             c.nodeCond = static_cast<int>(i);
@@ -309,4 +330,34 @@ TEST_CASE("incrementally kept face matches equal a full search after every rando
         steps += run.derivation.steps;
     }
     CHECK(steps > 400);   // the rules do rewrite
+}
+
+TEST_CASE("a negative condition's face whose first corner lies outside the match is watched through its corners",
+          "[match][incremental][faces]") {
+    // g's first corner is z, which no edge joins to the match: when Bump
+    // writes g.v, only z is marked, and repair must reach p0 and p1 through
+    // g's corners (lower::repairRadius counts a face as joining them).
+    const std::string text = R"(
+node A;
+node M;
+face F { v: int = 0; }
+face T;
+axiom {
+    a: A at (0, 0); b: A at (1, 0); q: A at (0.5, 1); z: A at (0.5, -1);
+    T(a, b, q);
+    F(z, b, a);
+}
+rule R priority 1 {
+    match { t: T(p0, p1, q); p0: A; p1: A; q: A; not { z: A; g: F(p1, p0, z) where g.v < 1; } }
+    produce { t; p0; p1; q; m: M at t.centroid; }
+}
+rule Bump priority 0 {
+    match { g: F where g.v < 1; }
+    produce { g { v = 1 }; }
+}
+)";
+    auto compiled = test::compile(text);
+    REQUIRE(compiled.program);
+    auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1, test::verified(5));
+    CHECK(run.derivation.steps == 5);   // Bump, then R on every step (it keeps its match)
 }
