@@ -35,6 +35,17 @@ std::string edges(const std::vector<TraceEdge>& v) {
     });
 }
 
+std::string faces(const std::vector<TraceFace>& v) {
+    return array(v, [](const TraceFace& f) { return "[" + std::to_string(f.id) + "," + std::to_string(f.kind) + "," + ids(f.corners) + "]"; });
+}
+
+TraceFace traceFace(const Graph& g, FaceId f) {
+    TraceFace out{f, g.faceKind(f), {}};
+    CornerId c = g.firstCorner(f);
+    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) out.corners.push_back(g.cornerNode(c));
+    return out;
+}
+
 // How a kind is drawn in the player: the resolved style of one of its
 // elements (tag, stroke, stroke width, fill, radius).
 std::string kindStyle(const DrawItem& it) {
@@ -53,9 +64,13 @@ void TraceRecorder::started() {
         if (g.nodeAlive(n)) axiomNodes_.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
     for (EdgeId e = 0; e < g.edgeCapacity(); ++e)
         if (g.edgeAlive(e)) axiomEdges_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
+    for (FaceId f = 0; f < g.faceCapacity(); ++f)
+        if (g.faceAlive(f)) axiomFaces_.push_back(traceFace(g, f));
+    for (const auto& k : g.kinds()) hasFaces_ = hasFaces_ || k.cls == ElemClass::Face;
     axiomDrawing_ = grammar_.drawItems();
     nodeCapacity_ = g.nodeCapacity();
     edgeCapacity_ = g.edgeCapacity();
+    faceCapacity_ = g.faceCapacity();
 }
 
 void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) {
@@ -65,8 +80,11 @@ void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, co
     p.daughter = static_cast<std::uint32_t>(daughter);
     p.nodes.assign(m.nodes, m.nodes + info.nodeKinds.size());
     p.edges.assign(m.edges, m.edges + info.edgeCount);
+    p.faces.assign(m.faces, m.faces + info.faceCount);
+    facesBefore_.insert(facesBefore_.end(), p.faces.begin(), p.faces.end());
     // What the rewrite may delete, move or rewire, as it is now.
     for (NodeId n : p.nodes) {
+        for (CornerId c = g.firstCornerAt(n); c != kNoId; c = g.nextCornerAt(c)) facesBefore_.push_back(g.cornerFace(c));
         placesBefore_.emplace_back(n, g.pos(n));
         for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
         for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
@@ -84,6 +102,7 @@ void TraceRecorder::stepDone(long long step, const Graph& g) {
         s.daughters.push_back(p.daughter);
         s.matchedNodes.insert(s.matchedNodes.end(), p.nodes.begin(), p.nodes.end());
         s.matchedEdges.insert(s.matchedEdges.end(), p.edges.begin(), p.edges.end());
+        s.matchedFaces.insert(s.matchedFaces.end(), p.faces.begin(), p.faces.end());
     }
     auto unique = [](std::vector<std::uint32_t>& v) {
         std::sort(v.begin(), v.end());
@@ -91,6 +110,12 @@ void TraceRecorder::stepDone(long long step, const Graph& g) {
     };
     unique(s.matchedNodes);
     unique(s.matchedEdges);
+    unique(s.matchedFaces);
+    unique(facesBefore_);
+    for (FaceId f : facesBefore_)
+        if (!g.faceAlive(f)) s.deletedFaces.push_back(f);
+    for (FaceId f = static_cast<FaceId>(faceCapacity_); f < g.faceCapacity(); ++f)
+        if (g.faceAlive(f)) s.addedFaces.push_back(traceFace(g, f));
     // Ids are never reused: what is new lies past the old capacities.
     for (NodeId n = static_cast<NodeId>(nodeCapacity_); n < g.nodeCapacity(); ++n)
         if (g.nodeAlive(n)) s.addedNodes.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
@@ -115,8 +140,10 @@ void TraceRecorder::stepDone(long long step, const Graph& g) {
     pending_.clear();
     placesBefore_.clear();
     edgesBefore_.clear();
+    facesBefore_.clear();
     nodeCapacity_ = g.nodeCapacity();
     edgeCapacity_ = g.edgeCapacity();
+    faceCapacity_ = g.faceCapacity();
 }
 
 std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t seed, const std::string& stopped) {
@@ -141,16 +168,21 @@ std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t se
         const auto it = styles.find(static_cast<int>(k));
         out += std::string(k ? "," : "") + "{\"name\":" + jsonString(k < schema.kindNames.size() ? schema.kindNames[k] : "") +
                ",\"edge\":" + (kinds[k].cls == ElemClass::Edge ? "true" : "false") + ",\"directed\":" + (kinds[k].directed ? "true" : "false") +
+               (kinds[k].cls == ElemClass::Face ? ",\"face\":true" : "") +
                ",\"style\":" + (it != styles.end() ? it->second : kindStyle(fallback)) + "}";
     }
-    out += "],\"axiom\":{\"nodes\":" + nodes(axiomNodes_) + ",\"edges\":" + edges(axiomEdges_) + "},\"steps\":[";
+    // Faces only for grammars that declare a face kind: the others' traces stay as they were.
+    auto withFaces = [&](const std::string& text) { return hasFaces_ ? text : std::string(); };
+    out += "],\"axiom\":{\"nodes\":" + nodes(axiomNodes_) + ",\"edges\":" + edges(axiomEdges_) +
+           withFaces(",\"faces\":" + faces(axiomFaces_)) + "},\"steps\":[";
     for (std::size_t i = 0; i < steps_.size(); ++i) {
         const TraceStep& s = steps_[i];
         out += std::string(i ? ",\n" : "\n") + "{\"step\":" + std::to_string(s.step) + ",\"rule\":" + jsonString(s.rule) +
                ",\"daughters\":" + ids(s.daughters) + ",\"matched\":{\"nodes\":" + ids(s.matchedNodes) + ",\"edges\":" +
-               ids(s.matchedEdges) + "},\"deleted\":{\"nodes\":" + ids(s.deletedNodes) + ",\"edges\":" + ids(s.deletedEdges) +
-               "},\"added\":{\"nodes\":" + nodes(s.addedNodes) + ",\"edges\":" + edges(s.addedEdges) + "},\"moved\":" +
-               nodes(s.moved) + ",\"rewired\":" + edges(s.rewired) + "}";
+               ids(s.matchedEdges) + withFaces(",\"faces\":" + ids(s.matchedFaces)) + "},\"deleted\":{\"nodes\":" + ids(s.deletedNodes) +
+               ",\"edges\":" + ids(s.deletedEdges) + withFaces(",\"faces\":" + ids(s.deletedFaces)) +
+               "},\"added\":{\"nodes\":" + nodes(s.addedNodes) + ",\"edges\":" + edges(s.addedEdges) +
+               withFaces(",\"faces\":" + faces(s.addedFaces)) + "},\"moved\":" + nodes(s.moved) + ",\"rewired\":" + edges(s.rewired) + "}";
     }
     return out + "\n]}\n";
 }

@@ -46,20 +46,23 @@ const frameCount = Math.ceil(steps.length / perFrame);   // frame f (1..) ends w
 const COLORS = { added: "#1a9e3a", deleted: "#d62728", matched: "#ff8c00", moved: "#1f77b4" };
 const SVGNS = "http://www.w3.org/2000/svg";
 
-function emptyState() { return { nodes: new Map(), edges: new Map() }; }
-function copyState(s) { return { nodes: new Map(s.nodes), edges: new Map(s.edges) }; }
+function emptyState() { return { nodes: new Map(), edges: new Map(), faces: new Map() }; }
+function copyState(s) { return { nodes: new Map(s.nodes), edges: new Map(s.edges), faces: new Map(s.faces) }; }
 function applyStep(state, st) {
+  for (const id of st.deleted.faces || []) state.faces.delete(id);
   for (const id of st.deleted.edges) state.edges.delete(id);
   for (const id of st.deleted.nodes) state.nodes.delete(id);
   for (const [id, kind, x, y] of st.added.nodes) state.nodes.set(id, { kind, x, y });
   for (const [id, kind, x, y] of st.moved) state.nodes.set(id, { kind, x, y });
   for (const [id, kind, src, dst] of st.added.edges) state.edges.set(id, { kind, src, dst });
   for (const [id, kind, src, dst] of st.rewired) state.edges.set(id, { kind, src, dst });
+  for (const [id, kind, corners] of st.added.faces || []) state.faces.set(id, { kind, corners });
 }
 
 const axiom = emptyState();
 for (const [id, kind, x, y] of trace.axiom.nodes) axiom.nodes.set(id, { kind, x, y });
 for (const [id, kind, src, dst] of trace.axiom.edges) axiom.edges.set(id, { kind, src, dst });
+for (const [id, kind, corners] of trace.axiom.faces || []) axiom.faces.set(id, { kind, corners });
 
 // Snapshots every 50 frames, made on the way, so that seeking stays quick.
 const checkpoints = new Map([[0, copyState(axiom)]]);
@@ -82,6 +85,9 @@ function marks(frame) {
     const st = steps[i];
     st.matched.nodes.forEach((id) => m.matched.add("n" + id));
     st.matched.edges.forEach((id) => m.matched.add("e" + id));
+    (st.matched.faces || []).forEach((id) => m.matched.add("f" + id));
+    (st.deleted.faces || []).forEach((id) => m.deleted.add("f" + id));
+    ((st.added.faces) || []).forEach(([id]) => m.added.add("f" + id));
     st.deleted.nodes.forEach((id) => m.deleted.add("n" + id));
     st.deleted.edges.forEach((id) => m.deleted.add("e" + id));
     st.added.nodes.forEach(([id]) => m.added.add("n" + id));
@@ -131,6 +137,20 @@ function draw(frame) {
       stroke: mark ? COLORS[mark] : style.stroke, "stroke-width": style.stroke_width,
       "data-id": "n" + id, class: "node " + mark }));
   };
+  // Faces below edges and nodes, as the SVG draws them.
+  const drawFace = (id, f, nodes, mark) => {
+    const points = f.corners.map((c) => nodes.get(c));
+    if (points.some((p) => !p)) return;
+    const style = trace.kinds[f.kind].style;
+    if (style.tag === "none" && !mark) return;
+    layer.appendChild(el("polygon", { points: points.map((p) => `${p.x},${p.y}`).join(" "),
+      fill: style.fill, "fill-opacity": mark === "deleted" ? 0.35 : 1,
+      stroke: mark ? COLORS[mark] : style.stroke, "stroke-width": mark ? 3 * unit : style.stroke_width,
+      "stroke-dasharray": mark === "deleted" ? `${4 * unit} ${3 * unit}` : "none",
+      "data-id": "f" + id, class: "face " + mark }));
+  };
+  for (const [id, f] of state.faces) drawFace(id, f, state.nodes, markOf("f" + id));
+  for (const [id, f] of before.faces) if (m.deleted.has("f" + id)) drawFace(id, f, before.nodes, "deleted");
   for (const [id, e] of state.edges) drawEdge(id, e, state.nodes, markOf("e" + id));
   for (const [id, e] of before.edges) if (m.deleted.has("e" + id)) drawEdge(id, e, before.nodes, "deleted");
   for (const [id, n] of state.nodes) drawNode(id, n, markOf("n" + id));

@@ -75,6 +75,38 @@ assert l["atLoad"]["lines"] >= 3 * 4 ** 6, l["atLoad"]
 print("page checks passed")
 PY
 
+# Faces: the axiom's twelve panes as polygons; a split draws the pane it
+# deletes dashed and the two it adds marked.
+expect_code 0 "$g2d" run "$src/examples/stained_glass.g2d" -D smallest=0.2 -o glass.svg --trace glass.html
+cat > faces.html <<'HTML'
+<!DOCTYPE html><html><body><pre id="result">pending</pre>
+<iframe id="glass" src="glass.html" width="1000" height="700"></iframe>
+<script>
+document.getElementById("glass").addEventListener("load", () => {
+  const w = document.getElementById("glass").contentWindow, d = w.document, t = w.g2dTrace;
+  const look = () => ({ frame: t.frame, polygons: d.querySelectorAll("#stage polygon").length,
+    added: d.querySelectorAll("#stage polygon.added").length, deleted: d.querySelectorAll("#stage polygon.deleted").length });
+  const r = {};
+  try {
+    t.go(0); r.axiom = look();
+    d.getElementById("next").click(); r.next = look();
+  } catch (e) { r.error = String(e); }
+  document.getElementById("result").textContent = JSON.stringify(r);
+});
+</script></body></html>
+HTML
+browse faces.html > faces_dom.html
+python3 - faces_dom.html <<'PY' || fail "faces in the page"
+import html, json, re, sys
+m = re.search(r'<pre id="result">(.*?)</pre>', open(sys.argv[1]).read(), re.S)
+assert m and m.group(1) != "pending", "the harness did not finish"
+r = json.loads(html.unescape(m.group(1)))
+assert "error" not in r, r
+assert r["axiom"] == {"frame": 0, "polygons": 12, "added": 0, "deleted": 0}, r["axiom"]
+assert r["next"] == {"frame": 1, "polygons": 13 + 1, "added": 2, "deleted": 1}, r["next"]
+print("face checks passed")
+PY
+
 # A screenshot of the page, kept as a test artefact.
 mkdir -p "$artifacts"
 rm -f "$artifacts/trace_page.png"

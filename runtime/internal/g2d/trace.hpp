@@ -24,6 +24,12 @@ struct TraceEdge {
     std::uint32_t src, dst;
 };
 
+struct TraceFace {
+    std::uint32_t id;
+    int kind;
+    std::vector<std::uint32_t> corners;
+};
+
 struct TraceStep {
     long long step = 0;
     std::string rule;
@@ -32,6 +38,8 @@ struct TraceStep {
     std::vector<std::uint32_t> deletedNodes, deletedEdges;
     std::vector<TraceNode> addedNodes, moved;       // moved: kept nodes at their new place
     std::vector<TraceEdge> addedEdges, rewired;     // rewired: kept edges with new ends
+    std::vector<std::uint32_t> matchedFaces, deletedFaces;
+    std::vector<TraceFace> addedFaces;
 };
 
 class TraceRecorder : public StepTracer {
@@ -51,18 +59,21 @@ private:
     struct Pending {
         std::string rule;
         std::uint32_t daughter;
-        std::vector<std::uint32_t> nodes, edges;
+        std::vector<std::uint32_t> nodes, edges, faces;
     };
     GrammarRun& grammar_;
     std::vector<TraceNode> axiomNodes_;
     std::vector<TraceEdge> axiomEdges_;
+    std::vector<TraceFace> axiomFaces_;
     std::vector<DrawItem> axiomDrawing_;
     std::vector<TraceStep> steps_;
     std::vector<Pending> pending_;
     // Before the step: the matched nodes' places and the edges at them (any may go).
     std::vector<std::pair<std::uint32_t, vec2>> placesBefore_;
     std::vector<TraceEdge> edgesBefore_;
-    std::size_t nodeCapacity_ = 0, edgeCapacity_ = 0;
+    std::vector<std::uint32_t> facesBefore_;   // and the faces at them, and the matched ones
+    std::size_t nodeCapacity_ = 0, edgeCapacity_ = 0, faceCapacity_ = 0;
+    bool hasFaces_ = false;                    // the grammar declares a face kind (else no "faces" keys)
 };
 
 // The self-contained page: the trace, the final SVG, and a player.
