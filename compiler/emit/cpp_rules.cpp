@@ -309,7 +309,7 @@ private:
 
     std::string nac(int k) {
         const auto& n = r_.nacs[k];
-        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e, FaceId* f) {\n        (void)f;\n";
+        std::string out = "    bool nac_" + ri_ + "_" + str(k) + "(const Graph& g, NodeId* n, EdgeId* e, FaceId* f) {\n        (void)e;\n        (void)f;\n";
         std::string body;
         steps(match_.negatives[static_cast<std::size_t>(k)], 0, &n, "@@COMPLETE@@", body, "        ");
         body.replace(body.find("@@COMPLETE@@"), 12, "return true;\n");
