@@ -793,14 +793,7 @@ private:
                 }
                 if (!n->position && n->sketch) dg.autoPlacement = true;
                 newNodes[dn.name] = static_cast<int>(dg.nodes.size());
-                ElemBinding b;
-                b.name = dn.name;
-                b.ref = ElemRef{ElemClass::Node, -1};
-                b.kind = dn.kind;
-                b.span = n->name.span;
-                b.unreadable = "`" + dn.name + "` is created by this production; expressions can read only the "
-                                                "matched elements (their values before the step)";
-                elems.push_back(b);
+                elems.push_back(newNodeBinding(n->name, dn.kind, "this production", "the matched elements (their values before the step)"));
             }
             pendingNodes.push_back({n, static_cast<int>(dg.nodes.size())});
             dg.nodes.push_back(std::move(dn));
@@ -984,6 +977,17 @@ private:
         dg.faces.push_back(std::move(df));
     }
 
+    // A node the daughter (or a loop of it) creates: named, not readable.
+    static ElemBinding newNodeBinding(const ast::Ident& name, int kind, const std::string& creator, const std::string& readable) {
+        ElemBinding b;
+        b.name = name.name;
+        b.ref = ElemRef{ElemClass::Node, -1};
+        b.kind = kind;
+        b.span = name.span;
+        b.unreadable = "`" + name.name + "` is created by " + creator + "; expressions can read only " + readable;
+        return b;
+    }
+
     // `for (u, v) in f.sides { … }` or `for c in f.corners { … }`: what each
     // turn creates, on the turn's corners, the daughter's nodes, its own new
     // nodes and the neighbouring turns' (`prev.m`, `next.m`).
@@ -1062,14 +1066,7 @@ private:
             }
             if (n->where) g_.diags.error(n->where->span, "conditions (`where`) belong in the match");
             locals[ln.name] = static_cast<int>(loop.nodes.size());
-            ElemBinding b;
-            b.name = ln.name;
-            b.ref = ElemRef{ElemClass::Node, -1};
-            b.kind = ln.kind;
-            b.span = n->name.span;
-            b.unreadable = "`" + ln.name + "` is created by this loop; expressions can read only the matched elements and "
-                                           "the loop's corners";
-            loopElems.push_back(b);
+            loopElems.push_back(newNodeBinding(n->name, ln.kind, "this loop", "the matched elements and the loop's corners"));
             localStmts.push_back(n);
             loop.nodes.push_back(std::move(ln));
         }
