@@ -70,6 +70,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     out += in + "info.kindsKnown = " + (i.kindsKnown ? "true" : "false") + ";\n";
     out += in + "info.readKinds = " + vectorLiteral(i.readKinds) + ";\n";
     out += in + "info.readsDegrees = " + (i.readsDegrees ? "true" : "false") + ";\n";
+    out += in + "info.readsNeighbours = " + (i.readsNeighbours ? "true" : "false") + ";\n";
     out += in + "info.readValues = " + vectorLiteral(i.readValues) + ";\n";
     for (std::size_t d = 0; d < i.changedKinds.size(); ++d) {
         out += in + "info.changedKinds.push_back(" + vectorLiteral(i.changedKinds[d]) + ");\n";

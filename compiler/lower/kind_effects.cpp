@@ -37,6 +37,11 @@ bool anyReadsDegree(const std::vector<ir::Condition>& conditions) {
     return std::any_of(conditions.begin(), conditions.end(), [](const ir::Condition& c) { return readsDegree(c.expr); });
 }
 
+bool readsFact(const ir::Expr& e, ir::ElemFact fact) {
+    if (e.op == ir::ExprOp::Fact && e.fact == fact) return true;
+    return std::any_of(e.args.begin(), e.args.end(), [&](const ir::Expr& a) { return readsFact(a, fact); });
+}
+
 // Facts counting faces of any kind around an element.
 bool readsFaceCounts(const ir::Expr& e) {
     if (e.op == ir::ExprOp::Fact &&
@@ -152,6 +157,11 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
         out.readsDegrees = true;
     }
     if (facesCounted) read.add(-1, ir::ElemClass::Face);
+    auto neighbours = [](const std::vector<ir::Condition>& cs) {
+        return std::any_of(cs.begin(), cs.end(), [](const ir::Condition& c) { return readsFact(c.expr, ir::ElemFact::Neighbours); });
+    };
+    out.readsNeighbours = neighbours(rule.conditions);
+    for (const auto& nac : rule.nacs) out.readsNeighbours = out.readsNeighbours || neighbours(nac.conditions);
     out.readValues.assign(values.begin(), values.end());
     // A degree counts the edges of every kind.
     if (out.readsDegrees) read.add(-1, ir::ElemClass::Edge);

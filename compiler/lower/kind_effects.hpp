@@ -23,6 +23,7 @@ struct KindEffects {
     // condition reads a degree (readsDegrees). Sorted.
     std::vector<int> readKinds;
     bool readsDegrees = false;
+    bool readsNeighbours = false;                   // a condition reads a face's `neighbours`
     // The node attributes its conditions (and its negative conditions')
     // read, as valueKey. Sorted.
     std::vector<long long> readValues;

@@ -31,6 +31,7 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     KindEffects effects = kindEffects(r, prog.kinds);
     info.readKinds = std::move(effects.readKinds);
     info.readsDegrees = effects.readsDegrees;
+    info.readsNeighbours = effects.readsNeighbours;
     info.readValues = std::move(effects.readValues);
     info.changedKinds = std::move(effects.changedKinds);
     info.changedValues = std::move(effects.changedValues);

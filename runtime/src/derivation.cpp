@@ -167,6 +167,9 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             const StepObserver& observer, StepTracer* tracer) {
     result = DerivationResult{};
     std::map<long long, Group> byPriority;
+    bool neighbours = false;
+    for (std::size_t r = 0; r < rules.ruleCount(); ++r) neighbours = neighbours || rules.info(r).readsNeighbours;
+    g.trackNeighbours(neighbours);
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const long long p = rules.info(r).priority;
         auto& grp = byPriority[p];

@@ -47,14 +47,14 @@ FaceId Graph::addFace(int kind, std::span<const NodeId> corners, long long age) 
     dirtyFaces_.push_back(id);
     faces_[id].marks |= kFaceChanged;
     ++liveFaces_;
-    touchNeighbourAnchors(id);
+    if (trackNeighbours_) touchNeighbourAnchors(id);
     return id;
 }
 
 void Graph::removeFace(FaceId f) {
     FaceRec& rec = faces_[f];
     if (!rec.alive) return;
-    touchNeighbourAnchors(f);
+    if (trackNeighbours_) touchNeighbourAnchors(f);
     CornerId c = rec.firstCorner;
     for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) {
         CornerRec& cr = corners_[c];

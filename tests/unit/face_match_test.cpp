@@ -361,3 +361,27 @@ rule Bump priority 0 {
     auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1, test::verified(5));
     CHECK(run.derivation.steps == 5);   // Bump, then R on every step (it keeps its match)
 }
+
+TEST_CASE("a face matched by its first corner loses its match when a neighbour comes on another side",
+          "[match][incremental][faces]") {
+    // f's first corner is a; Add's triangle shares f's side b-c only, so
+    // only f's neighbour count tells Lonely that f is no longer alone.
+    const std::string text = R"(
+node A;
+face F;
+face T;
+axiom { a: A at (0, 0); b: A at (1, 0); c: A at (0, 1); d: A at (1, 1); F(a, b, c); }
+rule Add {
+    match { b: A where b.id == 1; c: A where c.id == 2; d: A where d.id == 3; not { t: T; } }
+    produce { b; c; d; T(c, b, d); }
+}
+rule Lonely priority 1 {
+    match { f: F where f.neighbours == 0; }
+    produce { f; m: A at f.centroid; }
+}
+)";
+    auto compiled = test::compile(text);
+    REQUIRE(compiled.program);
+    auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1, test::verified(5));
+    CHECK(run.derivation.steps == 1);   // Add; then f has a neighbour and nothing matches
+}

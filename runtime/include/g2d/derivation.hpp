@@ -78,6 +78,9 @@ struct RuleInfo {
     bool kindsKnown = false;
     std::vector<int> readKinds;                     // sorted
     bool readsDegrees = false;                      // so removing any edge at a match node matters
+    // Whether a condition reads a face's `neighbours`: only then does adding
+    // or removing a face mark its neighbours' anchors (Graph::trackNeighbours).
+    bool readsNeighbours = true;
     std::vector<long long> readValues;              // sorted
     std::vector<std::vector<int>> changedKinds;     // per daughter, sorted
     std::vector<std::vector<long long>> changedValues;   // per daughter, sorted

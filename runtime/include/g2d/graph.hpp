@@ -239,6 +239,9 @@ public:
     // or removing a face marks its corners and its neighbours' first corners
     // (their `neighbours` changed).
     NodeId anchorOf(FaceId f) const { return cornerNode(firstCorner(f)); }
+    // Whether adding or removing a face marks its neighbours' anchors (some
+    // rule reads `neighbours`; the derivation sets it; on by default).
+    void trackNeighbours(bool on) { trackNeighbours_ = on; }
     void touchFaceValues(FaceId f) {
         touchFace(f);
         touchNodeValues(anchorOf(f));
@@ -385,6 +388,7 @@ private:
     }
     std::uint32_t newAttrBlock(int kind, std::vector<Value>* attrs);
     bool valuesWritten_ = false;
+    bool trackNeighbours_ = true;
     void clearAttrBlock(int kind, std::uint32_t slot);
     inline void link(EdgeId e);
     inline void unlink(EdgeId e);
