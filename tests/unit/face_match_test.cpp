@@ -385,3 +385,24 @@ rule Lonely priority 1 {
     auto run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1, test::verified(5));
     CHECK(run.derivation.steps == 1);   // Add; then f has a neighbour and nothing matches
 }
+
+TEST_CASE("signed_area tells a clockwise face from a counter-clockwise one", "[match][faces]") {
+    const std::string text = R"(
+node A;
+face F;
+axiom { a: A at (0, 0); b: A at (2, 0); c: A at (0, 1); F(a, b, c); F(a, c, b); }
+limit 0;
+rule Clockwise { match { f: F where f.signed_area < 0 and f.area == -f.signed_area; } produce { f; } }
+)";
+    auto compiled = test::compile(text);
+    REQUIRE(compiled.program);
+    rt::Rng rng(1);
+    auto [st, g] = test::startInterpreter(*compiled.program, rng);
+    interp::InterpretedRules rules(st);
+    rt::MatchBuffer found;
+    found.reset(1, 0, 1);
+    rules.findMatches(0, g, found);
+    REQUIRE(found.size() == 1);
+    CHECK(found[0].faces[0] == 1);   // F(a, c, b), of area -1
+    CHECK(g.signedArea(1) == -1.0);
+}

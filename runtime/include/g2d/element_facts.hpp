@@ -32,6 +32,8 @@ constexpr std::uint8_t classBit(ElemClass c) {
     X(Direction, direction, vec2, "vec2", kOnEdges, "the unit vector from the edge's source to its target")          \
     X(Corners, corners, long long, "int", kOnFaces, "the face's corner count")                                       \
     X(Area, area, double, "float", kOnFaces, "the face's area (by its corners' positions)")                          \
+    X(SignedArea, signed_area, double, "float", kOnFaces,                                                            \
+      "the face's area, positive when its corners run counter-clockwise (y up)")                                     \
     X(Perimeter, perimeter, double, "float", kOnFaces, "the face's perimeter")                                       \
     X(Centroid, centroid, vec2, "vec2", kOnFaces, "the mean of the face's corners (as G^3 defines it)")              \
     X(Neighbours, neighbours, long long, "int", kOnFaces, "the faces sharing a side with the face")
@@ -74,6 +76,7 @@ inline double length(const Graph& g, ElemClass, std::uint32_t id) { return finit
 inline vec2 direction(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.pos(g.target(id)) - g.pos(g.source(id))); }
 inline long long corners(const Graph& g, ElemClass, std::uint32_t id) { return g.cornerCount(id); }
 inline double area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.area(id)); }
+inline double signed_area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.signedArea(id)); }
 inline double perimeter(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.perimeter(id)); }
 inline vec2 centroid(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid(id)); }
 inline long long neighbours(const Graph& g, ElemClass, std::uint32_t id) { return g.neighbourCount(id); }
