@@ -50,6 +50,8 @@ struct DrawEdge {
 struct DrawFace {
     std::vector<int> corners;     // indices into the panel's nodes
     std::string label;
+    const char* stroke = "#9a86c0";
+    bool dashed = false;
 };
 struct Panel {
     std::string caption;
@@ -69,6 +71,10 @@ void circleLayout(std::vector<DrawNode>& nodes, std::size_t from, double radius)
 }
 
 std::string kindName(const ir::Program& prog, int kind) { return kind < 0 ? "*" : prog.kinds[static_cast<std::size_t>(kind)].name; }
+// A face of any corner count, drawn as the node its match is pinned to (its first corner).
+std::string faceLabel(const ir::Program& prog, const ir::PatternFace& f) {
+    return (f.name.empty() ? "" : f.name + ": ") + kindName(prog, f.kind) + " (any corners)";
+}
 bool directed(const ir::Program& prog, int kind) { return kind >= 0 && prog.kinds[static_cast<std::size_t>(kind)].directed; }
 
 std::string drawPanel(const Panel& p, double left, double top) {
@@ -95,7 +101,8 @@ std::string drawPanel(const Panel& p, double left, double top) {
             cx += sx(n.x) / static_cast<double>(f.corners.size());
             cy += sy(n.y) / static_cast<double>(f.corners.size());
         }
-        out += "<polygon points=\"" + points + "\" fill=\"#e8e0f4\" stroke=\"#9a86c0\" stroke-width=\"1\"/>\n";
+        out += "<polygon points=\"" + points + "\" fill=\"#e8e0f4\" stroke=\"" + std::string(f.stroke) + "\" stroke-width=\"1\"" +
+               (f.dashed ? " stroke-dasharray=\"4 3\"" : "") + "/>\n";
         out += "<text x=\"" + num(cx) + "\" y=\"" + num(cy) + "\" text-anchor=\"middle\" font-size=\"9\" fill=\"#6a5890\">" +
                xmlEscape(f.label) + "</text>\n";
     }
@@ -158,7 +165,7 @@ Panel motherPanel(const ir::Program& prog, const ir::Rule& r, const std::vector<
     for (std::size_t i = 0; i < r.nodes.size(); ++i) {
         const auto& n = r.nodes[i];
         DrawNode d;
-        d.label = n.name + ": " + kindName(prog, n.kind);
+        d.label = n.anchorOf >= 0 ? faceLabel(prog, r.faces[static_cast<std::size_t>(n.anchorOf)]) : n.name + ": " + kindName(prog, n.kind);
         d.color = keptAnywhere[i] ? kKept : kDeleted;
         d.dashed = !keptAnywhere[i];
         if (n.sketch) { d.x = n.sketch->x; d.y = n.sketch->y; } else sketched = false;
@@ -173,13 +180,28 @@ Panel motherPanel(const ir::Program& prog, const ir::Rule& r, const std::vector<
         p.edges.push_back(DrawEdge{e.src, e.dst, (e.name.empty() ? "" : e.name + ": ") + kindName(prog, e.kind), directed(prog, e.kind),
                                    kept ? kKept : kDeleted, !kept});
     }
+    for (std::size_t i = 0; i < r.faces.size(); ++i) {
+        const auto& f = r.faces[i];
+        if (f.corners.empty()) continue;   // drawn as its anchor node
+        bool kept = false;
+        for (const auto& d : r.daughters)
+            for (const auto& k : d.keptFaces) kept = kept || k.motherFace == static_cast<int>(i);
+        p.faces.push_back(DrawFace{f.corners, f.name + ": " + kindName(prog, f.kind), kept ? kKept : kDeleted, !kept});
+    }
     for (const auto& nac : r.nacs) {
         const std::size_t first = p.nodes.size();
-        for (const auto& n : nac.nodes) p.nodes.push_back(DrawNode{"not " + n.name + ": " + kindName(prog, n.kind), 0, 0, kNegative, true});
+        for (const auto& n : nac.nodes) {
+            const std::string label = n.anchorOf >= 0 ? faceLabel(prog, nac.faces[static_cast<std::size_t>(n.anchorOf - nac.outerFaces)])
+                                                      : n.name + ": " + kindName(prog, n.kind);
+            p.nodes.push_back(DrawNode{"not " + label, 0, 0, kNegative, true});
+        }
         circleLayout(p.nodes, first, 1.8);
         for (std::size_t i = first; i < p.nodes.size(); ++i) p.nodes[i].y -= 0.4;   // off the mother's circle
         for (const auto& e : nac.edges)
             p.edges.push_back(DrawEdge{e.src, e.dst, "not " + kindName(prog, e.kind), directed(prog, e.kind), kNegative, true});
+        for (const auto& f : nac.faces)
+            if (!f.corners.empty())
+                p.faces.push_back(DrawFace{f.corners, "not " + (f.name.empty() ? "" : f.name + ": ") + kindName(prog, f.kind), kNegative, true});
     }
     return p;
 }
@@ -191,6 +213,11 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
     for (const auto& n : d.nodes) {
         DrawNode dn;
         dn.label = n.name + ": " + kindName(prog, n.kind >= 0 ? n.kind : (n.motherNode >= 0 ? r.nodes[static_cast<std::size_t>(n.motherNode)].kind : -1));
+        if (n.motherNode >= 0 && r.nodes[static_cast<std::size_t>(n.motherNode)].anchorOf >= 0) {
+            const int face = r.nodes[static_cast<std::size_t>(n.motherNode)].anchorOf;
+            const bool kept = std::any_of(d.keptFaces.begin(), d.keptFaces.end(), [&](const ir::KeptFace& k) { return k.motherFace == face; });
+            dn.label = kept ? faceLabel(prog, r.faces[static_cast<std::size_t>(face)]) : "(a deleted face's first corner)";
+        }
         const bool kept = n.motherNode >= 0;
         dn.color = kept ? kKept : kNew;
         if (kept) {   // a kept node keeps its place, so the mapping reads across
@@ -240,7 +267,22 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
                                    e.motherEdge >= 0 ? kKept : kNew});
     for (const auto& f : d.faces) {
         if (std::find(f.corners.begin(), f.corners.end(), -1) != f.corners.end()) continue;
-        p.faces.push_back(DrawFace{f.corners, (f.name.empty() ? "" : f.name + ": ") + kindName(prog, f.kind)});
+        p.faces.push_back(DrawFace{f.corners, (f.name.empty() ? "" : f.name + ": ") + kindName(prog, f.kind), kNew});
+    }
+    for (const auto& k : d.keptFaces) {   // on the daughter nodes keeping its corners
+        const auto& mf = r.faces[static_cast<std::size_t>(k.motherFace)];
+        std::vector<int> corners;
+        for (int c : mf.corners)
+            for (std::size_t i = 0; i < d.nodes.size(); ++i)
+                if (d.nodes[i].motherNode == c) corners.push_back(static_cast<int>(i));
+        if (!mf.corners.empty() && corners.size() == mf.corners.size()) p.faces.push_back(DrawFace{corners, mf.name + ": " + kindName(prog, mf.kind), kKept});
+    }
+    // A loop's elements exist only per turn: said in words.
+    for (const auto& l : d.loops) {
+        const auto& f = r.faces[static_cast<std::size_t>(l.motherFace)];
+        auto count = [](std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+        p.caption += std::string(" · for each ") + (l.sides ? "side" : "corner") + " of " + f.name + ": " + count(l.nodes.size(), "node") +
+                     ", " + count(l.edges.size(), "edge") + ", " + count(l.faces.size(), "face");
     }
     return p;
 }
