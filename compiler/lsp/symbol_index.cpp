@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <set>
 
 namespace g2d::lsp {
 
@@ -136,6 +137,12 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
                 decl.decl);
         }
     }
+    // `f: Room;` in a match, Room a face kind, declares a face (of any corner count).
+    std::set<std::string> faceKinds;
+    for (const auto& s : symbols_)
+        if (s.kind == SymbolKind::FaceKind) faceKinds.insert(s.name);
+    for (auto& s : symbols_)
+        if (s.kind == SymbolKind::PatternNode && faceKinds.count(s.typeName)) s.kind = SymbolKind::Face;
 }
 
 std::vector<const Symbol*> SymbolIndex::visible(FileId file, std::uint32_t line, std::uint32_t col) const {

@@ -156,6 +156,32 @@ labels = {i["label"] for i in items}
 check({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} <= labels,
       "completion in a daughter: missing %s" % ({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} - labels))
 
+# A face of any corner count (`f: Room;`, written like a node): hover and completion know it is a face.
+face_path = os.path.join(work, "faces.g2d")
+face_uri = "file://" + face_path
+face_text = """node P;
+face Room { level: int = 0; }
+axiom { a: P at (0, 0); b: P at (1, 0); c: P at (0, 1); Room(a, b, c); }
+rule R {
+    match { f: Room where f.level < 2; }
+    produce { f { level = f.level + 1 }; }
+}
+"""
+with open(face_path, "w") as f:
+    f.write(face_text)
+c.notify("textDocument/didOpen", {"textDocument": {"uri": face_uri, "languageId": "g2d", "version": 1, "text": face_text}})
+d = c.diagnostics()
+check(d["diagnostics"] == [], "the face grammar has no diagnostics: %s" % d["diagnostics"])
+face_doc = {"uri": face_uri}
+face_line = face_text.splitlines()[4]
+h = c.request("textDocument/hover", {"textDocument": face_doc, "position": {"line": 4, "character": face_line.index("f:")}})["result"]
+check(h and "face" in h["contents"]["value"] and "`Room`" in h["contents"]["value"], "hover on a matched face: %s" % h)
+items = c.request("textDocument/completion", {"textDocument": face_doc,
+                                               "position": {"line": 4, "character": face_line.index("level")}})["result"]
+labels = {i["label"] for i in items}
+check(labels == {"level", "age", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours"},
+      "completion after f.: %s" % labels)
+
 unknown = c.request("textDocument/formatting", {"textDocument": doc, "options": {}})
 check(unknown.get("error", {}).get("code") == -32601, "unknown request: %s" % unknown)
 
