@@ -4,8 +4,71 @@
 #include <set>
 
 #include "G2dLexer.h"
+#include "diag/suggest.hpp"
 
 namespace g2d {
+
+namespace {
+
+// The default-channel token `offset` tokens from `t` (negative: before), or
+// null (the parser's stream holds every token: parse() fills it first).
+antlr4::Token* neighbour(antlr4::Parser* parser, antlr4::Token* t, int offset) {
+    auto* stream = parser ? dynamic_cast<antlr4::BufferedTokenStream*>(parser->getInputStream()) : nullptr;
+    if (!stream || !t || t->getTokenIndex() == static_cast<size_t>(-1)) return nullptr;
+    long i = static_cast<long>(t->getTokenIndex());
+    const int step = offset < 0 ? -1 : 1;
+    for (int left = offset < 0 ? -offset : offset; left > 0;) {
+        i += step;
+        if (i < 0 || i >= static_cast<long>(stream->size())) return nullptr;
+        if (stream->get(static_cast<size_t>(i))->getChannel() == antlr4::Token::DEFAULT_CHANNEL) --left;
+    }
+    antlr4::Token* n = stream->get(static_cast<size_t>(i));
+    return n->getType() == antlr4::Token::EOF ? nullptr : n;
+}
+
+// Whether `t` stands in a `where` condition: a `where` before it in its statement.
+bool inCondition(antlr4::Parser* parser, antlr4::Token* t) {
+    for (int k = 1; k < 64; ++k) {
+        antlr4::Token* p = neighbour(parser, t, -k);
+        if (!p || p->getText() == ";" || p->getText() == "{" || p->getText() == "}") return false;
+        if (p->getText() == "where") return true;
+    }
+    return false;
+}
+
+// Advice for the mistakes people make, appended to the message ("" for none):
+// `=` to compare, `+=`, Python's `a if c else b`, a misspelt declaration keyword.
+std::string mistakeHint(antlr4::Parser* parser, antlr4::Token* offending, const std::string& expectedWords) {
+    if (!offending || offending->getType() == antlr4::Token::EOF) return "";
+    const std::string text = offending->getText();
+    antlr4::Token* next = neighbour(parser, offending, 1);
+    antlr4::Token* prev = neighbour(parser, offending, -1);
+    if (text == "=" && inCondition(parser, offending)) return "; to compare, write `==`";
+    if ((text == "+" || text == "-" || text == "*" || text == "/") && next && next->getText() == "=" &&
+        expectedWords.find("`=`") != std::string::npos) {
+        const std::string name = prev && prev->getType() == G2dLexer::ID ? prev->getText() : "attr";
+        // The element whose block this is: the name before its `{`.
+        std::string element = "x";
+        for (int k = 1; k < 64; ++k) {
+            antlr4::Token* p = neighbour(parser, offending, -k);
+            if (!p || p->getText() == ";" || p->getText() == "}") break;
+            if (p->getText() != "{") continue;
+            if (antlr4::Token* e = neighbour(parser, p, -1); e && e->getType() == G2dLexer::ID) element = e->getText();
+            break;
+        }
+        return "; g2d has no `" + text + "=`: write `" + name + " = " + element + "." + name + " " + text +
+               " …` (expressions read the value before the step)";
+    }
+    if (text == "," && expectedWords == "`)`") return "; a vec2 has two components: `(x, y)`";
+    if (offending->getType() == G2dLexer::ID && (text == "if" || text == "else"))
+        return "; a conditional expression is written `condition ? a : b`";
+    if (offending->getType() == G2dLexer::ID && expectedWords.rfind("a declaration", 0) == 0)
+        return suggest(text, {"node", "edge", "face", "axiom", "rule", "param", "const", "enum", "fn", "import", "limit",
+                              "priority", "defs"});
+    return "";
+}
+
+}  // namespace
 
 std::string describeToken(const antlr4::Token* t) {
     if (!t) return "end of file";
@@ -35,7 +98,7 @@ std::string describeExpected(const antlr4::misc::IntervalSet& expected,
     };
     // At the top level, the parser expects any declaration.
     if (hasLiteral("'rule'") && hasLiteral("'axiom'") && hasLiteral("'node'"))
-        return "a declaration (`node`, `edge`, `axiom`, `rule`, `param`, `const`, `enum`, `fn`, `import`, `limit`, "
+        return "a declaration (`node`, `edge`, `face`, `axiom`, `rule`, `param`, `const`, `enum`, `fn`, `import`, `limit`, "
                "`priority` or `defs`)";
     // The tokens that can start an expression are summarised in one word.
     const bool expression = types.count(G2dLexer::INT) && types.count(G2dLexer::FLOAT) &&
@@ -134,6 +197,8 @@ void SyntaxErrorListener::syntaxError(antlr4::Recognizer* recognizer, antlr4::To
         else if (type == G2dLexer::UNTERMINATED_COMMENT) message = "unterminated comment (missing `*/`)";
         else if (type == G2dLexer::ERRCHAR && offending->getText() == "]")
             message = "unexpected character `]` (an edge arrow ends with `]->` or `]-`)";
+        else if (type == G2dLexer::ERRCHAR && offending->getText() == "'")
+            message = "unexpected character `'` (strings are written in double quotes: \"…\")";
         else if (type == G2dLexer::ERRCHAR) message = "unexpected character `" + offending->getText() + "`";
     }
     // Edge arrows: say what an arrow looks like rather than ANTLR's guess.
@@ -149,8 +214,10 @@ void SyntaxErrorListener::syntaxError(antlr4::Recognizer* recognizer, antlr4::To
             message = "expected an edge arrow (`-[Kind]->`, `<-[Kind]-` or `-[Kind]-`), found " + found;
         }
     }
-    if (message.empty())
+    if (message.empty()) {
         message = expectedWords.empty() ? "unexpected " + found : "expected " + expectedWords + ", found " + found;
+        if (!lexical) message += mistakeHint(dynamic_cast<antlr4::Parser*>(recognizer), offending, expectedWords);
+    }
     diags_.error(span, message);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "sema/builtins.hpp"
@@ -28,30 +29,7 @@ Expr literal(ir::Value v, Type t, Span s) {
     return e;
 }
 
-std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-
 }  // namespace
-
-std::string suggest(const std::string& name, const std::vector<std::string>& candidates) {
-    std::string best;
-    // Allow one edit per three characters, so one-letter names get no guesses.
-    std::size_t bestDistance = (name.size() + 1) / 3 + 1;
-    for (const auto& c : candidates) {
-        std::size_t d = editDistance(name, c);
-        if (d < bestDistance) { bestDistance = d; best = c; }
-    }
-    return best.empty() ? "" : "; did you mean `" + best + "`?";
-}
 
 Expr ExprChecker::coerce(Expr e, Type to) {
     if (to.kind == TypeKind::Float && e.type.kind == TypeKind::Int) {
@@ -355,8 +333,13 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
     for (const auto& a : kind.attrs) candidates.push_back(a.name);
     for (const auto& f : elementFacts())
         if (hasFact(f, b.ref.cls)) candidates.push_back(f.name);
+    std::string hint = suggest(member.name, candidates);
+    if (hint.empty() && !kind.attrs.empty()) {   // no close name: list what there is
+        hint = "; its attributes: ";
+        for (std::size_t i = 0; i < kind.attrs.size(); ++i) hint += (i ? ", " : "") + kind.attrs[i].name;
+    }
     g_.diags.error(member.span, std::string(rt::elemClassName(b.ref.cls)) + " kind `" + kind.name +
-                                    "` has no attribute `" + member.name + "`" + suggest(member.name, candidates));
+                                    "` has no attribute `" + member.name + "`" + hint);
     return std::nullopt;
 }
 
@@ -459,11 +442,26 @@ std::optional<Expr> ExprChecker::call(const ast::Expr& e, const ast::Call& c, co
         std::vector<std::string> candidates;
         for (const auto& b : builtinFunctions()) candidates.push_back(b.name);
         for (const auto& [k, v] : g_.functions) candidates.push_back(k);
-        g_.diags.error(c.callee.span, "unknown function `" + fname + "`" + suggest(fname, candidates));
+        std::string hint = suggest(fname, candidates);
+        // Other languages' names for g2d's built-ins.
+        static const std::map<std::string, std::string> aliases = {
+            {"norm", "length"}, {"len", "length"}, {"magnitude", "length"}, {"mag", "length"}, {"abs_vec", "length"},
+            {"normalise", "normalize"}, {"unit", "normalize"}, {"mix", "lerp"}, {"dist", "distance"},
+            {"rand", "random"}, {"randrange", "randint"}, {"gauss", "normal"}, {"arctan", "atan"},
+            {"toint", "int"}, {"tofloat", "float"}, {"to_string", "str"}};
+        if (hint.empty())
+            if (auto a = aliases.find(fname); a != aliases.end() && findBuiltin(a->second)) hint = "; g2d calls it `" + a->second + "`";
+        g_.diags.error(c.callee.span, "unknown function `" + fname + "`" + hint);
         return std::nullopt;
     }
     if (drawsRandom(*info) && !env.allowRandom) {
-        g_.diags.error(c.callee.span, "random function `" + fname + "` cannot be used in " + env.context);
+        // A condition must give the same answer whenever it is asked.
+        const bool condition = env.context == "a match condition";
+        g_.diags.error(c.callee.span, "random function `" + fname + "` cannot be used in " + env.context +
+                                          (condition ? "; draw the value when the element is created, into an attribute "
+                                                       "(`n: K { r = " + fname + "(…) }` in the daughter that makes it), "
+                                                       "and test the attribute"
+                                                     : ""));
         return std::nullopt;
     }
     if (!ok) return std::nullopt;

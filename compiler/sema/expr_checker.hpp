@@ -2,6 +2,7 @@
 // Type-checks AST expressions and lowers them to typed IR expressions.
 #include <optional>
 
+#include "diag/suggest.hpp"
 #include "sema/context.hpp"
 
 namespace g2d::sema {
@@ -36,8 +37,5 @@ private:
 
     Globals& g_;
 };
-
-// "did you mean `x`?" when some candidate is close to `name`; "" otherwise.
-std::string suggest(const std::string& name, const std::vector<std::string>& candidates);
 
 }  // namespace g2d::sema

@@ -83,7 +83,7 @@ TEST_CASE("wrong arity and argument types of functions", "[sema][calls]") {
          "6:18: the template of `format` must be a string literal"},
         {"recursion", "fn f(x: int) -> int = f(x - 1);", "5:23: function `f` cannot call itself (no recursion)"},
         {"random in a match", "rule R { match { x: P where x.w < random(); } produce { x; } }",
-         "5:35: random function `random` cannot be used in a match condition"},
+         "5:35: random function `random` cannot be used in a match condition; draw the value when the element is created, into an attribute (`n: K { r = random(…) }` in the daughter that makes it), and test the attribute"},
     });
 }
 
@@ -285,7 +285,7 @@ TEST_CASE("faces in the axiom, matches and daughters: kinds, corners, names", "[
         {nodes + "}\nrule R { match { x: P; y: P; f: F(x, y, q); } produce { x; y; } }", "5:41: corner `q` is not a node of the match"},
         {nodes + "}\nrule R { match { x: P; y: P; z: P; not { F(x, y, q); } } produce { x; y; z; } }",
          "5:50: corner `q` is not a node of the match or this negative condition"},
-        {nodes + "}\nrule R { match { f: F where f.v > 1; } produce { } }", "5:31: face kind `F` has no attribute `v`"},
+        {nodes + "}\nrule R { match { f: F where f.v > 1; } produce { } }", "5:31: face kind `F` has no attribute `v`; its attributes: w"},
         {nodes + "}\nrule R { match { f: F; x: P; } produce { x; y: P at (0, 0); F(x, y, f); } }", "5:69: corner `f` is a face, not a node"},
         {nodes + "}\nrule R { match { f: F; } produce { f at (0, 0); } }", "5:36: `f` is a face of the match; keep it with `f;` or `f { … };`"},
         {nodes + "}\nrule R { match { f: F @ (1, 1); } produce { f; } }",
