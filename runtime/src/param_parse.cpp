@@ -23,7 +23,7 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 std::optional<Value> parseParamValue(ParamType type, const std::string& text, int enumId,
-                                     const std::vector<std::string>& enumValues) {
+                                     const std::vector<std::string>& enumValues, const std::string& enumName) {
     switch (type) {
     case ParamType::Int: {
         long long v = 0;
@@ -40,17 +40,22 @@ std::optional<Value> parseParamValue(ParamType type, const std::string& text, in
         return std::nullopt;
     case ParamType::String: return Value{text};
     case ParamType::Vec2: {
-        const auto comma = text.find(',');
+        std::string inner = trim(text);
+        if (inner.size() >= 2 && inner.front() == '(' && inner.back() == ')') inner = inner.substr(1, inner.size() - 2);
+        const auto comma = inner.find(',');
         if (comma == std::string::npos) return std::nullopt;
-        auto x = parseDouble(trim(text.substr(0, comma)));
-        auto y = parseDouble(trim(text.substr(comma + 1)));
+        auto x = parseDouble(trim(inner.substr(0, comma)));
+        auto y = parseDouble(trim(inner.substr(comma + 1)));
         if (!x || !y) return std::nullopt;
         return Value{vec2{*x, *y}};
     }
-    case ParamType::Enum:
+    case ParamType::Enum: {
+        const std::string prefix = enumName + ".";
+        const std::string value = !enumName.empty() && text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text;
         for (std::size_t i = 0; i < enumValues.size(); ++i)
-            if (enumValues[i] == text) return Value{EnumVal{enumId, static_cast<int>(i)}};
+            if (enumValues[i] == value) return Value{EnumVal{enumId, static_cast<int>(i)}};
         return std::nullopt;
+    }
     }
     return std::nullopt;
 }

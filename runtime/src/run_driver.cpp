@@ -46,9 +46,9 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
                    (known.empty() ? " (it declares none)" : " (its parameters: " + known + ")");
         }
         const auto& p = specs[index];
-        auto v = parseParamValue(p.type, text, p.enumId, p.enumValues);
+        auto v = parseParamValue(p.type, text, p.enumId, p.enumValues, p.typeName);
         if (!v) {
-            std::string hint = p.type == ParamType::Vec2 ? " (write x,y)" : "";
+            std::string hint = p.type == ParamType::Vec2 ? " (write x,y or (x, y))" : p.type == ParamType::Bool ? " (write true or false)" : "";
             if (p.type == ParamType::Enum) {
                 hint = " (one of";
                 for (const auto& e : p.enumValues) hint += " " + e;

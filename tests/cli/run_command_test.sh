@@ -78,6 +78,27 @@ expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D nosuch=3
 grep -q 'no parameter `nosuch` (its parameters: max_lod)' err.txt || fail "unknown parameter message: $(cat err.txt)"
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=abc
 grep -q 'not a valid int' err.txt || fail "bad value message: $(cat err.txt)"
+# -D takes vec2, enum and bool values as the language writes them (and the short forms).
+cat > params.g2d <<'G2D'
+enum Mode { Big, Small }
+param m: Mode = Big;
+param v: vec2 = (0, 0);
+param b: bool = false;
+node P { big: bool = false; }
+axiom { a: P at v { big = b and m == Mode.Small }; }
+G2D
+for vec in "(1.5,-2)" "1.5,-2" "( 1.5 , -2 )"; do
+  for mode in Mode.Small Small; do
+    args="-D m=$mode -D v=$vec -D b=true"
+    expect_code 0 "$g2d" run params.g2d -D "m=$mode" -D "v=$vec" -D b=true --no-svg --json p.json
+  python3 -c "import json; n = json.load(open('p.json'))['nodes'][0]; assert n['pos'] == [1.5, -2] and n['big'] is True, n" \
+    || fail "-D $args: $(cat p.json)"
+  done
+done
+expect_code 2 "$g2d" run params.g2d -D m=Colour.Small --no-svg
+grep -qx 'g2d run: error: -D m=Colour.Small: not a valid Mode (one of Big Small)' err.txt || fail "-D wrong enum: $(cat err.txt)"
+expect_code 2 "$g2d" run params.g2d -D b=1 --no-svg
+grep -qx 'g2d run: error: -D b=1: not a valid bool (write true or false)' err.txt || fail "-D bad bool: $(cat err.txt)"
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" --seed -1
 expect_code 2 "$g2d" run
 
