@@ -61,6 +61,17 @@ const ast::NodeStmt* asNode(const ast::GraphStmt& s) { return std::get_if<ast::N
 const ast::EdgeStmt* asEdge(const ast::GraphStmt& s) { return std::get_if<ast::EdgeStmt>(&s.stmt); }
 const ast::FaceStmt* asFace(const ast::GraphStmt& s) { return std::get_if<ast::FaceStmt>(&s.stmt); }
 
+// A face's corner, once: reports a name seen before in `seen` (a face's
+// corners are distinct nodes) and returns false then.
+bool firstTimeCorner(Globals& g, std::map<std::string, Span>& seen, const ast::Ident& c) {
+    if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
+        auto& d = g.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
+        d.notes.push_back({prev->second, "first here"});
+        return false;
+    }
+    return true;
+}
+
 void reportDuplicate(Globals& g, const ast::Ident& name, Span previous) {
     auto& d = g.diags.error(name.span, "`" + name.name + "` is already declared in this production");
     d.notes.push_back({previous, "previous declaration of `" + name.name + "` is here"});
@@ -227,11 +238,7 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
                                                           : "corner `" + c.name + "` is not a node of the axiom");
                 continue;
             }
-            if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
-                auto& diag = g.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
-                diag.notes.push_back({prev->second, "first here"});
-                continue;
-            }
+            if (!firstTimeCorner(g, seen, c)) continue;
             face.corners.push_back(it->second.first);
         }
         if (face.kind >= 0) checkAssignments(g, ec, face.kind, f->assigns, env, face.assigns, face.styles);
@@ -468,9 +475,7 @@ private:
             std::map<std::string, Span> seen;
             bool ok = pf.kind >= 0;
             for (const auto& c : f->corners) {
-                if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
-                    auto& d = g_.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
-                    d.notes.push_back({prev->second, "first here"});
+                if (!firstTimeCorner(g_, seen, c)) {
                     ok = false;
                     continue;
                 }
@@ -966,12 +971,7 @@ private:
             g_.diags.error(f.span, "a face needs at least 3 corners, got " + std::to_string(f.corners.size()));
         std::map<std::string, Span> seen;
         for (const auto& c : f.corners) {
-            if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
-                auto& d = g_.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
-                d.notes.push_back({prev->second, "first here"});
-                continue;
-            }
-            df.corners.push_back(daughterNode(c, "corner"));
+            if (firstTimeCorner(g_, seen, c)) df.corners.push_back(daughterNode(c, "corner"));
         }
         if (df.kind >= 0) checkAssignments(g_, ec_, df.kind, f.assigns, env, df.assigns, df.styles);
         dg.faces.push_back(std::move(df));
@@ -1123,9 +1123,7 @@ private:
                     g_.diags.error(f->span, "a face needs at least 3 corners, got " + std::to_string(f->corners.size()));
                 std::map<std::string, Span> seen;
                 for (const auto& c : f->corners) {
-                    if (auto [prev, inserted] = seen.emplace(c.name, c.span); !inserted) {
-                        auto& d = g_.diags.error(c.span, "corner `" + c.name + "` appears twice: a face's corners are distinct nodes");
-                        d.notes.push_back({prev->second, "first here"});
+                    if (!firstTimeCorner(g_, seen, c)) {
                         ok = false;
                         continue;
                     }
