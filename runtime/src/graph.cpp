@@ -189,7 +189,7 @@ int Graph::outDegree(NodeId n) const {
 
 std::size_t Graph::memoryBytes() const {
     std::size_t bytes = nodes_.capacity() * sizeof(NodeRec) + edges_.capacity() * sizeof(EdgeRec) +
-                        dirty_.capacity() * sizeof(NodeId);
+                        dirty_.capacity() * sizeof(NodeId) + (z_.capacity() + radius_.capacity()) * sizeof(double);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
     bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity() + faceStyleList_.capacity()) * sizeof(std::uint32_t) +

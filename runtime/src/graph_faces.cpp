@@ -121,6 +121,30 @@ vec2 Graph::centroid(FaceId f) const {
     return sum / static_cast<double>(cornerCount(f));
 }
 
+double Graph::perimeter3(FaceId f) const {
+    double sum = 0;
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum += length(pos3(cornerNode(nextCorner(c))) - pos3(cornerNode(c)));
+    return sum;
+}
+
+vec3 Graph::centroid3(FaceId f) const {
+    vec3 sum{0, 0, 0};
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum = sum + pos3(cornerNode(c));
+    return sum / static_cast<double>(cornerCount(f));
+}
+
+// Newell's sum, taken about the first corner so that far-off faces keep their precision.
+vec3 Graph::vectorArea(FaceId f) const {
+    vec3 twice{0, 0, 0};
+    const vec3 origin = pos3(anchorOf(f));
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c))
+        twice = twice + cross(pos3(cornerNode(c)) - origin, pos3(cornerNode(nextCorner(c))) - origin);
+    return twice / 2.0;
+}
+
 void Graph::setFaceAttr(FaceId f, int i, Value v) {
     initFaceAttr(f, i, std::move(v));
     touchFaceValues(f);

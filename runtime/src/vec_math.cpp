@@ -30,6 +30,25 @@ double angleBetween(vec2 a, vec2 b) { return std::atan2(cross(a, b), dot(a, b));
 vec2 lerp(vec2 a, vec2 b, double t) { return a + (b - a) * t; }
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
+double dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+vec3 cross(vec3 a, vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double length(vec3 v) { return std::sqrt(dot(v, v)); }
+double distance(vec3 a, vec3 b) { return length(b - a); }
+
+vec3 normalize(vec3 v) {
+    const double l = length(v);
+    return l > 0 ? v / l : vec3(0.0, 0.0, 0.0);
+}
+
+vec3 lerp(vec3 a, vec3 b, double t) { return a + (b - a) * t; }
+
+vec3 rotateAxis(vec3 v, vec3 axis, double a) {
+    const vec3 k = normalize(axis);
+    if (k == vec3(0.0, 0.0, 0.0)) return v;
+    const double c = std::cos(a), s = std::sin(a);
+    return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
+}
+
 double fmodFloor(double a, double b) {
     const double r = std::fmod(a, b);
     return (r != 0 && ((r < 0) != (b < 0))) ? r + b : r;

@@ -145,6 +145,26 @@ public:
         touchNode(n);
         if (faceCountAt(n) != 0) touchFacesAt(n);   // their geometry moved
     }
+    // The third coordinate (grammars in 3D space): kept in a column of its
+    // own, filled only once some node is given a z, so 2D graphs carry none.
+    double z(NodeId n) const { return n < z_.size() ? z_[n] : 0.0; }
+    vec3 pos3(NodeId n) const { return {nodes_[n].pos.x, nodes_[n].pos.y, z(n)}; }
+    NodeId addNode(int kind, vec3 pos, long long age) {
+        const NodeId n = addNode(kind, vec2(pos.x, pos.y), age);
+        setZ(n, pos.z);
+        return n;
+    }
+    void setPos(NodeId n, vec3 p) {
+        setZ(n, p.z);
+        setPos(n, vec2(p.x, p.y));
+    }
+    void setZ(NodeId n, double z) { setColumn(z_, n, z); }
+    // G^3's node radius (3D grammars), in a column of its own like z.
+    double radius(NodeId n) const { return n < radius_.size() ? radius_[n] : 0.0; }
+    void setRadius(NodeId n, double r) {
+        setColumn(radius_, n, r);
+        touchNodeValues(n);
+    }
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
     void setNodeAttr(NodeId n, int i, Value v);
@@ -222,6 +242,12 @@ public:
     double area(FaceId f) const;
     double perimeter(FaceId f) const;
     vec2 centroid(FaceId f) const;
+    // The same in 3D; the vector area is half the sum of the corners' cross
+    // products: its length is the area of a plane face, its direction the
+    // normal seen from which the corners run counter-clockwise.
+    double perimeter3(FaceId f) const;
+    vec3 centroid3(FaceId f) const;
+    vec3 vectorArea(FaceId f) const;
     const Value& faceAttr(FaceId f, int i) const { return pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)]; }
     void setFaceAttr(FaceId f, int i, Value v);
     void initFaceAttr(FaceId f, int i, Value v);   // without recording a change
@@ -412,6 +438,14 @@ private:
     std::vector<std::vector<Value>> pool_;       // per kind: blocks of defaults_[kind].size()
     // The columns that grow with the graph never copy themselves (grow_array.hpp).
     GrowArray<NodeRec> nodes_;
+    std::vector<double> z_, radius_;         // by node id; empty until some node has a nonzero one
+    void setColumn(std::vector<double>& column, NodeId n, double v) {
+        if (n >= column.size()) {
+            if (v == 0.0) return;
+            column.resize(nodes_.size(), 0.0);
+        }
+        column[n] = v;
+    }
     GrowArray<EdgeRec> edges_;
     std::vector<GrowArray<NodeId>> kindNodes_;   // per node kind its nodes, per face kind its faces
     // Style overrides: each element's chain in styles_ (StyleStore::kNone
