@@ -5,7 +5,8 @@ grammar G2d;
 program     : topDecl* EOF ;
 
 topDecl
-    : importDecl
+    : spaceDecl
+    | importDecl
     | paramDecl
     | constDecl
     | enumDecl
@@ -18,6 +19,8 @@ topDecl
     | ruleDecl
     ;
 
+// `space 3d;`: positions are vec3 (the default is `space 2d;`).
+spaceDecl   : 'space' SPACE_DIM ';' ;
 importDecl  : 'import' STRING ';' ;
 paramDecl   : 'param' ID ':' typeRef '=' expr ';' ;
 constDecl   : 'const' ID (':' typeRef)? '=' expr ';' ;
@@ -110,7 +113,10 @@ produceStmt
     : letStmt
     | graphStmt
     | forStmt
+    | insertStmt
     ;
+// insert m between a and b;   (m joins every face with side a–b, between them)
+insertStmt  : 'insert' node=ID 'between' first=ID 'and' second=ID ';' ;
 // for (u, v) in f.sides { … }   or   for c in f.corners { … }
 forStmt
     : 'for' (var=ID | '(' first=ID ',' second=ID ')') 'in' face=ID '.' what=ID '{' produceStmt* '}'
@@ -138,7 +144,7 @@ primary
     | ('true' | 'false')                                    # boolLit
     | ID '(' (expr (',' expr)*)? ')'                        # callExpr
     | ID                                                    # nameExpr
-    | '(' expr ',' expr ')'                                 # vecLit
+    | '(' expr ',' expr (',' expr)? ')'                     # vecLit
     | '(' expr ')'                                          # parenExpr
     ;
 
@@ -146,6 +152,7 @@ signedInt   : '-'? INT ;
 signedNumber: '-'? (INT | FLOAT) ;
 
 // ---- lexer -----------------------------------------------------------------
+SPACE_DIM   : [23] 'd' ;
 ID          : [a-zA-Z_] [a-zA-Z_0-9]* ;
 FLOAT       : DIGITS '.' DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
 INT         : DIGITS ;

@@ -30,7 +30,7 @@ struct BoolLit { bool value; };
 struct Name { std::string name; };
 struct Member { ExprPtr object; Ident member; };
 struct Call { Ident callee; std::vector<ExprPtr> args; };
-struct VecLit { ExprPtr x, y; };
+struct VecLit { ExprPtr x, y, z; };   // z: a vec3
 struct Unary { UnaryOp op; ExprPtr operand; };
 struct Binary { BinaryOp op; ExprPtr lhs, rhs; Span opSpan; };
 struct Conditional { ExprPtr cond, then, otherwise; };
@@ -119,8 +119,13 @@ struct ForBlock {
     std::vector<ProduceStmt> body;
     Span span;
 };
+// `insert m between a and b;` in a daughter: G^3's Split edge on faces.
+struct InsertStmt {
+    Ident node, first, second;
+    Span span;
+};
 struct ProduceStmt {
-    std::variant<LetStmt, GraphStmt, ForBlock> stmt;
+    std::variant<LetStmt, GraphStmt, ForBlock, InsertStmt> stmt;
 };
 
 struct ProduceBlock {
@@ -151,6 +156,7 @@ struct RuleDecl {
 };
 
 // ---- declarations ----------------------------------------------------------
+struct SpaceDecl { int dimensions = 2; Span span; };
 struct ImportDecl { std::string path; Span span; };
 struct ParamDecl { Ident name; TypeRef type; ExprPtr value; Span span; };
 struct ConstDecl { Ident name; std::optional<TypeRef> type; ExprPtr value; Span span; };
@@ -183,7 +189,7 @@ struct PriorityDecl {
 struct DefsDecl { std::string svg; Span span; };
 
 struct Decl {
-    std::variant<ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
+    std::variant<SpaceDecl, ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
                  PriorityDecl, DefsDecl, RuleDecl> decl;
 };
 

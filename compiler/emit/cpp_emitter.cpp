@@ -211,6 +211,7 @@ private:
                     out += (v ? ", " : "") + cLiteral(prog_.enums[p.type.enumId].values[v]);
             out += "}, " + valueOf(p.type, cppLiteral(p.defaultValue, p.type)) + "});\n";
         }
+        if (prog_.space3d) out += "        schema_.space3d = true;\n";
         for (const auto& k : prog_.kinds) {
             out += "        schema_.kindNames.push_back(" + cLiteral(k.name) + ");\n        schema_.attrNames.push_back({";
             for (std::size_t a = 0; a < k.attrs.size(); ++a) out += (a ? ", " : "") + cLiteral(k.attrs[a].name);

@@ -36,6 +36,7 @@ std::string cppType(const ir::Type& t) {
     case TypeKind::Bool: return "bool";
     case TypeKind::String: return "std::string";
     case TypeKind::Vec2: return "vec2";
+    case TypeKind::Vec3: return "vec3";
     case TypeKind::Enum: return "int";
     case TypeKind::Void: return "void";
     }
@@ -91,6 +92,8 @@ std::string cppLiteral(const ir::Value& v, const ir::Type& t) {
     if (auto* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
     if (auto* s = std::get_if<std::string>(&v)) return cppString(*s);
     if (auto* p = std::get_if<ir::Vec2>(&v)) return "vec2(" + doubleLiteral(p->x) + ", " + doubleLiteral(p->y) + ")";
+    if (auto* p = std::get_if<ir::Vec3>(&v))
+        return "vec3(" + doubleLiteral(p->x) + ", " + doubleLiteral(p->y) + ", " + doubleLiteral(p->z) + ")";
     (void)t;
     return std::to_string(std::get<ir::EnumValue>(v).index);
 }
@@ -109,7 +112,7 @@ std::string ExprGen::place(const ir::Expr& e, std::string& out, const std::strin
 
 std::string ExprGen::fact(const ir::Expr& e, const std::string& id, ir::ElemClass cls, const std::string& g) {
     const char* c = cls == ir::ElemClass::Edge ? "ElemClass::Edge" : cls == ir::ElemClass::Face ? "ElemClass::Face" : "ElemClass::Node";
-    return std::string("rt::fact::") + rt::elementFactEntry(e.fact).name + "(" + g + ", " + c + ", " + id + ")";
+    return std::string("rt::fact::") + rt::elementFactEntry(e.fact).function + "(" + g + ", " + c + ", " + id + ")";
 }
 
 std::string ExprGen::display(const std::string& value, const ir::Type& t) {
@@ -148,6 +151,7 @@ std::string ExprGen::gen(const ir::Expr& e, const ExprContext& ctx, std::string&
     case ExprOp::Placed: return bind("*placed[" + std::to_string(e.index) + "]");
     case ExprOp::VecX: return bind("(" + gen(e.args[0], ctx, out, in) + ").x");
     case ExprOp::VecY: return bind("(" + gen(e.args[0], ctx, out, in) + ").y");
+    case ExprOp::VecZ: return bind("(" + gen(e.args[0], ctx, out, in) + ").z");
     case ExprOp::Neg: {
         const std::string v = gen(e.args[0], ctx, out, in);
         if (e.type.kind == TypeKind::Int) {
@@ -223,11 +227,11 @@ std::string ExprGen::binary(const ir::Expr& e, const ExprContext& ctx, std::stri
         default: return bind("rt::modFloat(" + l + ", " + r + ")", true);
         }
     }
-    if (lk == TypeKind::Vec2 && rk == TypeKind::Vec2)
-        return bind("rt::finite(" + l + (e.op == ExprOp::Add ? " + " : " - ") + r + ")", true);
-    if (lk == TypeKind::Vec2 && rk == TypeKind::Float)
+    const bool lv = e.args[0].type.isVector(), rv = e.args[1].type.isVector();
+    if (lv && rv) return bind("rt::finite(" + l + (e.op == ExprOp::Add ? " + " : " - ") + r + ")", true);
+    if (lv && rk == TypeKind::Float)
         return e.op == ExprOp::Mul ? bind("rt::finite(" + l + " * " + r + ")", true) : bind("rt::divVec(" + l + ", " + r + ")", true);
-    if (lk == TypeKind::Float && rk == TypeKind::Vec2) return bind("rt::finite(" + l + " * " + r + ")", true);
+    if (lk == TypeKind::Float && rv) return bind("rt::finite(" + l + " * " + r + ")", true);
     return bind(l + " + " + r, false);  // strings
 }
 

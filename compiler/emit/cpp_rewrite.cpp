@@ -20,7 +20,7 @@ std::string RewritePrinter::position(int posReg) const { return posReg >= 0 ? re
 
 std::string RewritePrinter::prepare(const lower::RewriteProgram& p, const ExprContext& ctx, const std::string& in) {
     std::string out;
-    if (p.placement) out += in + "std::optional<vec2> placed[" + str(p.nodeHandles) + "];\n";
+    if (p.placement) out += in + "std::optional<" + cppType(ir::positionType(prog_)) + "> placed[" + str(p.nodeHandles) + "];\n";
     return out + prepareOps(p.prepare, p, ctx, in);
 }
 
@@ -105,11 +105,13 @@ std::string RewritePrinter::prepareOps(const std::vector<lower::PrepareOp>& ops,
                        },
                        [&](const lower::EvalPosition& o) {
                            const std::string v = gen_.gen(*o.value, ctx, out, in);
-                           out += in + "const vec2 " + regName(o.reg) + " = " + v + ";\n";
-                           out += in + "if (!std::isfinite(" + regName(o.reg) + ".x) || !std::isfinite(" + regName(o.reg) + ".y)) throw PlacedError(" +
+                           out += in + "const " + cppType(ir::positionType(prog_)) + " " + regName(o.reg) + " = " + v + ";\n";
+                           out += in + "if (!isFinitePosition(" + regName(o.reg) + ")) throw PlacedError(" +
                                   str(places_.add(o.value->span)) + ", " + cppString(o.message) + ");\n";
                        },
-                       [&](const lower::TakePlaced& o) { out += in + "const vec2 " + regName(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n"; },
+                       [&](const lower::TakePlaced& o) {
+                           out += in + "const " + cppType(ir::positionType(prog_)) + " " + regName(o.reg) + " = *placed[" + str(o.daughterNode) + "];\n";
+                       },
                        [&](const lower::PrepareLoop& o) { out += prepareLoop(o.loop, p, ctx, in); },
                    },
                    op);
@@ -139,6 +141,10 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                        },
                        [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
                        [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + regName(o.reg) + ");\n"; },
+                       [&](const lower::InsertBetween& o) {
+                           commit += c + "G.insertBetween(" + node(o.first) + ", " + node(o.second) + ", " + node(o.node) + ");\n";
+                       },
+                       [&](const lower::SetRadius& o) { commit += c + "G.setRadius(" + node(o.handle) + ", " + attrValue(o.value) + ");\n"; },
                        [&](const lower::SetNodeAttr& o) {
                            commit += c + gen_.attrAccess(o.kind, node(o.handle), ir::ElemClass::Node, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
                        },
@@ -207,7 +213,7 @@ std::string RewritePrinter::placement(const lower::Place& o, const std::string& 
     std::string out = in + "{\n";
     const std::string b = in + "    ";
     // Fixed-size arrays: placement allocates nothing per step.
-    std::string mother, host, refDaughter, refHost;
+    std::string mother, host, refDaughter, refHost, refZ;
     auto item = [](std::string& list, const std::string& v) { list += (list.empty() ? "" : ", ") + v; };
     auto vec = [](const ir::Vec2& v) { return cppLiteral(ir::Value{v}, ir::kVec2Type); };
     for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
@@ -217,6 +223,7 @@ std::string RewritePrinter::placement(const lower::Place& o, const std::string& 
     for (const auto& [sketch, node] : o.refs) {
         item(refDaughter, vec(sketch));
         item(refHost, "host[" + str(node) + "]");
+        item(refZ, "g.z(m.nodes[" + str(node) + "])");
     }
     const std::string nodes = str(static_cast<int>(o.motherSketch.size()));
     out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
@@ -226,10 +233,12 @@ std::string RewritePrinter::placement(const lower::Place& o, const std::string& 
     out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
     const std::string directed =
         o.directed ? "std::make_pair(" + str(o.directed->first) + ", " + str(o.directed->second) + ")" : "std::nullopt";
-    out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost);\n";
+    if (o.space3d) out += b + "const double refZ[" + n + "] = {" + refZ + "};\n";
+    out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost" +
+           (o.space3d ? ", refZ" : "") + ");\n";
     for (const auto& t : o.targets) {
         const std::string si = str(t.daughterNode);
-        out += b + "placed[" + si + "] = frame.place(" + vec(t.sketch) + ");\n";
+        out += b + "placed[" + si + "] = frame." + (o.space3d ? "place3(" : "place(") + vec(t.sketch) + ");\n";
         out += b + "if (!std::isfinite(placed[" + si + "]->x) || !std::isfinite(placed[" + si + "]->y)) throw PlacedError(" +
                str(places_.add(t.span)) + ", " + cppString(t.message) + ");\n";
     }

@@ -19,6 +19,7 @@ std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) 
 
 rt::JsonSchema jsonSchema(const ir::Program& prog) {
     rt::JsonSchema s;
+    s.space3d = prog.space3d;
     for (const auto& k : prog.kinds) {
         s.kindNames.push_back(k.name);
         std::vector<std::string> attrs;

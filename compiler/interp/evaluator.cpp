@@ -17,16 +17,7 @@ using ir::ExprOp;
 using rt::Value;
 using rt::vec2;
 
-rt::Value fromLiteral(const ir::Value& v) {
-    return std::visit(
-        [](const auto& x) -> Value {
-            using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, ir::Vec2>) return vec2{x.x, x.y};
-            else if constexpr (std::is_same_v<T, ir::EnumValue>) return rt::EnumVal{x.enumId, x.index};
-            else return x;
-        },
-        v);
-}
+rt::Value fromLiteral(const ir::Value& v) { return ir::toRuntime(v); }
 
 std::string display(const Value& v, const ir::Program& prog) {
     if (auto* e = std::get_if<rt::EnumVal>(&v)) return prog.enums[e->enumId].values[e->index];
@@ -90,12 +81,19 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     }
     case ExprOp::SelfFact: return fact(e, f, f.selfClass, f.self);
     case ExprOp::Placed: return *(*f.placed)[e.index];
-    case ExprOp::VecX: return V(evaluate(e.args[0], f)).x;
-    case ExprOp::VecY: return V(evaluate(e.args[0], f)).y;
+    case ExprOp::VecX:
+    case ExprOp::VecY:
+    case ExprOp::VecZ: {
+        const Value v = evaluate(e.args[0], f);
+        const int axis = e.op == ExprOp::VecX ? 0 : e.op == ExprOp::VecY ? 1 : 2;
+        if (const auto* p = std::get_if<rt::vec3>(&v)) return (*p)[axis];
+        return V(v)[axis];
+    }
     case ExprOp::Neg: {
         Value v = evaluate(e.args[0], f);
         if (auto* i = std::get_if<long long>(&v)) return rt::negInt(*i);
         if (auto* d = std::get_if<double>(&v)) return -*d;
+        if (auto* p = std::get_if<rt::vec3>(&v)) return -*p;
         return -V(v);
     }
     case ExprOp::Not: return !B(evaluate(e.args[0], f));
@@ -134,6 +132,5 @@ Value evaluate(const ir::Expr& e, EvalFrame& f) {
 }
 
 bool evaluateBool(const ir::Expr& e, EvalFrame& f) { return B(evaluate(e, f)); }
-rt::vec2 evaluateVec(const ir::Expr& e, EvalFrame& f) { return V(evaluate(e, f)); }
 
 }  // namespace g2d::interp

@@ -29,14 +29,13 @@ struct EvalFrame {
     const rt::EdgeId* edges = nullptr;
     const rt::FaceId* faces = nullptr;
     rt::Rng* rng = nullptr;
-    const std::vector<std::optional<rt::vec2>>* placed = nullptr;  // automatic positions, by daughter node
+    const std::vector<std::optional<rt::Value>>* placed = nullptr;  // automatic positions, by daughter node
     ir::ElemClass selfClass = ir::ElemClass::Node;    // kind style expressions
     std::uint32_t self = rt::kNoId;
 };
 
 rt::Value evaluate(const ir::Expr& e, EvalFrame& f);
 bool evaluateBool(const ir::Expr& e, EvalFrame& f);
-rt::vec2 evaluateVec(const ir::Expr& e, EvalFrame& f);
 
 rt::Value fromLiteral(const ir::Value& v);
 // How a value prints in str() and format(): enums by their value's name.

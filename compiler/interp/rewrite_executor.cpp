@@ -16,11 +16,7 @@ void RewriteExecutor::prepare(const lower::RewriteProgram& p, rt::Match m, const
                        [&](const lower::EvalLocal& o) { (*f.locals)[o.slot] = evaluate(*o.value, f); },
                        [&](const lower::Place& o) { place(o, m, g); },
                        [&](const lower::Eval& o) { registers[o.reg] = evaluate(*o.value, f); },
-                       [&](const lower::EvalPosition& o) {
-                           const rt::vec2 pos = evaluateVec(*o.value, f);
-                           if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(o.value->span, o.message);
-                           registers[o.reg] = pos;
-                       },
+                       [&](const lower::EvalPosition& o) { registers[o.reg] = evaluatePosition(o, f); },
                        [&](const lower::TakePlaced& o) { registers[o.reg] = *placed_[o.daughterNode]; },
                        [&](const lower::PrepareLoop& o) { prepareLoop(p.loops[o.loop], m, g, f, loops[o.loop]); },
                    },
@@ -48,18 +44,22 @@ void RewriteExecutor::prepareLoop(const lower::LoopProgram& l, rt::Match m, cons
             if (const auto* e = std::get_if<lower::Eval>(&op)) {
                 r[e->reg] = evaluate(*e->value, f);
             } else {
-                const auto& o = std::get<lower::EvalPosition>(op);
-                const rt::vec2 pos = evaluateVec(*o.value, f);
-                if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(o.value->span, o.message);
-                r[o.reg] = pos;
+                r[std::get<lower::EvalPosition>(op).reg] = evaluatePosition(std::get<lower::EvalPosition>(op), f);
             }
         }
     }
     f.nodes = matchNodes;
 }
 
+rt::Value RewriteExecutor::evaluatePosition(const lower::EvalPosition& o, EvalFrame& f) {
+    rt::Value pos = evaluate(*o.value, f);
+    if (!rt::isFinitePosition(pos)) throw EvalError(o.value->span, o.message);
+    return pos;
+}
+
 void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph& g) {
     std::vector<rt::vec2> mother, host, refDaughter, refHost;
+    std::vector<double> refZ;
     for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
         mother.push_back({o.motherSketch[i].x, o.motherSketch[i].y});
         host.push_back(g.pos(m.nodes[i]));
@@ -67,12 +67,13 @@ void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph&
     for (const auto& [sketch, node] : o.refs) {
         refDaughter.push_back({sketch.x, sketch.y});
         refHost.push_back(host[static_cast<std::size_t>(node)]);
+        refZ.push_back(g.z(m.nodes[node]));
     }
-    const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost);
+    const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost, refZ);
     for (const auto& t : o.targets) {
         const rt::vec2 pos = frame.place({t.sketch.x, t.sketch.y});
         if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) throw EvalError(t.span, t.message);
-        placed_[t.daughterNode] = pos;
+        placed_[t.daughterNode] = o.space3d ? rt::Value{frame.place3({t.sketch.x, t.sketch.y})} : rt::Value{pos};
     }
 }
 
@@ -124,7 +125,12 @@ void RewriteExecutor::commitLoop(const lower::LoopProgram& l, LoopValues& values
 void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g,
                             long long step, const lower::RewriteProgram& p, std::vector<LoopValues>& loops) {
     auto value = [&](const lower::Operand& v) { return v.reg >= 0 ? std::move(registers[v.reg]) : fromLiteral(v.literal->value); };
-    auto position = [&](int reg) { return reg >= 0 ? std::get<rt::vec2>(registers[reg]) : rt::vec2{0, 0}; };
+    // A position register holds a vec2, or a vec3 in a 3D grammar.
+    auto addNode = [&](int kind, int reg) {
+        if (reg < 0) return g.addNode(kind, rt::vec2{0, 0}, step);
+        if (const auto* p3 = std::get_if<rt::vec3>(&registers[reg])) return g.addNode(kind, *p3, step);
+        return g.addNode(kind, std::get<rt::vec2>(registers[reg]), step);
+    };
     auto& nodes = hostOf_;
     auto& edges = edgeOf_;
     auto& faces = faceOf_;
@@ -134,12 +140,16 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        [&](const lower::DeleteEdge& o) { g.removeEdge(m.edges[o.matchEdge]); },
                        [&](const lower::BindNode& o) { nodes[o.handle] = m.nodes[o.matchNode]; },
                        [&](const lower::CreateNode& o) {
-                           nodes[o.handle] = g.addNode(o.kind, position(o.posReg), step);
+                           nodes[o.handle] = addNode(o.kind, o.posReg);
                            for (const auto& w : o.attrs) g.initNodeAttr(nodes[o.handle], w.attr, value(w.value));
                        },
                        [&](const lower::Rewire& o) { g.reconnectEdge(m.edges[o.matchEdge], nodes[o.src], nodes[o.dst]); },
                        [&](const lower::DeleteNode& o) { g.removeNode(m.nodes[o.matchNode]); },
-                       [&](const lower::SetPos& o) { g.setPos(nodes[o.handle], std::get<rt::vec2>(registers[o.reg])); },
+                       [&](const lower::SetPos& o) {
+                           if (const auto* p3 = std::get_if<rt::vec3>(&registers[o.reg])) g.setPos(nodes[o.handle], *p3);
+                           else g.setPos(nodes[o.handle], std::get<rt::vec2>(registers[o.reg]));
+                       },
+                       [&](const lower::SetRadius& o) { g.setRadius(nodes[o.handle], std::get<double>(value(o.value))); },
                        [&](const lower::SetNodeAttr& o) { g.initNodeAttr(nodes[o.handle], o.write.attr, value(o.write.value)); },
                        [&](const lower::TouchNodeValues& o) { g.touchNodeValues(nodes[o.handle]); },
                        [&](const lower::SetNodeStyle& o) {
@@ -171,6 +181,7 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        [&](const lower::SetFaceStyle& o) {
                            if (g.faceAlive(faces[o.handle])) g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
+                       [&](const lower::InsertBetween& o) { g.insertBetween(nodes[o.first], nodes[o.second], nodes[o.node]); },
                        [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },
                    },
                    op);

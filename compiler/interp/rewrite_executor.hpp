@@ -31,6 +31,7 @@ public:
 
 private:
     void place(const lower::Place& o, rt::Match m, const rt::Graph& g);
+    static rt::Value evaluatePosition(const lower::EvalPosition& o, EvalFrame& f);
     void prepareLoop(const lower::LoopProgram& l, rt::Match m, const rt::Graph& g, EvalFrame& f, LoopValues& out);
     // The operations `ops` on the handles in hostOf_, edgeOf_, faceOf_.
     void apply(const std::vector<lower::CommitOp>& ops, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g,
@@ -38,7 +39,7 @@ private:
     void commitLoop(const lower::LoopProgram& l, LoopValues& values, rt::Graph& g, long long step, const lower::RewriteProgram& p,
                     std::vector<LoopValues>& loops);
 
-    std::vector<std::optional<rt::vec2>> placed_;   // automatic positions, by daughter node
+    std::vector<std::optional<rt::Value>> placed_;  // automatic positions (vec2 or vec3), by daughter node
     std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles
     std::vector<rt::EdgeId> edgeOf_;   // and edge handles
     std::vector<rt::FaceId> faceOf_;   // and face handles

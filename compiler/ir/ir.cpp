@@ -9,6 +9,7 @@ std::string typeName(const Type& t, const Program& p) {
     case TypeKind::Bool: return "bool";
     case TypeKind::String: return "string";
     case TypeKind::Vec2: return "vec2";
+    case TypeKind::Vec3: return "vec3";
     case TypeKind::Void: return "void";
     case TypeKind::Enum:
         if (t.enumId >= 0 && static_cast<std::size_t>(t.enumId) < p.enums.size()) return p.enums[t.enumId].name;
@@ -32,6 +33,30 @@ std::optional<rt::BinaryOp> binaryOperator(ExprOp op) {
     case ExprOp::Ne: return rt::BinaryOp::Ne;
     default: return std::nullopt;
     }
+}
+
+rt::Value toRuntime(const Value& v) {
+    return std::visit(
+        [](const auto& x) -> rt::Value {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, Vec2>) return rt::vec2(x.x, x.y);
+            else if constexpr (std::is_same_v<T, Vec3>) return rt::vec3(x.x, x.y, x.z);
+            else if constexpr (std::is_same_v<T, EnumValue>) return rt::EnumVal{x.enumId, x.index};
+            else return x;
+        },
+        v);
+}
+
+Value fromRuntime(const rt::Value& v) {
+    return std::visit(
+        [](const auto& x) -> Value {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, rt::vec2>) return Vec2{x.x, x.y};
+            else if constexpr (std::is_same_v<T, rt::vec3>) return Vec3{x.x, x.y, x.z};
+            else if constexpr (std::is_same_v<T, rt::EnumVal>) return EnumValue{x.enumId, x.index};
+            else return x;
+        },
+        v);
 }
 
 }  // namespace g2d::ir

@@ -22,7 +22,7 @@
 namespace g2d::ir {
 
 // ---- types and values --------------------------------------------------------
-enum class TypeKind { Int, Float, Bool, String, Vec2, Enum, Void };
+enum class TypeKind { Int, Float, Bool, String, Vec2, Enum, Void, Vec3 };
 
 struct Type {
     TypeKind kind = TypeKind::Void;
@@ -31,6 +31,7 @@ struct Type {
     static Type enumeration(int id) { return Type{TypeKind::Enum, id}; }
     bool operator==(const Type&) const = default;
     bool isNumeric() const { return kind == TypeKind::Int || kind == TypeKind::Float; }
+    bool isVector() const { return kind == TypeKind::Vec2 || kind == TypeKind::Vec3; }
 };
 
 inline const Type kIntType = Type::of(TypeKind::Int);
@@ -38,10 +39,16 @@ inline const Type kFloatType = Type::of(TypeKind::Float);
 inline const Type kBoolType = Type::of(TypeKind::Bool);
 inline const Type kStringType = Type::of(TypeKind::String);
 inline const Type kVec2Type = Type::of(TypeKind::Vec2);
+inline const Type kVec3Type = Type::of(TypeKind::Vec3);
 
 struct Vec2 {
     double x = 0, y = 0;
     bool operator==(const Vec2&) const = default;
+};
+
+struct Vec3 {
+    double x = 0, y = 0, z = 0;
+    bool operator==(const Vec3&) const = default;
 };
 
 struct EnumValue {
@@ -50,7 +57,7 @@ struct EnumValue {
     bool operator==(const EnumValue&) const = default;
 };
 
-using Value = std::variant<long long, double, bool, std::string, Vec2, EnumValue>;
+using Value = std::variant<long long, double, bool, std::string, Vec2, EnumValue, Vec3>;
 
 // ---- elements ------------------------------------------------------------------
 using ElemClass = rt::ElemClass;   // g2d/elem_class.hpp
@@ -83,7 +90,7 @@ enum class ExprOp {
     SelfFact,    // fact of the element being styled
     Placed,      // index = daughter node: its automatic position (`placed` in `at`)
     Fact,        // elem, fact
-    VecX, VecY,  // args[0]
+    VecX, VecY, VecZ,  // args[0]
     Neg, Not,
     Add, Sub, Mul, Div, Mod, Lt, Le, Gt, Ge, Eq, Ne, And, Or,
     Cond,        // args: cond, then, else
@@ -93,6 +100,11 @@ enum class ExprOp {
 
 // The runtime's operator for Add … Ne (rt::binaryOp); nullopt for the others.
 std::optional<rt::BinaryOp> binaryOperator(ExprOp op);
+
+// A literal as the runtime holds it, and back (the folder computes with the
+// runtime's own operations).
+rt::Value toRuntime(const Value& v);
+Value fromRuntime(const rt::Value& v);
 
 struct Expr {
     ExprOp op = ExprOp::Literal;
@@ -174,6 +186,7 @@ struct AxiomNode {
     std::string name;
     int kind = -1;
     std::optional<Expr> position;      // default (0, 0)
+    std::optional<Expr> radius;        // 3D: `{ radius = … }` (default 0)
     std::vector<AttrAssign> assigns;
     std::vector<StyleAssign> styles;
     Span span;
@@ -262,6 +275,7 @@ struct DaughterNode {
     int kind = -1;                     // -1 only for a kept wildcard
     std::optional<Expr> position;      // `at`; new nodes without it are placed automatically
     std::optional<Vec2> sketch;        // (`at` may read the automatic position as `placed`)
+    std::optional<Expr> radius;        // 3D: `{ radius = … }`
     std::vector<AttrAssign> assigns;
     std::vector<StyleAssign> styles;
     Span span;
@@ -296,6 +310,7 @@ struct LoopNode {                      // a node each turn creates
     std::string name;
     int kind = -1;
     Expr position;
+    std::optional<Expr> radius;        // 3D
     std::vector<AttrAssign> assigns;
     std::vector<StyleAssign> styles;
     Span span;
@@ -337,6 +352,8 @@ struct Daughter {
     std::vector<NewFace> faces;
     std::vector<KeptFace> keptFaces;
     std::vector<FaceLoop> loops;
+    struct Insert { int node, first, second; Span span; };   // daughter node indices
+    std::vector<Insert> inserts;       // `insert node between first and second`, in order
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges and faces go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     std::vector<int> deletedFaces;     // mother faces not kept
@@ -385,6 +402,7 @@ inline const PatternNode& slotNode(const Rule& r, const NegativeCondition* nac, 
 }
 
 struct Program {
+    bool space3d = false;              // `space 3d;`: positions are vec3
     std::vector<Enum> enums;
     std::vector<Kind> kinds;
     std::vector<Param> params;
@@ -401,5 +419,8 @@ struct Program {
 };
 
 std::string typeName(const Type& t, const Program& p);
+
+// The type of a node's position: vec3 in a grammar declared `space 3d;`.
+inline Type positionType(const Program& p) { return p.space3d ? kVec3Type : kVec2Type; }
 
 }  // namespace g2d::ir

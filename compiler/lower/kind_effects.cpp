@@ -92,7 +92,7 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
         }
         const bool retyped = n.kind != mother->kind;
         if (retyped) changed.add(n.kind, ir::ElemClass::Node);
-        if (retyped || n.position) changed.add(mother->kind, ir::ElemClass::Node);
+        if (retyped || n.position || n.radius) changed.add(mother->kind, ir::ElemClass::Node);
         for (const auto& a : n.assigns) values.insert(valueKey(n.kind, a.attr));
     }
     out.changedValues.emplace_back(values.begin(), values.end());
@@ -110,6 +110,11 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
         if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
     for (const auto& f : d.faces) changed.add(f.kind, ir::ElemClass::Face);   // new
+    for (const auto& ins : d.inserts) {   // faces of any kind grow a corner
+        changed.add(-1, ir::ElemClass::Face);
+        for (int n : {ins.node, ins.first, ins.second})
+            if (const ir::DaughterNode* dn = at(d.nodes, n)) changed.add(dn->kind, ir::ElemClass::Node);
+    }
     for (const auto& l : d.loops) {   // new, every turn
         for (const auto& n : l.nodes) changed.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : l.edges) changed.add(e.kind, ir::ElemClass::Edge);

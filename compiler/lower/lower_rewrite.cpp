@@ -59,12 +59,13 @@ private:
         auto operand = [&](const ir::Expr& v) { return operandIn(v, lp.registers, lp.prepare); };
         for (std::size_t i = 0; i < l.nodes.size(); ++i) {
             const auto& n = l.nodes[i];
-            lp.registers.push_back(ir::kVec2Type);
+            lp.registers.push_back(ir::positionType(prog_));
             const int pos = static_cast<int>(lp.registers.size() - 1);
             lp.prepare.push_back(EvalPosition{pos, &n.position, "position of `" + n.name + "` is not finite"});
             CreateNode c{H + 2 + static_cast<int>(i), n.kind, pos, {}};
             for (const auto& a : n.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
             lp.create.push_back(std::move(c));
+            if (n.radius) lp.create.push_back(SetRadius{H + 2 + static_cast<int>(i), operand(*n.radius)});
             for (const auto& st : n.styles) lp.create.push_back(SetNodeStyle{H + 2 + static_cast<int>(i), &st, operand(st.value)});
         }
         for (const auto& e : l.edges) {
@@ -96,17 +97,19 @@ private:
         if (d_.autoPlacement) place();
         posReg_.assign(d_.nodes.size(), -1);
         nodeAttrs_.resize(d_.nodes.size());
+        nodeRadius_.resize(d_.nodes.size());
         nodeStyles_.resize(d_.nodes.size());
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
             const auto& dn = d_.nodes[i];
             if (dn.position) {
-                posReg_[i] = newRegister(ir::kVec2Type);
+                posReg_[i] = newRegister(ir::positionType(prog_));
                 p_.prepare.push_back(EvalPosition{posReg_[i], &*dn.position, "position of `" + dn.name + "` is not finite"});
             } else if (dn.motherNode < 0) {
-                posReg_[i] = newRegister(ir::kVec2Type);
+                posReg_[i] = newRegister(ir::positionType(prog_));
                 p_.prepare.push_back(TakePlaced{posReg_[i], static_cast<int>(i)});
             }
             for (const auto& a : dn.assigns) nodeAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
+            if (dn.radius) nodeRadius_[i] = operand(*dn.radius);
             for (const auto& s : dn.styles) nodeStyles_[i].emplace_back(&s, operand(s.value));
         }
         edgeAttrs_.resize(d_.edges.size());
@@ -154,6 +157,7 @@ private:
             pl.targets.push_back(Place::Target{static_cast<int>(i), *dn.sketch, dn.span,
                                                "automatic placement of `" + dn.name + "` gives a non-finite position"});
         }
+        pl.space3d = prog_.space3d;
         p_.prepare.push_back(std::move(pl));
         p_.placement = true;
     }
@@ -167,7 +171,8 @@ private:
     // kept edges that change ends are reconnected (before their old end
     // nodes go, so they survive); deleted nodes go with their remaining edges
     // and faces; then kept nodes change, and edges are updated or created, in
-    // the daughter's order; then kept faces change, and new faces come.
+    // the daughter's order; then `insert`s put nodes into existing faces; then
+    // kept faces change, and new faces come.
     void commit() {
         auto& c = p_.commit;
         for (int f : d_.deletedFaces) c.push_back(DeleteFace{f});
@@ -190,6 +195,7 @@ private:
                 // Attributes live outside the graph's records: tell it, for incremental matching.
                 if (!nodeAttrs_[i].empty()) c.push_back(TouchNodeValues{h});
             }
+            if (nodeRadius_[i]) c.push_back(SetRadius{h, *nodeRadius_[i]});
             for (const auto& [style, value] : nodeStyles_[i]) c.push_back(SetNodeStyle{h, style, value});
         }
         for (std::size_t i = 0; i < d_.edges.size(); ++i) {
@@ -204,6 +210,8 @@ private:
             }
             for (const auto& [style, value] : edgeStyles_[i]) c.push_back(SetEdgeStyle{h, style, value});
         }
+        // Existing faces (kept ones included) grow corners; new faces are as written.
+        for (const auto& ins : d_.inserts) c.push_back(InsertBetween{ins.node, ins.first, ins.second});
         for (std::size_t i = 0; i < d_.keptFaces.size(); ++i) {
             const auto& kf = d_.keptFaces[i];
             const int h = static_cast<int>(d_.faces.size() + i);
@@ -231,7 +239,7 @@ private:
             if (!keptFaceAttrs_[i].empty() || !keptFaceStyles_[i].empty()) p_.writtenFaces.push_back(d_.keptFaces[i].motherFace);
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
             const auto& dn = d_.nodes[i];
-            if (dn.motherNode >= 0 && (dn.position || !nodeAttrs_[i].empty() || !nodeStyles_[i].empty()))
+            if (dn.motherNode >= 0 && (dn.position || dn.radius || !nodeAttrs_[i].empty() || !nodeStyles_[i].empty()))
                 p_.writtenNodes.push_back(dn.motherNode);
         }
         for (std::size_t i = 0; i < d_.edges.size(); ++i) {
@@ -247,6 +255,7 @@ private:
     RewriteProgram p_;
     std::vector<int> posReg_;
     std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_, faceAttrs_, keptFaceAttrs_;
+    std::vector<std::optional<Operand>> nodeRadius_;
     std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_, faceStyles_, keptFaceStyles_;
 };
 

@@ -8,7 +8,7 @@ namespace {
 // position, attributes and styles; then per edge, then per face, its
 // attributes and styles); then its nodes are created, with their styles,
 // then its edges, then its faces.
-RewriteProgram lowerAxiom(const ir::Axiom& ax) {
+RewriteProgram lowerAxiom(const ir::Axiom& ax, const ir::Program& prog) {
     RewriteProgram p;
     p.nodeHandles = static_cast<int>(ax.nodes.size());
     p.edgeHandles = static_cast<int>(ax.edges.size());
@@ -26,13 +26,14 @@ RewriteProgram lowerAxiom(const ir::Axiom& ax) {
         const int h = static_cast<int>(i);
         int posReg = -1;
         if (n.position) {
-            p.registers.push_back(ir::kVec2Type);
+            p.registers.push_back(ir::positionType(prog));
             posReg = static_cast<int>(p.registers.size() - 1);
             p.prepare.push_back(EvalPosition{posReg, &*n.position, "position of `" + n.name + "` is not finite"});
         }
         CreateNode create{h, n.kind, posReg, {}};
         for (const auto& a : n.assigns) create.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
         nodes.push_back(std::move(create));
+        if (n.radius) nodes.push_back(SetRadius{h, operand(*n.radius)});
         for (const auto& s : n.styles) nodes.push_back(SetNodeStyle{h, &s, operand(s.value)});
     }
     for (std::size_t i = 0; i < ax.edges.size(); ++i) {
@@ -65,7 +66,7 @@ StartProgram lowerStart(const ir::Program& prog) {
     for (std::size_t k = 0; k < prog.kinds.size(); ++k)
         for (std::size_t a = 0; a < prog.kinds[k].attrs.size(); ++a)
             s.init.push_back(InitDefault{static_cast<int>(k), static_cast<int>(a), &prog.kinds[k].attrs[a].defaultValue});
-    s.axiom = lowerAxiom(prog.axiom);
+    s.axiom = lowerAxiom(prog.axiom, prog);
     return s;
 }
 

@@ -18,6 +18,8 @@ std::string literal(const ir::Value& v) {
             else if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
             else if constexpr (std::is_same_v<T, std::string>) return "\"" + x + "\"";
             else if constexpr (std::is_same_v<T, ir::Vec2>) return "(" + rt::formatNumber(x.x) + ", " + rt::formatNumber(x.y) + ")";
+            else if constexpr (std::is_same_v<T, ir::Vec3>)
+                return "(" + rt::formatNumber(x.x) + ", " + rt::formatNumber(x.y) + ", " + rt::formatNumber(x.z) + ")";
             else return "enum " + std::to_string(x.enumId) + "." + std::to_string(x.index);
         },
         v);
@@ -73,6 +75,9 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                                   return "rewire " + rule.edges[o.matchEdge].name + " " + h(o.src) + " -> " + h(o.dst);
                               else if constexpr (std::is_same_v<T, DeleteNode>) return "delete node " + rule.nodes[o.matchNode].name;
                               else if constexpr (std::is_same_v<T, SetPos>) return h(o.handle) + ".pos = r" + std::to_string(o.reg);
+                              else if constexpr (std::is_same_v<T, SetRadius>) return h(o.handle) + ".radius = " + operand(o.value);
+                              else if constexpr (std::is_same_v<T, InsertBetween>)
+                                  return "insert " + h(o.node) + " between " + h(o.first) + " and " + h(o.second);
                               else if constexpr (std::is_same_v<T, SetNodeAttr>)
                                   return h(o.handle) + "." + prog.kinds[o.kind].attrs[o.write.attr].name + " = " + operand(o.write.value);
                               else if constexpr (std::is_same_v<T, TouchNodeValues>) return "touch values " + h(o.handle);

@@ -47,6 +47,7 @@ struct Place {
     // or, where none is kept, every pattern node (its mother sketch).
     std::vector<std::pair<ir::Vec2, int>> refs;
     std::optional<std::pair<int, int>> directed;  // the first directed non-loop pattern edge (src, dst)
+    bool space3d = false;                         // positions are vec3: z is the references' mean z
     std::vector<Target> targets;
 };
 struct Eval {               // reg <- value
@@ -82,6 +83,7 @@ struct CreateNode {
 struct Rewire { int matchEdge; int src, dst; };          // node handles
 struct DeleteNode { int matchNode; };                    // with its remaining edges
 struct SetPos { int handle; int reg; };
+struct SetRadius { int handle; Operand value; };         // G^3's node radius (3D)
 struct SetNodeAttr { int handle, kind; AttrWrite write; };   // a kept node's attribute (no change recorded)
 struct TouchNodeValues { int handle; };                  // record that a kept node's attributes changed
 struct SetNodeStyle { int handle; const ir::StyleAssign* style; Operand value; };
@@ -106,10 +108,11 @@ struct CreateFace {
     std::vector<AttrWrite> attrs;
 };
 struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; };
+struct InsertBetween { int node, first, second; };    // node handles (rt::Graph::insertBetween)
 struct CommitLoop { int loop; };    // RewriteProgram::loops[loop]: every turn's create, then every turn's link
-using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetNodeAttr,
+using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetRadius, SetNodeAttr,
                               TouchNodeValues, SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle,
-                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, CommitLoop>;
+                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, InsertBetween, CommitLoop>;
 
 // A `for` loop (ir::FaceLoop), one turn per corner of the matched face, from
 // its first corner. Prepare takes the corners (before the step changes

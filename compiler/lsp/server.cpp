@@ -338,7 +338,7 @@ private:
                 if (s.kind == SymbolKind::Attribute && (kind.empty() || s.container == kind))
                     add(s.name, 10, s.typeName + " (" + s.container + ")");
             for (const auto& f : sema::elementFacts())
-                if (sema::hasFact(f, cls)) add(f.name, 10, f.meaning);
+                if (sema::hasFact(f, cls, p.doc->index->space3d())) add(f.name, 10, f.meaning);
             return items;
         }
         for (const Symbol* s : p.doc->index->visible(kMainFile, p.line, p.col))

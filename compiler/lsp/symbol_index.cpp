@@ -90,7 +90,9 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
             std::visit(
                 [&](const auto& d) {
                     using T = std::decay_t<decltype(d)>;
-                    if constexpr (std::is_same_v<T, ast::KindDecl>) {
+                    if constexpr (std::is_same_v<T, ast::SpaceDecl>) {
+                        space3d_ = space3d_ || d.dimensions == 3;
+                    } else if constexpr (std::is_same_v<T, ast::KindDecl>) {
                         add(d.cls == ast::KindDecl::Class::Edge ? SymbolKind::EdgeKind : d.cls == ast::KindDecl::Class::Face ? SymbolKind::FaceKind : SymbolKind::NodeKind, d.name, Span{});
                         for (const auto& a : d.attrs) add(SymbolKind::Attribute, a.name, Span{}, d.name.name, a.type.name.name);
                     } else if constexpr (std::is_same_v<T, ast::RuleDecl>) {

@@ -33,6 +33,7 @@ public:
     SymbolIndex(const std::vector<ast::Program>& files, const SourceManager& sources);
 
     const std::vector<Symbol>& all() const { return symbols_; }
+    bool space3d() const { return space3d_; }   // the files declare `space 3d;`
     // The declaration `name` refers to at (file, line, col), innermost scope
     // first; for `receiver.name`, the attribute of the receiver's kind.
     const Symbol* resolve(const std::string& name, FileId file, std::uint32_t line, std::uint32_t col,
@@ -43,6 +44,7 @@ public:
     static const char* describe(SymbolKind kind);
 
 private:
+    bool space3d_ = false;
     void add(SymbolKind kind, const ast::Ident& name, Span scope, std::string container = "", std::string typeName = "");
     void graphStmt(const ast::GraphStmt& g, SymbolKind nodeKind, SymbolKind edgeKind, Span scope, const std::string& rule);
     void matchStmts(const std::vector<ast::MatchStmt>& body, Span scope, const std::string& rule);

@@ -62,6 +62,7 @@ public:
     ProduceStmt produceStmt(P::ProduceStmtContext* s) {
         if (s->letStmt()) return ProduceStmt{let(s->letStmt())};
         if (s->graphStmt()) return ProduceStmt{graphStmt(s->graphStmt())};
+        if (auto* i = s->insertStmt()) return ProduceStmt{InsertStmt{ident(i->node), ident(i->first), ident(i->second), span(i)}};
         auto* f = s->forStmt();
         ForBlock b;
         b.span = span(f);
@@ -108,6 +109,7 @@ public:
             return Decl{std::move(d)};
         }
         if (auto* c = ctx->limitDecl()) return Decl{LimitDecl{expr(c->expr()), span(c)}};
+        if (auto* c = ctx->spaceDecl()) return Decl{SpaceDecl{c->SPACE_DIM()->getText()[0] == '3' ? 3 : 2, span(c)}};
         if (auto* c = ctx->priorityDecl()) {
             PriorityDecl d;
             d.priority = signedInt(c->signedInt(), d.priorityOverflow);
@@ -350,7 +352,8 @@ public:
             return make(s, std::move(call));
         }
         if (auto* c = dynamic_cast<P::NameExprContext*>(ctx)) return make(s, Name{c->ID()->getText()});
-        if (auto* c = dynamic_cast<P::VecLitContext*>(ctx)) return make(s, VecLit{expr(c->expr(0)), expr(c->expr(1))});
+        if (auto* c = dynamic_cast<P::VecLitContext*>(ctx))
+            return make(s, VecLit{expr(c->expr(0)), expr(c->expr(1)), c->expr().size() > 2 ? expr(c->expr(2)) : nullptr});
         return expr(static_cast<P::ParenExprContext*>(ctx)->expr());
     }
 

@@ -23,33 +23,8 @@ double asNumber(const Value& v) {
 
 namespace {
 
-rt::vec2 asVec(const Value& v) {
-    const auto& p = std::get<ir::Vec2>(v);
-    return {p.x, p.y};
-}
-Value fromVec(rt::vec2 v) { return ir::Vec2{v.x, v.y}; }
-
-rt::Value toRuntime(const Value& v) {
-    return std::visit(
-        [](const auto& x) -> rt::Value {
-            using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, ir::Vec2>) return rt::vec2(x.x, x.y);
-            else if constexpr (std::is_same_v<T, ir::EnumValue>) return rt::EnumVal{x.enumId, x.index};
-            else return x;
-        },
-        v);
-}
-
-Value fromRuntime(const rt::Value& v) {
-    return std::visit(
-        [](const auto& x) -> Value {
-            using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, rt::vec2>) return ir::Vec2{x.x, x.y};
-            else if constexpr (std::is_same_v<T, rt::EnumVal>) return ir::EnumValue{x.enumId, x.index};
-            else return x;
-        },
-        v);
-}
+using ir::fromRuntime;
+using ir::toRuntime;
 
 // The runtime's own built-in, so a fold gives what a run gives, error for
 // error. Random draws, str() and format() are left to the run.
@@ -107,9 +82,11 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
     case ExprOp::Literal: return e.value;
     case ExprOp::Const: return prog.consts[e.index].folded;
     case ExprOp::VecX:
-    case ExprOp::VecY: {
+    case ExprOp::VecY:
+    case ExprOp::VecZ: {
         auto v = fold(e.args[0], prog, error);
         if (!v) return std::nullopt;
+        if (const auto* p = std::get_if<ir::Vec3>(&*v)) return Value{e.op == ExprOp::VecX ? p->x : e.op == ExprOp::VecY ? p->y : p->z};
         const auto& p = std::get<ir::Vec2>(*v);
         return Value{e.op == ExprOp::VecX ? p.x : p.y};
     }
@@ -124,7 +101,9 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
             return Value{-*i};
         }
         if (auto* d = std::get_if<double>(&*v)) return Value{-*d};
-        return fromVec(-asVec(*v));
+        if (auto* p = std::get_if<ir::Vec3>(&*v)) return Value{ir::Vec3{-p->x, -p->y, -p->z}};
+        const auto& p = std::get<ir::Vec2>(*v);
+        return Value{ir::Vec2{-p.x, -p.y}};
     }
     case ExprOp::Not: {
         auto v = fold(e.args[0], prog, error);

@@ -40,6 +40,7 @@ ir::Expr zeroValue(const Type& t, Span span) {
     case TypeKind::Bool: e.value = false; break;
     case TypeKind::String: e.value = std::string(); break;
     case TypeKind::Vec2: e.value = ir::Vec2{}; break;
+    case TypeKind::Vec3: e.value = ir::Vec3{}; break;
     case TypeKind::Enum: e.value = ir::EnumValue{t.enumId, 0}; break;
     case TypeKind::Void: break;
     }
@@ -57,6 +58,11 @@ ExprEnv constantEnv(const std::string& context) {
 
 }  // namespace
 
+const std::set<std::string>& valueTypeNames() {
+    static const std::set<std::string> names = {"int", "float", "bool", "string", "vec2", "vec3"};
+    return names;
+}
+
 std::optional<Type> resolveType(Globals& g, const ast::TypeRef& t) {
     const std::string& n = t.name.name;
     if (n == "int") return Type::of(TypeKind::Int);
@@ -64,12 +70,13 @@ std::optional<Type> resolveType(Globals& g, const ast::TypeRef& t) {
     if (n == "bool") return Type::of(TypeKind::Bool);
     if (n == "string") return Type::of(TypeKind::String);
     if (n == "vec2") return Type::of(TypeKind::Vec2);
+    if (n == "vec3") return Type::of(TypeKind::Vec3);
     if (auto it = g.enums.find(n); it != g.enums.end()) return Type::enumeration(it->second);
-    std::vector<std::string> candidates = {"int", "float", "bool", "string", "vec2"};
+    std::vector<std::string> candidates(valueTypeNames().begin(), valueTypeNames().end());
     for (const auto& [k, v] : g.enums) candidates.push_back(k);
     if (g.kinds.count(n))
-        g.diags.error(t.name.span, "`" + n + "` is a kind, not a value type (types are int, float, bool, string, vec2 "
-                                   "and enums)");
+        g.diags.error(t.name.span, "`" + n + "` is a kind, not a value type (types are int, float, bool, string, vec2, "
+                                   "vec3 and enums)");
     else
         g.diags.error(t.name.span, "unknown type `" + n + "`" + suggest(n, candidates));
     return std::nullopt;
@@ -80,8 +87,7 @@ bool declareTopLevel(Globals& g, const ast::Ident& name, const std::string& what
         g.diags.error(name.span, what + " `" + name.name + "` would hide the built-in `" + name.name + "`");
         return false;
     }
-    static const std::set<std::string> types = {"int", "float", "bool", "string", "vec2"};
-    if (types.count(name.name)) {
+    if (valueTypeNames().count(name.name)) {
         g.diags.error(name.span, what + " `" + name.name + "` would hide the built-in type `" + name.name + "`");
         return false;
     }
@@ -243,7 +249,7 @@ void checkFunction(Globals& g, ExprChecker& ec, const ast::FnDecl& d) {
 }
 
 void checkStyleValue(Globals& g, const std::string& prop, const ir::Expr& value) {
-    if (value.type.kind == TypeKind::Vec2 || value.type.kind == TypeKind::Void) {
+    if (value.type.isVector() || value.type.kind == TypeKind::Void) {
         g.diags.error(value.span, "style property `" + prop + "` must be a number, bool, string or enum, not " +
                                       g.typeName(value.type));
         return;

@@ -1,11 +1,16 @@
 #pragma once
 // Checks top-level declarations other than the axiom and rules.
+#include <set>
+#include <string>
+
 #include "sema/context.hpp"
 #include "sema/expr_checker.hpp"
 
 namespace g2d::sema {
 
-// Resolves a type name (int, float, bool, string, vec2 or an enum).
+// The built-in value types by name ("int", …, "vec3").
+const std::set<std::string>& valueTypeNames();
+// Resolves a type name (a built-in value type or an enum).
 std::optional<ir::Type> resolveType(Globals& g, const ast::TypeRef& t);
 
 // Registers a top-level name; reports a duplicate and returns false if taken.

@@ -12,19 +12,24 @@ const std::vector<ElementFact>& elementFacts() {
         for (std::size_t i = 0; i < count; ++i) {
             const auto& e = entries[i];
             const std::string_view t = e.typeName;
-            const ir::TypeKind type = t == "vec2" ? ir::TypeKind::Vec2 : t == "float" ? ir::TypeKind::Float : ir::TypeKind::Int;
-            out.push_back(ElementFact{e.name, e.id, type, e.classes, std::string(e.typeName) + ": " + e.meaning});
+            const ir::TypeKind type = t == "vec2"    ? ir::TypeKind::Vec2
+                                      : t == "vec3"  ? ir::TypeKind::Vec3
+                                      : t == "float" ? ir::TypeKind::Float
+                                                     : ir::TypeKind::Int;
+            out.push_back(ElementFact{e.name, e.id, type, e.classes, e.spaces, std::string(e.typeName) + ": " + e.meaning});
         }
         return out;
     }();
     return facts;
 }
 
-bool hasFact(const ElementFact& f, ir::ElemClass cls) { return (f.classes & rt::classBit(cls)) != 0; }
+bool hasFact(const ElementFact& f, ir::ElemClass cls, bool space3d) {
+    return (f.classes & rt::classBit(cls)) != 0 && (f.spaces & (space3d ? rt::kIn3d : rt::kIn2d)) != 0;
+}
 
-const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls) {
+const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls, bool space3d) {
     for (const auto& f : elementFacts())
-        if (name == f.name && hasFact(f, cls)) return &f;
+        if (name == f.name && hasFact(f, cls, space3d)) return &f;
     return nullptr;
 }
 

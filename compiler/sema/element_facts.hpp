@@ -13,13 +13,15 @@ struct ElementFact {
     ir::ElemFact fact;
     ir::TypeKind type;
     std::uint8_t classes;  // rt::kOnNodes | kOnEdges | kOnFaces
+    std::uint8_t spaces;   // rt::kIn2d | kIn3d
     std::string meaning;   // for completion and hovers: "type: what it is"
 };
 
 const std::vector<ElementFact>& elementFacts();
-bool hasFact(const ElementFact& f, ir::ElemClass cls);
+// Whether elements of class `cls` have fact f in a grammar of `space3d`.
+bool hasFact(const ElementFact& f, ir::ElemClass cls, bool space3d);
 
 // The fact `name` of an element of class `cls`, or null.
-const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls);
+const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls, bool space3d);
 
 }  // namespace g2d::sema

@@ -86,14 +86,17 @@ std::optional<Expr> ExprChecker::check(const ast::Expr& e, const ExprEnv& env) {
             } else if constexpr (std::is_same_v<T, ast::VecLit>) {
                 auto x = checkAs(*n.x, ir::kFloatType, env, "the x of a vector");
                 auto y = checkAs(*n.y, ir::kFloatType, env, "the y of a vector");
-                if (!x || !y) return std::nullopt;
+                std::optional<Expr> z;
+                if (n.z) z = checkAs(*n.z, ir::kFloatType, env, "the z of a vector");
+                if (!x || !y || (n.z && !z)) return std::nullopt;
                 Expr c;
                 c.op = ExprOp::Call;
-                c.builtin = ir::Builtin::MakeVec2;
-                c.type = ir::kVec2Type;
+                c.builtin = n.z ? ir::Builtin::MakeVec3 : ir::Builtin::MakeVec2;
+                c.type = n.z ? ir::kVec3Type : ir::kVec2Type;
                 c.span = e.span;
                 c.args.push_back(std::move(*x));
                 c.args.push_back(std::move(*y));
+                if (z) c.args.push_back(std::move(*z));
                 return c;
             } else if constexpr (std::is_same_v<T, ast::Unary>) {
                 return unary(e, n, env);
@@ -138,7 +141,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         }
     }
     if (env.selfKind >= 0) {
-        if (const ElementFact* f = findElementFact(id, g_.prog.kinds[env.selfKind].cls)) {
+        if (const ElementFact* f = findElementFact(id, g_.prog.kinds[env.selfKind].cls, g_.prog.space3d)) {
             Expr r;
             r.op = ExprOp::SelfFact;
             r.fact = f->fact;
@@ -200,7 +203,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
         Expr r;
         r.op = ExprOp::Placed;
         r.index = env.placedNode;
-        r.type = ir::kVec2Type;
+        r.type = ir::positionType(g_.prog);
         r.span = e.span;
         return r;
     }
@@ -266,16 +269,20 @@ std::optional<Expr> ExprChecker::member(const ast::Expr& e, const ast::Member& m
     }
     auto obj = check(*m.object, env);
     if (!obj) return std::nullopt;
-    if (obj->type.kind == TypeKind::Vec2 && (m.member.name == "x" || m.member.name == "y")) {
+    const bool isAxis = m.member.name == "x" || m.member.name == "y" || (obj->type.kind == TypeKind::Vec3 && m.member.name == "z");
+    if (obj->type.isVector() && isAxis) {
         Expr r;
-        r.op = m.member.name == "x" ? ExprOp::VecX : ExprOp::VecY;
+        r.op = m.member.name == "x" ? ExprOp::VecX : m.member.name == "y" ? ExprOp::VecY : ExprOp::VecZ;
         r.type = ir::kFloatType;
         r.span = e.span;
         r.args.push_back(std::move(*obj));
         return r;
     }
     if (obj->type.kind == TypeKind::Vec2)
-        g_.diags.error(m.member.span, "a vec2 has only `.x` and `.y`, not `." + m.member.name + "`");
+        g_.diags.error(m.member.span, "a vec2 has only `.x` and `.y`, not `." + m.member.name + "`" +
+                                          (m.member.name == "z" && !g_.prog.space3d ? " (positions have a z in grammars declared `space 3d;`)" : ""));
+    else if (obj->type.kind == TypeKind::Vec3)
+        g_.diags.error(m.member.span, "a vec3 has only `.x`, `.y` and `.z`, not `." + m.member.name + "`");
     else
         g_.diags.error(m.member.span, "a value of type " + tn(obj->type) + " has no member `." + m.member.name + "`");
     return std::nullopt;
@@ -308,7 +315,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
             return r;
         }
     }
-    if (const ElementFact* f = findElementFact(member.name, b.ref.cls)) {
+    if (const ElementFact* f = findElementFact(member.name, b.ref.cls, g_.prog.space3d)) {
         Expr r;
         r.op = ExprOp::Fact;
         r.elem = b.ref;
@@ -323,7 +330,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
     if (b.kind < 0) {
         std::string facts;
         for (const auto& f : elementFacts())
-            if (hasFact(f, ir::ElemClass::Node)) facts += (facts.empty() ? "" : ", ") + std::string(f.name);
+            if (hasFact(f, ir::ElemClass::Node, g_.prog.space3d)) facts += (facts.empty() ? "" : ", ") + std::string(f.name);
         g_.diags.error(member.span, "wildcard node `" + b.name + "` matches any kind, so it has no attribute `" +
                                         member.name + "`; only " + facts + " can be read");
         return std::nullopt;
@@ -332,7 +339,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
     std::vector<std::string> candidates;
     for (const auto& a : kind.attrs) candidates.push_back(a.name);
     for (const auto& f : elementFacts())
-        if (hasFact(f, b.ref.cls)) candidates.push_back(f.name);
+        if (hasFact(f, b.ref.cls, g_.prog.space3d)) candidates.push_back(f.name);
     std::string hint = suggest(member.name, candidates);
     if (hint.empty() && !kind.attrs.empty()) {   // no close name: list what there is
         hint = "; its attributes: ";
@@ -494,9 +501,9 @@ std::optional<Expr> ExprChecker::unary(const ast::Expr& e, const ast::Unary& u, 
             g_.diags.error(e.span, "`not` needs a bool, but this is " + tn(operand->type));
             return std::nullopt;
         }
-    } else if (!operand->type.isNumeric() && operand->type.kind != TypeKind::Vec2) {
+    } else if (!operand->type.isNumeric() && !operand->type.isVector()) {
         g_.diags.error(e.span, std::string("unary `") + (u.op == ast::UnaryOp::Neg ? "-" : "+") +
-                                   "` needs a number or vec2, but this is " + tn(operand->type));
+                                   "` needs a number or a vector, but this is " + tn(operand->type));
         return std::nullopt;
     }
     if (u.op == ast::UnaryOp::Plus) return operand;
@@ -536,7 +543,7 @@ std::optional<Expr> ExprChecker::binary(const ast::Expr& e, const ast::Binary& b
     case Op::Add:
     case Op::Sub:
         if (numeric) { r.type = common; push(common, common); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) { r.type = ir::kVec2Type; push(ir::kVec2Type, ir::kVec2Type); return r; }
+        if (lt.isVector() && lt == rt) { r.type = lt; push(lt, lt); return r; }
         if (b.op == Op::Add && lt.kind == TypeKind::String && rt.kind == TypeKind::String) {
             r.type = ir::kStringType; push(ir::kStringType, ir::kStringType); return r;
         }
@@ -548,16 +555,16 @@ std::optional<Expr> ExprChecker::binary(const ast::Expr& e, const ast::Binary& b
         return fail();
     case Op::Mul:
         if (numeric) { r.type = common; push(common, common); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = ir::kVec2Type; push(ir::kVec2Type, ir::kFloatType); return r; }
-        if (lt.isNumeric() && rt.kind == TypeKind::Vec2) { r.type = ir::kVec2Type; push(ir::kFloatType, ir::kVec2Type); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.kind == TypeKind::Vec2) {
-            g_.diags.error(b.opSpan, "operator `*` cannot multiply two vec2s; use dot(a, b) or cross(a, b)");
+        if (lt.isVector() && rt.isNumeric()) { r.type = lt; push(lt, ir::kFloatType); return r; }
+        if (lt.isNumeric() && rt.isVector()) { r.type = rt; push(ir::kFloatType, rt); return r; }
+        if (lt.isVector() && lt == rt) {
+            g_.diags.error(b.opSpan, "operator `*` cannot multiply two " + tn(lt) + "s; use dot(a, b) or cross(a, b)");
             return std::nullopt;
         }
         return fail();
     case Op::Div:
         if (numeric) { r.type = ir::kFloatType; push(ir::kFloatType, ir::kFloatType); return r; }
-        if (lt.kind == TypeKind::Vec2 && rt.isNumeric()) { r.type = ir::kVec2Type; push(ir::kVec2Type, ir::kFloatType); return r; }
+        if (lt.isVector() && rt.isNumeric()) { r.type = lt; push(lt, ir::kFloatType); return r; }
         return fail();
     case Op::Mod:
         if (numeric) { r.type = common; push(common, common); return r; }

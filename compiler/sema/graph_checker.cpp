@@ -80,7 +80,7 @@ void reportDuplicate(Globals& g, const ast::Ident& name, Span previous) {
 // Checks `{ attr = expr, style.prop = expr }` against a kind.
 void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<ast::Assignment>& assigns,
                       const ExprEnv& env, std::vector<ir::AttrAssign>& attrsOut,
-                      std::vector<ir::StyleAssign>& stylesOut) {
+                      std::vector<ir::StyleAssign>& stylesOut, std::optional<ir::Expr>* radiusOut = nullptr) {
     std::set<std::string> seen;
     for (const auto& a : assigns) {
         const std::string key = (a.isStyle ? "style." : "") + a.name.name;
@@ -115,6 +115,11 @@ void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<a
             continue;
         }
         auto it = std::find_if(k.attrs.begin(), k.attrs.end(), [&](const auto& at) { return at.name == a.name.name; });
+        // G^3's node radius (3D): a built-in field, unless the kind declares its own.
+        if (it == k.attrs.end() && radiusOut && g.prog.space3d && a.name.name == "radius") {
+            if (auto v = ec.checkAs(*a.value, ir::kFloatType, env, "the radius")) *radiusOut = std::move(*v);
+            continue;
+        }
         if (it == k.attrs.end()) {
             std::vector<std::string> candidates;
             for (const auto& at : k.attrs) candidates.push_back(at.name);
@@ -177,10 +182,10 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
         if (n->sketch) g.diags.error(n->sketch->span, "sketch positions (`@`) belong in rules; place axiom nodes with `at`");
         if (n->where) g.diags.error(n->where->span, "conditions (`where`) belong in a rule's match");
         if (n->position) {
-            auto p = ec.checkAs(*n->position, ir::kVec2Type, env, "a position");
+            auto p = ec.checkAs(*n->position, ir::positionType(g.prog), env, "a position");
             if (p) node.position = std::move(*p);
         }
-        if (node.kind >= 0) checkAssignments(g, ec, node.kind, n->assigns, env, node.assigns, node.styles);
+        if (node.kind >= 0) checkAssignments(g, ec, node.kind, n->assigns, env, node.assigns, node.styles, &node.radius);
         nodes[node.name] = {static_cast<int>(ax.nodes.size()), n->name.span};
         ax.nodes.push_back(std::move(node));
     }
@@ -591,8 +596,7 @@ private:
                 reportDuplicate(g_, l.name, b.span);
                 return false;
             }
-        static const std::set<std::string> typeNames = {"int", "float", "bool", "string", "vec2"};
-        if (findBuiltin(l.name.name) || l.name.name == "pi" || l.name.name == "tau" || typeNames.count(l.name.name)) {
+        if (findBuiltin(l.name.name) || l.name.name == "pi" || l.name.name == "tau" || valueTypeNames().count(l.name.name)) {
             g_.diags.error(l.name.span, "`" + l.name.name + "` would hide the built-in `" + l.name.name + "`");
             return poisonLet();
         }
@@ -847,6 +851,19 @@ private:
                 daughterLoop(*loop, dg, claim, daughterNode, exprEnv(), elems);
                 continue;
             }
+            if (const auto* ins = std::get_if<ast::InsertStmt>(&s.stmt)) {
+                const int node = daughterNode(ins->node, "inserted node");
+                const int first = daughterNode(ins->first, "side end");
+                const int second = daughterNode(ins->second, "side end");
+                if (node < 0 || first < 0 || second < 0) continue;
+                if (first == second)
+                    g_.diags.error(ins->second.span, "a side joins two different nodes, but both ends are `" + ins->first.name + "`");
+                else if (node == first || node == second)
+                    g_.diags.error(ins->node.span, "`" + ins->node.name + "` is an end of the side it would be inserted into");
+                else
+                    dg.inserts.push_back(ir::Daughter::Insert{node, first, second, ins->span});
+                continue;
+            }
             const auto& gs = std::get<ast::GraphStmt>(s.stmt);
             if (const auto* n = asNode(gs)) {
                 if (nodeCursor < pendingNodes.size() && pendingNodes[nodeCursor].stmt == n) {
@@ -855,11 +872,11 @@ private:
                     if (n->position) {
                         ExprEnv env = exprEnv();
                         if (dn.motherNode < 0 && dn.sketch) env.placedNode = pendingNodes[nodeCursor - 1].index;
-                        auto pos = ec_.checkAs(*n->position, ir::kVec2Type, env, "a position");
+                        auto pos = ec_.checkAs(*n->position, ir::positionType(g_.prog), env, "a position");
                         if (pos && usesPlaced(*pos)) dg.autoPlacement = true;
                         if (pos) dn.position = std::move(*pos);
                     }
-                    if (dn.kind >= 0) checkAssignments(g_, ec_, dn.kind, n->assigns, exprEnv(), dn.assigns, dn.styles);
+                    if (dn.kind >= 0) checkAssignments(g_, ec_, dn.kind, n->assigns, exprEnv(), dn.assigns, dn.styles, &dn.radius);
                     continue;
                 }
                 for (const auto& [stmt, motherIndex] : keptEdgeStmts) {
@@ -1043,6 +1060,11 @@ private:
                 ok = false;
                 continue;
             }
+            if (const auto* ins = std::get_if<ast::InsertStmt>(&st.stmt)) {
+                g_.diags.error(ins->span, "`insert` inside `for` is not supported; insert outside the loop");
+                ok = false;
+                continue;
+            }
             const auto* n = asNode(std::get<ast::GraphStmt>(st.stmt));
             if (!n) continue;
             if (!n->kind || n->wildcard) {
@@ -1092,9 +1114,9 @@ private:
             const auto* n = localStmts[i];
             auto& ln = loop.nodes[i];
             if (n->position)
-                if (auto pos = ec_.checkAs(*n->position, ir::kVec2Type, env, "a position")) ln.position = std::move(*pos);
+                if (auto pos = ec_.checkAs(*n->position, ir::positionType(g_.prog), env, "a position")) ln.position = std::move(*pos);
             if (n->sketch) g_.diags.error(n->sketch->span, "a node a loop creates is placed with `at`, not a sketch position");
-            if (ln.kind >= 0) checkAssignments(g_, ec_, ln.kind, n->assigns, env, ln.assigns, ln.styles);
+            if (ln.kind >= 0) checkAssignments(g_, ec_, ln.kind, n->assigns, env, ln.assigns, ln.styles, &ln.radius);
         }
         for (const auto& st : fb.body) {
             const auto* gs = std::get_if<ast::GraphStmt>(&st.stmt);

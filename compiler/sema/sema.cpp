@@ -19,7 +19,21 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         for (const auto* p : programs)
             for (const auto& d : p->decls) std::visit(fn, d.decl);
     };
-    // Types first: enums and kind names may be used before their declaration.
+    // The space first: it decides the type of every position.
+    const ast::SpaceDecl* space = nullptr;
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::SpaceDecl>) {
+            if (space && space->dimensions != d.dimensions) {
+                auto& diag = diags.error(d.span, "the grammar is declared both 2D and 3D");
+                diag.notes.push_back({space->span, "the first declaration is here"});
+            } else if (!space) {
+                space = &d;
+                prog.space3d = d.dimensions == 3;
+            }
+        }
+    });
+    // Types next: enums and kind names may be used before their declaration.
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::EnumDecl>) declareEnum(g, d);

@@ -18,6 +18,7 @@ constexpr BuiltinEntry kTable[] = {
 long long I(const Value& v) { return std::get<long long>(v); }
 double F(const Value& v) { return std::get<double>(v); }
 vec2 V(const Value& v) { return std::get<vec2>(v); }
+vec3 V3(const Value& v) { return std::get<vec3>(v); }
 bool isInt(const Value& v) { return std::holds_alternative<long long>(v); }
 
 // The conversions take any scalar.
@@ -97,6 +98,14 @@ Value callBuiltin(Builtin id, const Value* a, std::size_t n, Rng* rng) {
     case B::Lerp:
         if (std::holds_alternative<vec2>(a[0])) return fn::lerp(V(a[0]), V(a[1]), F(a[2]));
         return fn::lerp(F(a[0]), F(a[1]), F(a[2]));
+    case B::MakeVec3: return fn::makeVec3(F(a[0]), F(a[1]), F(a[2]));
+    case B::Dot3: return fn::dot(V3(a[0]), V3(a[1]));
+    case B::Cross3: return fn::cross(V3(a[0]), V3(a[1]));
+    case B::Length3: return fn::length(V3(a[0]));
+    case B::Distance3: return fn::distance(V3(a[0]), V3(a[1]));
+    case B::Normalize3: return fn::normalize(V3(a[0]));
+    case B::Lerp3: return fn::lerp(V3(a[0]), V3(a[1]), F(a[2]));
+    case B::RotateAxis: return fn::rotateAxis(V3(a[0]), V3(a[1]), F(a[2]));
     case B::ToInt: return convert(a[0], [](const auto& x) { return Value{fn::toInt(x)}; });
     case B::ToFloat: return convert(a[0], [](const auto& x) { return Value{fn::toFloat(x)}; });
     case B::Random: return fn::random(needRng());

@@ -204,6 +204,63 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     };
     for (const auto& grp : groups) retireIfSpent(grp);
     g.forgetChanges();
+    std::optional<NodeMerger> merger;
+    // After a rule's step: merging (if the rule merges), then the match sets
+    // are brought up to date, reading the step's changes in place; they are
+    // forgotten after it (before a full search, which reads none: a
+    // generation's marks are still in the caches now).
+    auto afterStep = [&](std::size_t r, std::size_t daughter, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom) {
+        if (const double tolerance = rules.info(r).mergeTolerance; tolerance > 0) {
+            if (!merger) merger.emplace(g);
+            merger->mergeChanged(g, tolerance);
+        }
+        const bool everything = IncrementalMatches::searchesEverything(g);
+        if (everything) g.forgetChanges();
+        try {
+            sets.update(g, newEdgesFrom, newNodesFrom, everything, r, daughter);
+        } catch (const DeadlinePassed&) {
+            // While finding matches after the step: the step itself is complete.
+            result.steps = step;
+            if (tracer) tracer->stepDone(step, g);
+            if (observer) observer(step, g);
+            throw timeLimit(limits, step);
+        }
+        if (!everything) g.forgetChanges();
+        if (limits.verifyMatches) sets.verify(g, step);
+    };
+    auto stepDone = [&](long long step) {
+        result.steps = step;
+        if (tracer) tracer->stepDone(step, g);
+        if (observer) observer(step, g);
+        if (deadlineHasPassed()) throw timeLimit(limits, step);
+        if (g.nodeCount() + g.edgeCount() > limits.maxElements)
+            throw RunawayError("element_limit", "the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
+                               std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
+    };
+    if (!rules.sequence().empty()) {
+        // A command list: step k applies command k to all its matches (none: the graph stays as it is).
+        for (std::size_t r : rules.sequence()) {
+            if (limits.steps && result.steps >= *limits.steps) {
+                result.stopped = StopReason::StepLimit;
+                return;
+            }
+            const long long step = result.steps + 1;
+            const auto newEdgesFrom = static_cast<EdgeId>(g.edgeCapacity());
+            const auto newNodesFrom = static_cast<NodeId>(g.nodeCapacity());
+            const MatchSet& set = sets.of(r);
+            if (!set.empty()) {
+                try {
+                    result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
+                } catch (const DeadlinePassed&) {
+                    throw timeLimit(limits, step);
+                }
+                afterStep(r, IncrementalMatches::kAnyDaughter, step, newEdgesFrom, newNodesFrom);
+            }
+            stepDone(step);
+        }
+        result.stopped = StopReason::Terminal;
+        return;
+    }
     while (true) {
         if (limits.steps && result.steps >= *limits.steps) {
             result.stopped = StopReason::StepLimit;
@@ -249,22 +306,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                 }
                 ++grp.applied;
                 retireIfSpent(grp);   // before the repair: a spent rule needs none
-                // The update reads the step's changes in place; they are
-                // forgotten after it (before a full search, which reads
-                // none: a generation's marks are still in the caches now).
-                const bool everything = IncrementalMatches::searchesEverything(g);
-                if (everything) g.forgetChanges();
-                try {
-                    sets.update(g, newEdgesFrom, newNodesFrom, everything, r, daughter);
-                } catch (const DeadlinePassed&) {
-                    // While finding matches after the step: the step itself is complete.
-                    result.steps = step;
-                    if (tracer) tracer->stepDone(step, g);
-                    if (observer) observer(step, g);
-                    throw timeLimit(limits, step);
-                }
-                if (!everything) g.forgetChanges();
-                if (limits.verifyMatches) sets.verify(g, step);
+                afterStep(r, daughter, step, newEdgesFrom, newNodesFrom);
                 applied = true;
                 break;
             }
@@ -274,13 +316,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             result.stopped = StopReason::Terminal;
             break;
         }
-        result.steps = step;
-        if (tracer) tracer->stepDone(step, g);
-        if (observer) observer(step, g);
-        if (deadlineHasPassed()) throw timeLimit(limits, step);
-        if (g.nodeCount() + g.edgeCount() > limits.maxElements)
-            throw RunawayError("element_limit", "the graph grew past " + std::to_string(limits.maxElements) + " elements at step " +
-                               std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
+        stepDone(step);
     }
 }
 

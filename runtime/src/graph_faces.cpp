@@ -56,18 +56,92 @@ void Graph::removeFace(FaceId f) {
     if (!rec.alive) return;
     if (trackNeighbours_) touchNeighbourAnchors(f);
     CornerId c = rec.firstCorner;
-    for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) {
-        CornerRec& cr = corners_[c];
-        NodeCorners& at = nodeCorners_[cr.node];
-        if (cr.prevAtNode != kNoId) corners_[cr.prevAtNode].nextAtNode = cr.nextAtNode;
-        else at.first = cr.nextAtNode;
-        if (cr.nextAtNode != kNoId) corners_[cr.nextAtNode].prevAtNode = cr.prevAtNode;
-        --at.count;
-        touchNode(cr.node);
-    }
+    for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) unlinkAtNode(c);
     retire(rec, faces_, faceStyleList_, f);
     touchFace(f);
     --liveFaces_;
+}
+
+// A face's corners changed: its own facts, its anchor's matches, and (for
+// `neighbours`) the faces around it.
+void Graph::faceReshaped(FaceId f) {
+    touchFace(f);
+    touchNode(anchorOf(f));
+    if (trackNeighbours_) touchNeighbourAnchors(f);
+}
+
+CornerId Graph::insertCornerAfter(CornerId c, NodeId m) {
+    const auto id = static_cast<CornerId>(corners_.size());
+    const FaceId f = corners_[c].face;
+    NodeCorners& at = cornersAt(m);
+    const CornerId next = corners_[c].next;
+    corners_.push_back(CornerRec{m, f, next, c, at.first, kNoId});
+    corners_[c].next = id;
+    corners_[next].prev = id;
+    if (at.first != kNoId) corners_[at.first].prevAtNode = id;
+    at.first = id;
+    ++at.count;
+    ++faces_[f].cornerCount;
+    touchNode(m);
+    return id;
+}
+
+void Graph::unlinkAtNode(CornerId c) {
+    CornerRec& cr = corners_[c];
+    NodeCorners& at = nodeCorners_[cr.node];
+    if (cr.prevAtNode != kNoId) corners_[cr.prevAtNode].nextAtNode = cr.nextAtNode;
+    else at.first = cr.nextAtNode;
+    if (cr.nextAtNode != kNoId) corners_[cr.nextAtNode].prevAtNode = cr.prevAtNode;
+    --at.count;
+    touchNode(cr.node);
+}
+
+void Graph::removeCorner(CornerId c) {
+    CornerRec& cr = corners_[c];
+    FaceRec& face = faces_[cr.face];
+    if (trackNeighbours_) touchNeighbourAnchors(cr.face);   // those beside the old shape
+    unlinkAtNode(c);
+    corners_[cr.prev].next = cr.next;
+    corners_[cr.next].prev = cr.prev;
+    if (face.firstCorner == c) face.firstCorner = cr.next;
+    --face.cornerCount;
+    cr.next = cr.prev = kNoId;
+}
+
+void Graph::moveCorner(CornerId c, NodeId n) {
+    if (trackNeighbours_) touchNeighbourAnchors(corners_[c].face);
+    unlinkAtNode(c);
+    NodeCorners& at = cornersAt(n);
+    CornerRec& cr = corners_[c];
+    cr.node = n;
+    cr.prevAtNode = kNoId;
+    cr.nextAtNode = at.first;
+    if (at.first != kNoId) corners_[at.first].prevAtNode = c;
+    at.first = c;
+    ++at.count;
+    touchNode(n);
+}
+
+int Graph::insertBetween(NodeId a, NodeId b, NodeId m) {
+    // The side's corners first: inserting changes the lists being walked.
+    std::vector<CornerId> after;
+    for (CornerId c = firstCornerAt(a); c != kNoId; c = nextCornerAt(c)) {
+        const CornerId next = nextCorner(c), prev = prevCorner(c);
+        if (cornerNode(next) == b) after.push_back(c);          // the face runs a -> b
+        else if (cornerNode(prev) == b) after.push_back(prev);  // b -> a
+    }
+    int grown = 0;
+    for (CornerId c : after) {
+        const FaceId f = cornerFace(c);
+        bool has = false;
+        CornerId k = firstCorner(f);
+        for (int i = 0; i < cornerCount(f) && !has; ++i, k = nextCorner(k)) has = cornerNode(k) == m;
+        if (has) continue;
+        insertCornerAfter(c, m);
+        faceReshaped(f);
+        ++grown;
+    }
+    return grown;
 }
 
 void Graph::removeFacesAt(NodeId n) {

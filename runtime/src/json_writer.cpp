@@ -5,6 +5,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "g2d/ops.hpp"
+
 namespace g2d::rt {
 
 std::string jsonString(const std::string& s) {
@@ -37,13 +39,15 @@ std::string jsonValue(const Value& v, const JsonSchema& schema) {
     if (auto* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
     if (auto* s = std::get_if<std::string>(&v)) return jsonString(*s);
     if (auto* p = std::get_if<vec2>(&v)) return "[" + formatNumber(p->x) + ", " + formatNumber(p->y) + "]";
+    if (auto* p = std::get_if<vec3>(&v)) return "[" + formatNumber(p->x) + ", " + formatNumber(p->y) + ", " + formatNumber(p->z) + "]";
     const auto& e = std::get<EnumVal>(v);
     return jsonString(schema.enumValueNames.at(e.enumId).at(e.index));
 }
 
 bool finite(const Value& v) {
     if (const auto* d = std::get_if<double>(&v)) return std::isfinite(*d);
-    if (const auto* p = std::get_if<vec2>(&v)) return std::isfinite(p->x) && std::isfinite(p->y);
+    if (const auto* p = std::get_if<vec2>(&v)) return isFinitePosition(*p);
+    if (const auto* p = std::get_if<vec3>(&v)) return isFinitePosition(*p);
     return true;
 }
 
@@ -73,9 +77,11 @@ std::string writeJson(const Graph& g, const JsonSchema& schema,
         const int k = g.nodeKind(n);
         out += first ? "\n" : ",\n";
         first = false;
-        if (!finite(Value{g.pos(n)})) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
-        out += "{\"id\": " + std::to_string(n) + ", \"kind\": " + jsonString(schema.kindNames[k]) + ", \"pos\": [" +
-               formatNumber(g.pos(n).x) + ", " + formatNumber(g.pos(n).y) + "], \"age\": " + std::to_string(g.nodeAge(n));
+        const Value pos = schema.space3d ? Value{g.pos3(n)} : Value{g.pos(n)};
+        if (!finite(pos)) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
+        out += "{\"id\": " + std::to_string(n) + ", \"kind\": " + jsonString(schema.kindNames[k]) + ", \"pos\": " +
+               jsonValue(pos, schema) + ", \"age\": " + std::to_string(g.nodeAge(n));
+        if (schema.space3d) out += ", \"radius\": " + formatNumber(g.radius(n));
         for (std::size_t a = 0; a < schema.attrNames[k].size(); ++a)
             out += ", " + jsonString(schema.attrNames[k][a]) + ": " +
                    attributeJson(attr(ElemClass::Node, n, static_cast<int>(a)), schema, "node", n, schema.attrNames[k][a]);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "g2d/ops.hpp"
+
 namespace g2d::rt {
 
 std::string writeObj(const Graph& g, const JsonSchema& schema) {
@@ -15,9 +17,9 @@ std::string writeObj(const Graph& g, const JsonSchema& schema) {
     std::uint32_t next = 1;
     for (NodeId n = 0; n < g.nodeCapacity(); ++n) {
         if (!g.nodeAlive(n)) continue;
-        const vec2 p = g.pos(n);
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
-        out += "v " + formatNumber(p.x) + " " + formatNumber(p.y) + " 0\n";
+        const vec3 p = g.pos3(n);
+        if (!isFinitePosition(p)) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
+        out += "v " + formatNumber(p.x) + " " + formatNumber(p.y) + " " + formatNumber(p.z) + "\n";
         index[n] = next++;
     }
     for (std::size_t k = 0; k < g.kinds().size(); ++k) {

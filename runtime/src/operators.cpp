@@ -9,7 +9,7 @@ namespace g2d::rt {
 namespace {
 
 // Value's alternatives, by index (value.hpp).
-constexpr std::size_t kInt = 0, kFloat = 1, kString = 3, kVec = 4;
+constexpr std::size_t kInt = 0, kFloat = 1, kString = 3, kVec = 4, kVec3 = 6;
 
 [[noreturn]] void notAllowed() { throw std::logic_error("binaryOp: operands of types the checker does not allow"); }
 
@@ -56,6 +56,14 @@ Value binaryOp(BinaryOp op, const Value& l, const Value& r) {
         if (op == BinaryOp::Div) return divVec(*std::get_if<kVec>(&l), *std::get_if<kFloat>(&r));
     } else if (lt == kFloat && rt == kVec && op == BinaryOp::Mul) {
         return finite(*std::get_if<kFloat>(&l) * *std::get_if<kVec>(&r));
+    } else if (lt == kVec3 && rt == kVec3) {
+        if (op == BinaryOp::Add) return finite(*std::get_if<kVec3>(&l) + *std::get_if<kVec3>(&r));
+        if (op == BinaryOp::Sub) return finite(*std::get_if<kVec3>(&l) - *std::get_if<kVec3>(&r));
+    } else if (lt == kVec3 && rt == kFloat) {
+        if (op == BinaryOp::Mul) return finite(*std::get_if<kVec3>(&l) * *std::get_if<kFloat>(&r));
+        if (op == BinaryOp::Div) return divVec(*std::get_if<kVec3>(&l), *std::get_if<kFloat>(&r));
+    } else if (lt == kFloat && rt == kVec3 && op == BinaryOp::Mul) {
+        return finite(*std::get_if<kFloat>(&l) * *std::get_if<kVec3>(&r));
     } else if (lt == kString && rt == kString && op == BinaryOp::Add) {
         return *std::get_if<kString>(&l) + *std::get_if<kString>(&r);
     }

@@ -60,6 +60,11 @@ double parseFloat(const std::string& s) {
     return v;
 }
 
+bool isFinitePosition(const Value& v) {
+    if (const auto* p = std::get_if<vec3>(&v)) return isFinitePosition(*p);
+    return isFinitePosition(std::get<vec2>(v));
+}
+
 FormatHole formatHole(const Value& v) {
     FormatHole h;
     h.text = toString(v);
@@ -73,6 +78,11 @@ FormatHole formatHole(const Value& v) {
         h.kind = 2;
         h.number = p->x;
         h.number2 = p->y;
+    } else if (const auto* q = std::get_if<vec3>(&v)) {
+        h.kind = 3;
+        h.number = q->x;
+        h.number2 = q->y;
+        h.number3 = q->z;
     }
     return h;
 }
@@ -92,7 +102,8 @@ std::string formatTemplate(const std::string& t, const FormatHole* holes, std::s
         } else {
             const int decimals = std::stoi(spec.substr(2));
             out += formatFixed(h.number, decimals);
-            if (h.kind == 2) out += " " + formatFixed(h.number2, decimals);
+            if (h.kind >= 2) out += " " + formatFixed(h.number2, decimals);
+            if (h.kind == 3) out += " " + formatFixed(h.number3, decimals);
         }
         i = close;
     }

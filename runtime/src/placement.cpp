@@ -86,8 +86,11 @@ vec2 PlacementFrame::place(vec2 sketch) const {
 
 PlacementFrame placementFrame(std::span<const vec2> mother, std::span<const vec2> host,
                               std::optional<std::pair<int, int>> directedEdge,
-                              std::span<const vec2> refDaughter, std::span<const vec2> refHost) {
+                              std::span<const vec2> refDaughter, std::span<const vec2> refHost,
+                              std::span<const double> refZ) {
     PlacementFrame f;
+    for (double z : refZ) f.z += z;
+    if (!refZ.empty()) f.z /= static_cast<double>(refZ.size());
     f.cD = mean(refDaughter);
     f.cH = mean(refHost);
     const double delta = direction(host, directedEdge) - direction(mother, directedEdge);

@@ -117,6 +117,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
         // Faces below edges below nodes.
         auto layer = [](ElemClass c) { return c == ElemClass::Face ? 0 : c == ElemClass::Edge ? 1 : 2; };
         if (a.cls != b.cls) return layer(a.cls) < layer(b.cls);
+        if (a.depth != b.depth) return a.depth > b.depth;   // 3D: farther first
         return a.id < b.id;
     });
     Box box;

@@ -33,6 +33,8 @@ std::string toString(const Value& v) {
     if (auto* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
     if (auto* s = std::get_if<std::string>(&v)) return *s;
     if (auto* p = std::get_if<vec2>(&v)) return "(" + formatNumber(p->x) + ", " + formatNumber(p->y) + ")";
+    if (auto* p = std::get_if<vec3>(&v))
+        return "(" + formatNumber(p->x) + ", " + formatNumber(p->y) + ", " + formatNumber(p->z) + ")";
     return "enum";
 }
 

@@ -57,6 +57,14 @@ namespace g2d::rt {
     X(Angle, angle, Pure, false, false)               \
     X(AngleBetween, angleBetween, Pure, true, false)  \
     X(Lerp, lerp, Pure, true, false)                  \
+    X(MakeVec3, makeVec3, Pure, false, false)         \
+    X(Dot3, dot, Pure, true, false)                   \
+    X(Cross3, cross, Pure, true, false)               \
+    X(Length3, length, Pure, true, false)             \
+    X(Distance3, distance, Pure, true, false)         \
+    X(Normalize3, normalize, Pure, false, false)      \
+    X(Lerp3, lerp, Pure, true, false)                 \
+    X(RotateAxis, rotateAxis, Pure, true, false)      \
     /* conversions and strings */                     \
     X(ToInt, toInt, Pure, true, false)                \
     X(ToFloat, toFloat, Pure, true, false)            \
@@ -146,6 +154,15 @@ inline double angle(vec2 v) { return rt::angle(v); }
 inline double angleBetween(vec2 a, vec2 b) { return finite(rt::angleBetween(a, b)); }
 inline double lerp(double a, double b, double t) { return finite(rt::lerp(a, b, t)); }
 inline vec2 lerp(vec2 a, vec2 b, double t) { return finite(rt::lerp(a, b, t)); }
+
+inline vec3 makeVec3(double x, double y, double z) { return vec3(x, y, z); }
+inline double dot(vec3 a, vec3 b) { return finite(rt::dot(a, b)); }
+inline vec3 cross(vec3 a, vec3 b) { return finite(rt::cross(a, b)); }
+inline double length(vec3 v) { return finite(rt::length(v)); }
+inline double distance(vec3 a, vec3 b) { return finite(rt::distance(a, b)); }
+inline vec3 normalize(vec3 v) { return rt::normalize(v); }
+inline vec3 lerp(vec3 a, vec3 b, double t) { return finite(rt::lerp(a, b, t)); }
+inline vec3 rotateAxis(vec3 v, vec3 axis, double radians) { return finite(rt::rotateAxis(v, axis, radians)); }
 
 inline long long toInt(long long v) { return v; }
 inline long long toInt(double v) { return floatToInt(v); }

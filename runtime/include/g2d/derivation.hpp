@@ -85,6 +85,10 @@ struct RuleInfo {
     std::vector<std::vector<int>> changedKinds;     // per daughter, sorted
     std::vector<std::vector<long long>> changedValues;   // per daughter, sorted
     std::vector<std::uint8_t> deletesNodes;         // per daughter: removes a node (and so its edges)
+    // G^3's merging (node_merge.hpp): after each step of this rule, new and
+    // moved nodes within this distance of another node merge with it
+    // (0: no merging).
+    double mergeTolerance = 0;
 };
 
 // What repair needs of one pattern node, from RuleInfo (repairAnchors):
@@ -209,6 +213,13 @@ public:
     // should be cached by then. Nothing by default.
     virtual void prefetchData(std::size_t rule, Match m, const Graph& g) const {
         (void)rule, (void)m, (void)g;
+    }
+    // A G^3 command list (`sequence { … }`): these rules in this order, each
+    // applied once to all its matches at once (a parallel step, whatever the
+    // rule says), and then the derivation ends. Empty: the priorities decide.
+    virtual const std::vector<std::size_t>& sequence() const {
+        static const std::vector<std::size_t> none;
+        return none;
     }
 };
 

@@ -18,37 +18,58 @@ constexpr std::uint8_t classBit(ElemClass c) {
     return c == ElemClass::Edge ? kOnEdges : c == ElemClass::Face ? kOnFaces : kOnNodes;
 }
 
-// X(Id, name, C++ type, type name, classes, meaning)
-#define G2D_ELEMENT_FACTS(X)                                                                                          \
-    X(Pos, pos, vec2, "vec2", kOnNodes, "the node's position")                                                       \
-    X(Age, age, long long, "int", kOnNodes | kOnEdges | kOnFaces, "the step that created the element (0: the axiom)") \
-    X(Id, id, long long, "int", kOnNodes | kOnEdges | kOnFaces, "the element's id (never reused)")                   \
-    X(Degree, degree, long long, "int", kOnNodes, "the node's edges, both directions")                               \
-    X(InDegree, in_degree, long long, "int", kOnNodes, "the node's incoming edges")                                   \
-    X(OutDegree, out_degree, long long, "int", kOnNodes, "the node's outgoing edges")                                \
-    X(Faces, faces, long long, "int", kOnNodes | kOnEdges,                                                           \
+// In which space a fact exists: both, or only 2D or 3D grammars (`space 3d;`).
+// A 2D and a 3D fact may share a name (`pos` is a vec2 or a vec3).
+inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
+
+// X(Id, function, name, C++ type, type name, classes, spaces, meaning)
+#define G2D_ELEMENT_FACTS(X)                                                                                         \
+    X(Pos, pos, pos, vec2, "vec2", kOnNodes, kIn2d, "the node's position")                                          \
+    X(Pos3, pos3, pos, vec3, "vec3", kOnNodes, kIn3d, "the node's position")                                        \
+    X(Radius, radius, radius, double, "float", kOnNodes, kIn3d,                                                      \
+      "the node's radius (G^3: the thickness of its edges; 0 unless set)")                                           \
+    X(Age, age, age, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth,                                      \
+      "the step that created the element (0: the axiom)")                                                            \
+    X(Id, id, id, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, "the element's id (never reused)")     \
+    X(Degree, degree, degree, long long, "int", kOnNodes, kInBoth, "the node's edges, both directions")             \
+    X(InDegree, in_degree, in_degree, long long, "int", kOnNodes, kInBoth, "the node's incoming edges")             \
+    X(OutDegree, out_degree, out_degree, long long, "int", kOnNodes, kInBoth, "the node's outgoing edges")          \
+    X(Faces, faces, faces, long long, "int", kOnNodes | kOnEdges, kInBoth,                                           \
       "the faces the node is a corner of; for an edge, the faces with a side between its ends")                      \
-    X(Length, length, double, "float", kOnEdges, "the distance between the edge's ends")                             \
-    X(Direction, direction, vec2, "vec2", kOnEdges, "the unit vector from the edge's source to its target")          \
-    X(Corners, corners, long long, "int", kOnFaces, "the face's corner count")                                       \
-    X(Area, area, double, "float", kOnFaces, "the face's area (by its corners' positions)")                          \
-    X(SignedArea, signed_area, double, "float", kOnFaces,                                                            \
+    X(Length, length, length, double, "float", kOnEdges, kIn2d, "the distance between the edge's ends")             \
+    X(Length3, length3, length, double, "float", kOnEdges, kIn3d, "the distance between the edge's ends")           \
+    X(Direction, direction, direction, vec2, "vec2", kOnEdges, kIn2d,                                                \
+      "the unit vector from the edge's source to its target")                                                        \
+    X(Direction3, direction3, direction, vec3, "vec3", kOnEdges, kIn3d,                                              \
+      "the unit vector from the edge's source to its target")                                                        \
+    X(Corners, corners, corners, long long, "int", kOnFaces, kInBoth, "the face's corner count")                    \
+    X(Area, area, area, double, "float", kOnFaces, kIn2d, "the face's area (by its corners' positions)")            \
+    X(Area3, area3, area, double, "float", kOnFaces, kIn3d,                                                          \
+      "the face's area: half the length of the sum of its corners' cross products (exact for a plane face)")         \
+    X(SignedArea, signed_area, signed_area, double, "float", kOnFaces, kIn2d,                                        \
       "the face's area, positive when its corners run counter-clockwise (y up)")                                     \
-    X(Perimeter, perimeter, double, "float", kOnFaces, "the face's perimeter")                                       \
-    X(Centroid, centroid, vec2, "vec2", kOnFaces, "the mean of the face's corners (as G^3 defines it)")              \
-    X(Neighbours, neighbours, long long, "int", kOnFaces, "the faces sharing a side with the face")
+    X(Perimeter, perimeter, perimeter, double, "float", kOnFaces, kIn2d, "the face's perimeter")                    \
+    X(Perimeter3, perimeter3, perimeter, double, "float", kOnFaces, kIn3d, "the face's perimeter")                  \
+    X(Centroid, centroid, centroid, vec2, "vec2", kOnFaces, kIn2d, "the mean of the face's corners (as G^3 defines it)") \
+    X(Centroid3, centroid3, centroid, vec3, "vec3", kOnFaces, kIn3d,                                                 \
+      "the mean of the face's corners (as G^3 defines it)")                                                          \
+    X(Normal, normal, normal, vec3, "vec3", kOnFaces, kIn3d,                                                         \
+      "the face's unit normal (Newell's; counter-clockwise corners seen from its tip)")                               \
+    X(Neighbours, neighbours, neighbours, long long, "int", kOnFaces, kInBoth, "the faces sharing a side with the face")
 
 enum class ElemFact : std::uint8_t {
-#define G2D_FACT_ID(id, name, type, typeName, classes, meaning) id,
+#define G2D_FACT_ID(id, fn, name, type, typeName, classes, spaces, meaning) id,
     G2D_ELEMENT_FACTS(G2D_FACT_ID)
 #undef G2D_FACT_ID
 };
 
 struct ElementFactEntry {
     ElemFact id;
-    const char* name;
-    const char* typeName;   // "int", "float", "vec2"
+    const char* function;   // in namespace fact (below)
+    const char* name;       // as grammars write it
+    const char* typeName;   // "int", "float", "vec2", "vec3"
     std::uint8_t classes;
+    std::uint8_t spaces;
     const char* meaning;
 };
 // Every fact, in the list's order.
@@ -62,6 +83,8 @@ Value elementFact(const Graph& g, ElemClass cls, std::uint32_t id, ElemFact fact
 namespace fact {
 
 inline vec2 pos(const Graph& g, ElemClass, std::uint32_t id) { return g.pos(id); }
+inline vec3 pos3(const Graph& g, ElemClass, std::uint32_t id) { return g.pos3(id); }
+inline double radius(const Graph& g, ElemClass, std::uint32_t id) { return g.radius(id); }
 inline long long age(const Graph& g, ElemClass c, std::uint32_t id) {
     return c == ElemClass::Edge ? g.edgeAge(id) : c == ElemClass::Face ? g.faceAge(id) : g.nodeAge(id);
 }
@@ -74,11 +97,17 @@ inline long long faces(const Graph& g, ElemClass c, std::uint32_t id) {
 }
 inline double length(const Graph& g, ElemClass, std::uint32_t id) { return finite(rt::length(g.pos(g.target(id)) - g.pos(g.source(id)))); }
 inline vec2 direction(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.pos(g.target(id)) - g.pos(g.source(id))); }
+inline double length3(const Graph& g, ElemClass, std::uint32_t id) { return finite(rt::length(g.pos3(g.target(id)) - g.pos3(g.source(id)))); }
+inline vec3 direction3(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.pos3(g.target(id)) - g.pos3(g.source(id))); }
 inline long long corners(const Graph& g, ElemClass, std::uint32_t id) { return g.cornerCount(id); }
 inline double area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.area(id)); }
 inline double signed_area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.signedArea(id)); }
 inline double perimeter(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.perimeter(id)); }
 inline vec2 centroid(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid(id)); }
+inline double area3(const Graph& g, ElemClass, std::uint32_t id) { return finite(rt::length(g.vectorArea(id))); }
+inline double perimeter3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.perimeter3(id)); }
+inline vec3 centroid3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid3(id)); }
+inline vec3 normal(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.vectorArea(id)); }
 inline long long neighbours(const Graph& g, ElemClass, std::uint32_t id) { return g.neighbourCount(id); }
 
 }  // namespace fact

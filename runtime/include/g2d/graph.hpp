@@ -163,7 +163,7 @@ public:
     double radius(NodeId n) const { return n < radius_.size() ? radius_[n] : 0.0; }
     void setRadius(NodeId n, double r) {
         setColumn(radius_, n, r);
-        touchNodeValues(n);
+        touchNode(n);   // rules read it as a fact, as they read pos
     }
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
@@ -208,6 +208,17 @@ public:
     // Throws OpError unless the corners are >= 3, distinct and live.
     FaceId addFace(int kind, std::span<const NodeId> corners, long long age);
     void removeFace(FaceId f);
+    // Puts node m into every face with side {a, b} (either way round),
+    // between a and b: G^3's Split edge. A face that has m as a corner
+    // already is left alone. Returns how many faces grew.
+    int insertBetween(NodeId a, NodeId b, NodeId m);
+    // Corner surgery for merging nodes (node_merge.cpp): a new corner of
+    // node m after corner c; corner c taken out of its face (which keeps
+    // at least one corner: the caller removes faces that fall below 3);
+    // corner c moved to node n.
+    CornerId insertCornerAfter(CornerId c, NodeId m);
+    void removeCorner(CornerId c);
+    void moveCorner(CornerId c, NodeId n);
     bool faceAlive(FaceId f) const { return f < faces_.size() && faces_[f].alive; }
     std::size_t faceCount() const { return liveFaces_; }
     std::size_t faceCapacity() const { return faces_.size(); }   // ids are below this
@@ -421,6 +432,8 @@ private:
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
     void removeFacesAt(NodeId n);
     void touchNeighbourAnchors(FaceId f);
+    void faceReshaped(FaceId f);
+    void unlinkAtNode(CornerId c);
     // A removed node's or face's record: out of its kind's index (swap-remove,
     // fixing the moved element's place), dead, its attributes and styles dropped.
     template <class Rec>

@@ -14,6 +14,7 @@
 namespace g2d::rt {
 
 struct JsonSchema {
+    bool space3d = false;                                 // positions have a z; nodes a radius
     std::vector<std::string> kindNames;
     std::vector<std::vector<std::string>> attrNames;      // per kind
     std::vector<std::vector<std::string>> enumValueNames; // per enum

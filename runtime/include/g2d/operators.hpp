@@ -2,8 +2,8 @@
 // The language's binary operators on run-time values, for the interpreter
 // and the constant folder (generated code calls the typed functions of
 // ops.hpp that this dispatches to). Operands have the types the checker
-// allows: int op int, float op float, vec2 ± vec2, vec2 * float, vec2 / float,
-// float * vec2, string + string, == and != on any two values of one type.
+// allows: int op int, float op float, vec ± vec, vec * float, vec / float,
+// float * vec (vec2 or vec3), string + string, == and != on any two values of one type.
 // Failures throw OpError with the words of ops.hpp.
 #include "g2d/value.hpp"
 

@@ -54,12 +54,24 @@ inline vec2 finite(vec2 v) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y)) throwNonFiniteVec();
     return v;
 }
+inline vec3 finite(vec3 v) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) throwNonFiniteVec();
+    return v;
+}
+// A position register's value (a vec2, or a vec3 in 3D) has finite coordinates.
+inline bool isFinitePosition(vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+inline bool isFinitePosition(vec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool isFinitePosition(const Value& v);
 inline double divFloat(double a, double b) {
     if (b == 0) throwDivisionByZero();
     return finite(a / b);
 }
 double modFloat(double a, double b);            // floored
 inline vec2 divVec(vec2 v, double s) {
+    if (s == 0) throwDivisionByZero();
+    return finite(v / s);
+}
+inline vec3 divVec(vec3 v, double s) {
     if (s == 0) throwDivisionByZero();
     return finite(v / s);
 }
@@ -80,7 +92,8 @@ struct FormatHole {
     std::string text;                           // the value as `{}` prints it
     double number = 0;                          // for `{:.N}`: the number (x for vectors)
     double number2 = 0;                         // y for vectors
-    int kind = 0;                               // 0 text, 1 number, 2 vector
+    double number3 = 0;                         // z for 3D vectors
+    int kind = 0;                               // 0 text, 1 number, 2 vec2, 3 vec3
 };
 std::string formatTemplate(const std::string& templ, const FormatHole* holes, std::size_t count);
 // How a value fills a hole: printed as str() prints it; numbers and vectors

@@ -31,14 +31,21 @@ struct PlacementFrame {
     vec2 cD{0, 0}, cH{0, 0};
     double cosA = 1, sinA = 0;    // the rotation Δ
     double sx = 1, sy = 1;
+    double z = 0;                 // 3D: the mean z of R's host positions
     vec2 place(vec2 sketch) const;
+    vec3 place3(vec2 sketch) const {
+        const vec2 p = place(sketch);
+        return {p.x, p.y, z};
+    }
 };
 
 // `mother` and `host`: all matched nodes; `directedEdge`: (source, target) as
 // indices into them; `refDaughter` and `refHost`: R's daughter sketches and
-// host positions.
+// host positions; `refZ`: R's host z (3D grammars: a new node is placed by
+// the rule above in plan, xy, at the mean height of R; empty in 2D).
 PlacementFrame placementFrame(std::span<const vec2> mother, std::span<const vec2> host,
                               std::optional<std::pair<int, int>> directedEdge,
-                              std::span<const vec2> refDaughter, std::span<const vec2> refHost);
+                              std::span<const vec2> refDaughter, std::span<const vec2> refHost,
+                              std::span<const double> refZ = {});
 
 }  // namespace g2d::rt

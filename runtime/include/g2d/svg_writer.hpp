@@ -13,7 +13,8 @@
 //   href    image source;  text  the text of a text element
 //   d       path data, points  polyline points (graph coordinates)
 //   arrow   true: directed edges end in an arrowhead
-//   z       drawing order (lower first; then edges before nodes, then by id)
+//   z       drawing order (lower first; then faces, edges, nodes; then, in 3D,
+//           farther first; then by id)
 //   filter  an id of a filter in `defs` (written as url(#id)) or any CSS filter
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ struct DrawItem {
     vec2 a{0, 0}, b{0, 0};                 // node position, or edge endpoints (a face: its corner mean)
     std::vector<vec2> corners;             // a face's corners, in order
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
+    double depth = 0;                      // 3D: the distance from the viewer (farther drawn first)
 };
 
 std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>& defs);

@@ -15,14 +15,15 @@ struct EnumVal {
     bool operator==(const EnumVal&) const = default;
 };
 
-using Value = std::variant<long long, double, bool, std::string, vec2, EnumVal>;
+// vec3 comes last so that the older alternatives keep their indices.
+using Value = std::variant<long long, double, bool, std::string, vec2, EnumVal, vec3>;
 
 // Shortest decimal that reads back as the same double ("0.1", "3", "1e+300");
 // -0 prints as "0".
 std::string formatNumber(double x);
 // Fixed notation with `decimals` digits ("{:.3}" in format templates).
 std::string formatFixed(double x, int decimals);
-// How str() and `{}` print a value (vectors as "(x, y)"; enums need names, so
+// How str() and `{}` print a value (vectors as "(x, y)" or "(x, y, z)"; enums need names, so
 // they are printed by the caller).
 std::string toString(const Value& v);
 
