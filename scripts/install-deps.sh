@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs g2d's build dependencies from Debian's packages, and the npm packages
-# of the VS Code extension (editors/vscode, pinned by its lock file). Idempotent: does
+# of the VS Code extension (editors/vscode) and of the --view page (web/view,
+# bundled for the build to embed), pinned by their lock files. Idempotent: does
 # nothing (and needs no network) when everything is already present.
 set -euo pipefail
 
@@ -14,7 +15,7 @@ packages=(
   chromium
 )
 
-# The editor tests and the VS Code package use Node.js packages from npm.
+# The editor tests, the VS Code package and the --view page's script use Node.js packages from npm.
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
   packages+=(nodejs npm)
 fi
@@ -40,5 +41,5 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# npm packages of the VS Code extension, as pinned by its lock file.
+# npm packages of the VS Code extension and the --view page, as pinned by their lock files.
 bash "$(dirname "$0")/install-npm.sh"

@@ -1,13 +1,29 @@
 #!/usr/bin/env bash
 # Installs the npm packages of the VS Code extension (editors/vscode):
 # vscode-languageclient; vscode-textmate and vscode-oniguruma for the grammar
-# tests; @vscode/vsce to package. As pinned by its package-lock.json, without
-# install scripts. Idempotent: does nothing (and needs no network) when they
-# are installed and the lock file has not changed since. The editor tests run
-# it first (a ctest fixture), so they pass alone and in any order.
+# tests; @vscode/vsce to package. And those of the --view page (web/view):
+# three and esbuild, which bundles the page's script into
+# web/view/dist/view.bundle.js for CMake to embed in the runtime. As pinned
+# by their package-lock.json files, without install scripts. Idempotent: does
+# nothing (and needs no network) when they are installed, the lock files have
+# not changed since and the bundle is newer than its sources. The editor
+# tests run it first (a ctest fixture), so they pass alone and in any order.
 set -euo pipefail
-vscode="$(cd "$(dirname "$0")/.." && pwd)/editors/vscode"
-if [ ! -f "$vscode/node_modules/.package-lock.json" ] || [ "$vscode/package-lock.json" -nt "$vscode/node_modules/.package-lock.json" ]; then
-  echo "install-npm: npm ci in editors/vscode" >&2
-  (cd "$vscode" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error)
+root="$(cd "$(dirname "$0")/.." && pwd)"
+
+npm_ci() {  # npm ci in $1 unless its node_modules match its lock file
+  if [ ! -f "$1/node_modules/.package-lock.json" ] || [ "$1/package-lock.json" -nt "$1/node_modules/.package-lock.json" ]; then
+    echo "install-npm: npm ci in ${1#"$root"/}" >&2
+    (cd "$1" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error)
+  fi
+}
+
+npm_ci "$root/editors/vscode"
+view="$root/web/view"
+npm_ci "$view"
+# Bundled again when the script, the package set or the build command changed.
+bundle="$view/dist/view.bundle.js"
+if [ ! -f "$bundle" ] || [ -n "$(find "$view/src" "$view/package.json" "$view/node_modules/.package-lock.json" -newer "$bundle" -print -quit)" ]; then
+  echo "install-npm: bundling web/view" >&2
+  (cd "$view" && npm run --silent build -- --log-level=warning)
 fi

@@ -11,6 +11,7 @@
 #include "g2d/obj_writer.hpp"
 #include "g2d/trace.hpp"
 #include "g2d/source_excerpt.hpp"
+#include "g2d/view_page.hpp"
 
 namespace g2d::rt {
 
@@ -145,13 +146,14 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         return usageError(request, "--timeout must be a positive number of seconds");
 
     // Outputs are opened first, so an unwritable path fails before the work.
-    std::unique_ptr<AtomicFile> svgFile, jsonFile, objFile, traceHtmlFile, traceJsonFile;
+    std::unique_ptr<AtomicFile> svgFile, jsonFile, objFile, viewFile, traceHtmlFile, traceJsonFile;
     try {
         if (!request.noSvg)
             svgFile = std::make_unique<AtomicFile>(
                 request.svgOut.value_or(std::filesystem::path(request.grammarFile).stem().string() + ".svg"));
         if (request.jsonOut) jsonFile = std::make_unique<AtomicFile>(*request.jsonOut);
         if (request.objOut) objFile = std::make_unique<AtomicFile>(*request.objOut);
+        if (request.viewOut) viewFile = std::make_unique<AtomicFile>(*request.viewOut);
         if (request.traceHtml) traceHtmlFile = std::make_unique<AtomicFile>(*request.traceHtml);
         if (request.traceJson) traceJsonFile = std::make_unique<AtomicFile>(*request.traceJson);
     } catch (const OutputError& e) {
@@ -201,17 +203,18 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
 
     try {
         const Graph& graph = grammar.graph();
-        const std::string svg = svgFile || traceHtmlFile ? writeSvg(grammar.drawItems(), grammar.svgDefs()) : "";
+        const std::string name = std::filesystem::path(request.grammarFile).filename().string();
+        const std::vector<DrawItem> items = svgFile || traceHtmlFile || viewFile ? grammar.drawItems() : std::vector<DrawItem>{};
+        const std::string svg = svgFile || traceHtmlFile ? writeSvg(items, grammar.svgDefs()) : "";
         if (svgFile) svgFile->commit(svg);
         if (trace) {
-            const std::string name = std::filesystem::path(request.grammarFile).filename().string();
             const std::string data = trace->json(name, request.seed, stopped);
             if (traceJsonFile) traceJsonFile->commit(data);
             if (traceHtmlFile) traceHtmlFile->commit(writeTracePage(data, svg, name));
         }
         if (jsonFile) {
             const std::vector<std::pair<std::string, Value>> meta = {
-                {"grammar", std::filesystem::path(request.grammarFile).filename().string()},
+                {"grammar", name},
                 {"seed", static_cast<long long>(request.seed)},
                 {"steps", result.steps},
                 {"stopped", stopped}};
@@ -219,6 +222,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                                        [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); }));
         }
         if (objFile) objFile->commit(writeObj(graph, grammar.jsonSchema()));
+        if (viewFile) viewFile->commit(writeViewPage(viewModelOf(graph, items, name)));
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "

@@ -33,6 +33,7 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
     addOptional(app, "-o,--output", r.svgOut, "SVG output (default: the grammar's name with .svg)", "FILE");
     addOptional(app, "--json", r.jsonOut, "Graph output in NetworkX node-link JSON", "FILE");
     addOptional(app, "--obj", r.objOut, "Wavefront OBJ output: nodes as vertices, faces by kind, edges as lines", "FILE");
+    addOptional(app, "--view", r.viewOut, "Write the model in 3D as a self-contained HTML page (drag to turn it)", "FILE");
     app.add_flag("--no-svg", r.noSvg, "Write no SVG");
     app.add_option("--seed", r.seed, "Seed of the random generator (default 1)")->check(CLI::NonNegativeNumber)->type_name("N");
     app.add_option("-D,--define", r.defines, "Set a parameter (the grammar's are listed below)")

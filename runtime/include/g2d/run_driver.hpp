@@ -1,6 +1,6 @@
 #pragma once
 // The run procedure shared by `g2d run` and compiled grammars:
-// RUN [-o OUT.svg] [--json OUT.json] [--no-svg] [--seed N] [-D NAME=VALUE]…
+// RUN [-o OUT.svg] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--seed N] [-D NAME=VALUE]…
 //     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial]
 #include <cstdint>
 #include <optional>
@@ -22,6 +22,7 @@ struct RunRequest {
     std::optional<std::string> svgOut;    // default: the grammar's name with .svg, in the current folder
     std::optional<std::string> jsonOut;
     std::optional<std::string> objOut;
+    std::optional<std::string> viewOut;   // the model in 3D, as a self-contained page (view_page.hpp)
     bool noSvg = false;
     std::uint64_t seed = 1;
     std::vector<std::string> defines;     // NAME=VALUE

@@ -1,0 +1,46 @@
+#pragma once
+// The page of `g2d run --view OUT.html`: the graph in 3D (three.js, orbit
+// controls), one self-contained HTML file that works offline. The model is
+// plain data, read from the graph (positions, with z) and its drawing
+// (colours and sizes as the SVG styles give them); the page is the model as
+// inline JSON plus the embedded script (web/view/src/view.js).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "g2d/graph.hpp"
+#include "g2d/svg_writer.hpp"
+
+namespace g2d::rt {
+
+struct ViewNode {
+    std::array<double, 3> pos{};
+    double radius = 0;     // 0: not drawn (tag "none"), still an edge's end or a face's corner
+    std::string color;     // CSS colour
+};
+struct ViewEdge {
+    std::uint32_t a = 0, b = 0;   // indices into ViewModel::nodes
+    std::string color;
+};
+struct ViewFace {
+    std::vector<std::uint32_t> corners;   // indices into ViewModel::nodes, in the face's order
+    std::string color;
+};
+struct ViewModel {
+    std::string title;
+    std::vector<ViewNode> nodes;   // every live node, in id order
+    std::vector<ViewEdge> edges;   // the edges drawn (not tag or stroke "none"), in id order
+    std::vector<ViewFace> faces;   // the faces drawn (not tag or fill "none"), in id order
+};
+
+// Nodes: style `r` (default 0.6% of the model's diagonal), colour `fill` or
+// else `stroke`; edges: `stroke`; faces: `fill` (SVG's defaults otherwise).
+// `items` are drawItems() of `g`.
+ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title);
+
+// The whole page. Numbers print as formatNumber does: the same model gives
+// the same bytes.
+std::string writeViewPage(const ViewModel& model);
+
+}  // namespace g2d::rt
