@@ -16,13 +16,15 @@ topDecl
     | limitDecl
     | priorityDecl
     | defsDecl
+    | mergeDecl
+    | sequenceDecl
     | ruleDecl
     ;
 
 // `space 3d;`: positions are vec3 (the default is `space 2d;`).
 spaceDecl   : 'space' SPACE_DIM ';' ;
 importDecl  : 'import' STRING ';' ;
-paramDecl   : 'param' ID ':' typeRef '=' expr ';' ;
+paramDecl   : 'param' name=(ID | 'merge') ':' typeRef '=' expr ';' ;
 constDecl   : 'const' ID (':' typeRef)? '=' expr ';' ;
 enumDecl    : 'enum' ID '{' ID (',' ID)* ','? '}' ;
 fnDecl      : 'fn' ID '(' (fnParam (',' fnParam)*)? ')' '->' typeRef '=' expr ';' ;
@@ -34,6 +36,11 @@ priorityOption
     | 'parallel'        # priorityParallel
     ;
 defsDecl    : 'defs' STRING ';' ;
+// merge within TOLERANCE;   every rule merges coinciding nodes (G^3 §3.1).
+// `merge` is a keyword that may also name a parameter (`param merge: bool`).
+mergeDecl   : 'merge' 'within' expr ';' ;
+// sequence { A; B; A; }   a G^3 command list: each once, in order, in parallel
+sequenceDecl: 'sequence' '{' (ID ';')* '}' ;
 
 typeRef     : ID ;
 
@@ -96,6 +103,7 @@ ruleOption
     | 'pick' ID                     # rulePick
     | 'ordered'                     # ruleOrdered
     | 'parallel'                    # ruleParallel
+    | word='merge'                  # ruleWordOption
     ;
 matchBlock  : 'match' '{' matchStmt* '}' ;
 matchStmt
@@ -143,7 +151,7 @@ primary
     | STRING                                                # stringLit
     | ('true' | 'false')                                    # boolLit
     | ID '(' (expr (',' expr)*)? ')'                        # callExpr
-    | ID                                                    # nameExpr
+    | name=(ID | 'merge')                                   # nameExpr
     | '(' expr ',' expr (',' expr)? ')'                     # vecLit
     | '(' expr ')'                                          # parenExpr
     ;
@@ -152,7 +160,7 @@ signedInt   : '-'? INT ;
 signedNumber: '-'? (INT | FLOAT) ;
 
 // ---- lexer -----------------------------------------------------------------
-SPACE_DIM   : [23] 'd' ;
+SPACE_DIM   : [23] [d] ;
 ID          : [a-zA-Z_] [a-zA-Z_0-9]* ;
 FLOAT       : DIGITS '.' DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
 INT         : DIGITS ;

@@ -139,10 +139,11 @@ struct RuleItem {
 };
 
 struct RuleOption {
-    enum class Kind { Priority, Pick, Ordered, Parallel } kind;
+    enum class Kind { Priority, Pick, Ordered, Parallel, Word } kind;
     long long priority = 0;
     bool priorityOverflow = false;
     Ident pick;
+    Ident word;                     // Word: an option named by a plain name (`merge`)
     Span span;
 };
 
@@ -187,10 +188,12 @@ struct PriorityDecl {
     Span span;
 };
 struct DefsDecl { std::string svg; Span span; };
+struct MergeDecl { ExprPtr tolerance; Span span; };
+struct SequenceDecl { std::vector<Ident> rules; Span span; };
 
 struct Decl {
     std::variant<SpaceDecl, ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
-                 PriorityDecl, DefsDecl, RuleDecl> decl;
+                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, RuleDecl> decl;
 };
 
 // One parsed file.

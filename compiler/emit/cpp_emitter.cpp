@@ -77,6 +77,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
         out += in + "info.changedValues.push_back(" + vectorLiteral(i.changedValues[d]) + ");\n";
     }
     out += in + "info.deletesNodes = " + listOf(i.deletesNodes, byteText) + ";\n";
+    if (i.mergeTolerance > 0) out += in + "info.mergeTolerance = " + cppLiteral(ir::Value{i.mergeTolerance}, ir::kFloatType) + ";\n";
     return out;
 }
 
@@ -86,6 +87,7 @@ std::string paramType(const ir::Type& t) {
     case ir::TypeKind::Float: return "ParamType::Float";
     case ir::TypeKind::Bool: return "ParamType::Bool";
     case ir::TypeKind::Vec2: return "ParamType::Vec2";
+    case ir::TypeKind::Vec3: return "ParamType::Vec3";
     case ir::TypeKind::Enum: return "ParamType::Enum";
     default: return "ParamType::String";
     }
@@ -131,7 +133,7 @@ public:
                "        if (!p || p->place < 0) return std::nullopt;\n"
                "        const Place& at = kPlaces[p->place];\n"
                "        return SourceLocation{at.file, at.line, at.col, at.endCol, at.lineText};\n    }\n\n";
-        out += start + limits + emitRuleSet() + emitAttribute() + styles;
+        out += start + limits + emitRuleSet() + emitSequenceAndCopies() + emitAttribute() + styles;
         out += "private:\n" + functions + rules + emitMembers() + "};\n\n}  // namespace\n\n";
         out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "();\n";
         out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "() { return std::make_unique<Grammar>(); }\n";
@@ -287,6 +289,11 @@ private:
                 out += in + "    try {\n" + in + "        info.weights[" + str(static_cast<long long>(d)) + "] = checkedWeight(" + w + ");\n" + in +
                        "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
             }
+            if (const ir::Expr* expr = facts.mergeExpr) {
+                const std::string t = gen_.gen(*expr, noElements(), out, in + "    ");
+                out += in + "    try {\n" + in + "        info.mergeTolerance = checkedMergeTolerance(" + t + ");\n" + in +
+                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
+            }
             out += in + "    infos_.push_back(std::move(info));\n" + in + "}\n";
         }
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
@@ -401,6 +408,27 @@ private:
             return t;
         });
         return out + "        (void)m; (void)g;\n    }\n\n";
+    }
+
+    // The command list, and faces that merging splits off (node_merge.hpp)
+    // taking the attributes of the face they came from.
+    std::string emitSequenceAndCopies() {
+        std::string out;
+        if (!prog_.sequence.empty()) {
+            out += "    const std::vector<std::size_t>& sequence() const override {\n        static const std::vector<std::size_t> list = {";
+            for (std::size_t i = 0; i < prog_.sequence.size(); ++i) out += (i ? ", " : "") + str(prog_.sequence[i]);
+            out += "};\n        return list;\n    }\n\n";
+        }
+        std::string cases;
+        for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
+            if (prog_.kinds[k].cls != ir::ElemClass::Face || prog_.kinds[k].attrs.empty()) continue;
+            const std::string sk = str(static_cast<long long>(k));
+            cases += "        case " + sk + ": G.setFaceSlot(to, store_" + sk + ".add(store_" + sk + "[G.faceSlot(from)])); break;\n";
+        }
+        if (cases.empty()) return out;   // no face has attributes: nothing to copy
+        out += "    void copyFaceAttributes(Graph& G, FaceId from, FaceId to) override {\n        switch (G.faceKind(from)) {\n" + cases +
+               "        default: break;\n        }\n    }\n\n";
+        return out;
     }
 
     std::string emitAttribute() {

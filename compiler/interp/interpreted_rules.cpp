@@ -12,6 +12,7 @@ using rt::kNoId;
 using rt::NodeId;
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
+    for (int r : st.prog->sequence) sequence_.push_back(static_cast<std::size_t>(r));
     std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
     for (const auto& r : st.prog->rules) {
         lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);
@@ -23,6 +24,14 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
                 info.weights[d] = rt::checkedWeight(std::get<double>(evaluate(*facts.weightExprs[d], f)));
             } catch (const rt::OpError& e) {
                 throw EvalError(facts.weightExprs[d]->span, e.what());
+            }
+        }
+        if (facts.mergeExpr) {
+            EvalFrame f = st.frame(nullptr);
+            try {
+                info.mergeTolerance = rt::checkedMergeTolerance(std::get<double>(evaluate(*facts.mergeExpr, f)));
+            } catch (const rt::OpError& e) {
+                throw EvalError(facts.mergeExpr->span, e.what());
             }
         }
         infos_.push_back(std::move(info));

@@ -15,6 +15,7 @@ std::vector<rt::ParamSpec> paramSpecs(const ir::Program& prog) {
         case ir::TypeKind::Float: s.type = rt::ParamType::Float; break;
         case ir::TypeKind::Bool: s.type = rt::ParamType::Bool; break;
         case ir::TypeKind::Vec2: s.type = rt::ParamType::Vec2; break;
+        case ir::TypeKind::Vec3: s.type = rt::ParamType::Vec3; break;
         case ir::TypeKind::Enum:
             s.type = rt::ParamType::Enum;
             s.enumId = p.type.enumId;

@@ -368,6 +368,7 @@ struct Rule {
     long long priority = 0;
     Pick pick = Pick::Random;
     bool ordered = false;              // the match keeps the x and y order of the sketch
+    bool merge = false;                // `merge`: coinciding nodes merge after each step
     bool parallel = false;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
@@ -403,6 +404,12 @@ inline const PatternNode& slotNode(const Rule& r, const NegativeCondition* nac, 
 
 struct Program {
     bool space3d = false;              // `space 3d;`: positions are vec3
+    // `merge within T;`: every rule merges, with tolerance T (a constant
+    // expression; <= 0 turns merging off). Rules with the `merge` option
+    // merge with it too, or with rt::kDefaultMergeTolerance without one.
+    std::optional<Expr> mergeTolerance;
+    bool mergeAll = false;
+    std::vector<int> sequence;         // `sequence { … }`: rule indices, in order
     std::vector<Enum> enums;
     std::vector<Kind> kinds;
     std::vector<Param> params;

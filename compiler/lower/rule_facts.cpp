@@ -2,6 +2,7 @@
 
 #include "lower/kind_effects.hpp"
 #include "lower/search_plan.hpp"
+#include "g2d/node_merge.hpp"
 
 namespace g2d::lower {
 
@@ -35,6 +36,11 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.readValues = std::move(effects.readValues);
     info.changedKinds = std::move(effects.changedKinds);
     info.changedValues = std::move(effects.changedValues);
+    if (r.merge || prog.mergeAll) {
+        if (!prog.mergeTolerance) info.mergeTolerance = rt::kDefaultMergeTolerance;
+        else if (prog.mergeTolerance->op == ir::ExprOp::Literal) info.mergeTolerance = std::get<double>(prog.mergeTolerance->value);
+        else out.mergeExpr = &*prog.mergeTolerance;
+    }
     // Removing a node removes its edges and faces, of any kind.
     for (const auto& d : r.daughters) info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
     return out;

@@ -13,6 +13,7 @@ namespace g2d::lower {
 struct RuleFacts {
     rt::RuleInfo info;                          // weights: the known ones, 0 where weightExprs has one
     std::vector<const ir::Expr*> weightExprs;   // per daughter: the weight's expression, null when known
+    const ir::Expr* mergeExpr = nullptr;        // the merge tolerance when it reads parameters (info's is 0 then)
 };
 
 RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& rule);

@@ -86,7 +86,7 @@ public:
         if (auto* c = ctx->importDecl())
             return Decl{ImportDecl{unescape(c->STRING()->getText()), span(c)}};
         if (auto* c = ctx->paramDecl())
-            return Decl{ParamDecl{ident(c->ID()), typeRef(c->typeRef()), expr(c->expr()), span(c)}};
+            return Decl{ParamDecl{ident(c->name), typeRef(c->typeRef()), expr(c->expr()), span(c)}};
         if (auto* c = ctx->constDecl()) {
             ConstDecl d{ident(c->ID()), std::nullopt, expr(c->expr()), span(c)};
             if (c->typeRef()) d.type = typeRef(c->typeRef());
@@ -129,6 +129,12 @@ public:
             return Decl{std::move(d)};
         }
         if (auto* c = ctx->defsDecl()) return Decl{DefsDecl{unescape(c->STRING()->getText()), span(c)}};
+        if (auto* c = ctx->mergeDecl()) return Decl{MergeDecl{expr(c->expr()), span(c)}};
+        if (auto* c = ctx->sequenceDecl()) {
+            SequenceDecl d{{}, span(c)};
+            for (auto* id : c->ID()) d.rules.push_back(ident(id));
+            return Decl{std::move(d)};
+        }
         return Decl{rule(ctx->ruleDecl())};
     }
 
@@ -267,6 +273,9 @@ public:
                 opt.kind = RuleOption::Kind::Ordered;
             } else if (dynamic_cast<P::RuleParallelContext*>(o)) {
                 opt.kind = RuleOption::Kind::Parallel;
+            } else if (auto* w = dynamic_cast<P::RuleWordOptionContext*>(o)) {
+                opt.kind = RuleOption::Kind::Word;
+                opt.word = ident(w->word);
             } else {
                 throw std::logic_error("a rule option of the grammar the AST builder does not know: " + o->getText());
             }
@@ -351,7 +360,7 @@ public:
             for (auto* a : c->expr()) call.args.push_back(expr(a));
             return make(s, std::move(call));
         }
-        if (auto* c = dynamic_cast<P::NameExprContext*>(ctx)) return make(s, Name{c->ID()->getText()});
+        if (auto* c = dynamic_cast<P::NameExprContext*>(ctx)) return make(s, Name{c->name->getText()});
         if (auto* c = dynamic_cast<P::VecLitContext*>(ctx))
             return make(s, VecLit{expr(c->expr(0)), expr(c->expr(1)), c->expr().size() > 2 ? expr(c->expr(2)) : nullptr});
         return expr(static_cast<P::ParenExprContext*>(ctx)->expr());

@@ -59,12 +59,12 @@ std::string mistakeHint(antlr4::Parser* parser, antlr4::Token* offending, const 
         return "; g2d has no `" + text + "=`: write `" + name + " = " + element + "." + name + " " + text +
                " …` (expressions read the value before the step)";
     }
-    if (text == "," && expectedWords == "`)`") return "; a vec2 has two components: `(x, y)`";
+    if (text == "," && expectedWords == "`)`") return "; a vector has two or three components: `(x, y)` or `(x, y, z)`";
     if (offending->getType() == G2dLexer::ID && (text == "if" || text == "else"))
         return "; a conditional expression is written `condition ? a : b`";
     if (offending->getType() == G2dLexer::ID && expectedWords.rfind("a declaration", 0) == 0)
         return suggest(text, {"node", "edge", "face", "axiom", "rule", "param", "const", "enum", "fn", "import", "limit",
-                              "priority", "defs"});
+                              "priority", "defs", "space", "merge", "sequence"});
     return "";
 }
 
@@ -99,8 +99,15 @@ std::string describeExpected(const antlr4::misc::IntervalSet& expected,
     // At the top level, the parser expects any declaration.
     if (hasLiteral("'rule'") && hasLiteral("'axiom'") && hasLiteral("'node'"))
         return "a declaration (`node`, `edge`, `face`, `axiom`, `rule`, `param`, `const`, `enum`, `fn`, `import`, `limit`, "
-               "`priority` or `defs`)";
+               "`priority`, `defs`, `space`, `merge` or `sequence`)";
     // The tokens that can start an expression are summarised in one word.
+    // `merge` is a keyword that may also be a name (a parameter's): where a
+    // name is expected, it is one of the names.
+    if (types.count(G2dLexer::ID))
+        for (auto it = types.begin(); it != types.end();) {
+            if (vocabulary.getLiteralName(*it) == "'merge'") it = types.erase(it);
+            else ++it;
+        }
     const bool expression = types.count(G2dLexer::INT) && types.count(G2dLexer::FLOAT) &&
                             types.count(G2dLexer::STRING) && types.count(G2dLexer::ID);
     if (expression) {

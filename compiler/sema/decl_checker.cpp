@@ -350,6 +350,34 @@ void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen
     g.prog.stepLimit = std::move(*v);
 }
 
+void checkMerge(Globals& g, ExprChecker& ec, const ast::MergeDecl& d) {
+    if (g.prog.mergeAll) {
+        g.diags.error(d.span, "`merge within` is set twice");
+        return;
+    }
+    g.prog.mergeAll = true;
+    ExprEnv env = constantEnv("a merge tolerance");
+    auto v = ec.checkAs(*d.tolerance, ir::kFloatType, env, "a merge tolerance");
+    if (!v) return;
+    if (auto f = fold(*v, g.prog); f && std::get<double>(*f) < 0)
+        g.diags.error(d.tolerance->span, "a merge tolerance cannot be negative (0 turns merging off)");
+    g.prog.mergeTolerance = std::move(*v);
+}
+
+void checkSequence(Globals& g, const ast::SequenceDecl& d, const std::map<std::string, int>& ruleIndex) {
+    if (!g.prog.sequence.empty()) {
+        g.diags.error(d.span, "a grammar has one `sequence`, but this is a second one");
+        return;
+    }
+    std::vector<std::string> names;
+    for (const auto& [name, index] : ruleIndex) names.push_back(name);
+    for (const auto& r : d.rules) {
+        if (auto it = ruleIndex.find(r.name); it != ruleIndex.end()) g.prog.sequence.push_back(it->second);
+        else g.diags.error(r.span, "no rule named `" + r.name + "`" + suggest(r.name, names));
+    }
+    if (d.rules.empty()) g.diags.error(d.span, "an empty `sequence` would apply nothing; list rules, each followed by `;`");
+}
+
 void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
     if (d.priorityOverflow) {
         g.diags.error(d.prioritySpan, "priority is out of range (64-bit integers)");

@@ -53,7 +53,12 @@ std::optional<Expr> ExprChecker::checkAs(const ast::Expr& e, Type expected, cons
     if (!r) return std::nullopt;
     if (r->type == expected) return r;
     if (expected.kind == TypeKind::Float && r->type.kind == TypeKind::Int) return coerce(std::move(*r), expected);
-    g_.diags.error(e.span, what + " must be " + tn(expected) + ", but this is " + tn(r->type));
+    // A position of the other space: say how the grammar says which it is in.
+    std::string hint;
+    if (expected == ir::positionType(g_.prog) && r->type.isVector())
+        hint = g_.prog.space3d ? " (the grammar is declared `space 3d;`: write (x, y, z))"
+                               : " (3D positions need `space 3d;` at the top of the grammar)";
+    g_.diags.error(e.span, what + " must be " + tn(expected) + ", but this is " + tn(r->type) + hint);
     return std::nullopt;
 }
 

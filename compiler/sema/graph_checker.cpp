@@ -276,9 +276,9 @@ public:
 
 private:
     void options() {
-        std::set<ast::RuleOption::Kind> seen;
+        std::set<std::pair<ast::RuleOption::Kind, std::string>> seen;
         for (const auto& o : d_.options) {
-            if (!seen.insert(o.kind).second) {
+            if (!seen.insert({o.kind, o.word.name}).second) {
                 g_.diags.error(o.span, "option given twice in rule `" + rule_.name + "`");
                 continue;
             }
@@ -289,6 +289,11 @@ private:
                 break;
             case ast::RuleOption::Kind::Ordered: rule_.ordered = true; break;
             case ast::RuleOption::Kind::Parallel: rule_.parallel = true; break;
+            case ast::RuleOption::Kind::Word:
+                if (o.word.name == "merge") rule_.merge = true;
+                else g_.diags.error(o.word.span, "unknown rule option `" + o.word.name + "`" +
+                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge"}));
+                break;
             case ast::RuleOption::Kind::Pick:
                 if (o.pick.name == "random") rule_.pick = ir::Pick::Random;
                 else if (o.pick.name == "oldest") rule_.pick = ir::Pick::Oldest;

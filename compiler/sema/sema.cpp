@@ -64,6 +64,8 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::LimitDecl>) {
             checkLimit(g, ec, d, limitSeen);
+        } else if constexpr (std::is_same_v<T, ast::MergeDecl>) {
+            checkMerge(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::PriorityDecl>) {
             checkPriority(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::DefsDecl>) {
@@ -92,6 +94,12 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
             }
             checkRule(g, ec, d);
         }
+    });
+    std::map<std::string, int> ruleIndex;
+    for (std::size_t r = 0; r < prog.rules.size(); ++r) ruleIndex.emplace(prog.rules[r].name, static_cast<int>(r));
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::SequenceDecl>) checkSequence(g, d, ruleIndex);
     });
     if (diags.errorCount() > errorsBefore) return std::nullopt;
     lintProgram(g);

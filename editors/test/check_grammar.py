@@ -736,6 +736,8 @@ def check_expectation(label, lines, scopes, needle, token, nth, prefix, expected
 
 CODE_RE = re.compile(r"^```g2d\n(.*?)^```", re.S | re.M)
 KEYWORD_SCOPES = ("keyword", "constant.language")
+# Keywords G2d.g4 also accepts as a parameter's name (`param merge: bool`).
+NAME_KEYWORDS = ("merge",)
 
 
 def check_clean(tok, label, source, keywords, builtins):
@@ -759,6 +761,8 @@ def check_clean(tok, label, source, keywords, builtins):
                 if has_scope(s, "comment") or has_scope(s, "string"):
                     continue
                 if m.group(1) == "random" and has_scope(s, "support.constant.pick"):
+                    continue
+                if m.group(1) in NAME_KEYWORDS and has_scope(s, "variable"):
                     continue
                 if not any(has_scope(s, w) for w in want):
                     problems.append("%d:%d %r scoped %s" % (n + 1, m.start() + 1, m.group(1), " ".join(s)))

@@ -2,6 +2,7 @@
 
 #include "g2d/deadline.hpp"
 #include "g2d/incremental_matches.hpp"
+#include "g2d/node_merge.hpp"
 #include "g2d/pick_lookahead.hpp"
 
 #include <algorithm>
@@ -204,15 +205,19 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     };
     for (const auto& grp : groups) retireIfSpent(grp);
     g.forgetChanges();
+    // Merging keeps a spatial index of the nodes from the start when some rule merges.
     std::optional<NodeMerger> merger;
+    for (std::size_t r = 0; r < rules.ruleCount(); ++r)
+        if (const double tolerance = rules.info(r).mergeTolerance; tolerance > 0 && !merger)
+            merger.emplace(g, 4 * tolerance, [&](Graph& graph, FaceId from, FaceId to) { rules.copyFaceAttributes(graph, from, to); });
     // After a rule's step: merging (if the rule merges), then the match sets
     // are brought up to date, reading the step's changes in place; they are
     // forgotten after it (before a full search, which reads none: a
     // generation's marks are still in the caches now).
     auto afterStep = [&](std::size_t r, std::size_t daughter, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom) {
-        if (const double tolerance = rules.info(r).mergeTolerance; tolerance > 0) {
-            if (!merger) merger.emplace(g);
-            merger->mergeChanged(g, tolerance);
+        if (merger) {
+            merger->sync(g);
+            if (const double tolerance = rules.info(r).mergeTolerance; tolerance > 0) merger->mergeChanged(g, tolerance);
         }
         const bool everything = IncrementalMatches::searchesEverything(g);
         if (everything) g.forgetChanges();

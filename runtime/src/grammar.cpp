@@ -1,5 +1,7 @@
 #include "g2d/grammar.hpp"
 
+#include "g2d/projection.hpp"
+
 #include <filesystem>
 #include <stdexcept>
 
@@ -59,7 +61,11 @@ rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::str
                                 "` has no attribute `" + name + "`");
 }
 
-std::string Grammar::svg() { return rt::writeSvg(run_->drawItems(), run_->svgDefs()); }
+std::string Grammar::svg() {
+    std::vector<rt::DrawItem> items = run_->drawItems();
+    if (run_->jsonSchema().space3d) rt::projectDrawing(items, run_->graph(), rt::viewFrom(rt::kDefaultViewFrom));
+    return rt::writeSvg(std::move(items), run_->svgDefs());
+}
 
 std::string Grammar::json() {
     const std::vector<std::pair<std::string, rt::Value>> meta = {

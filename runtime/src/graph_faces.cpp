@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "g2d/geometry3.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/ops.hpp"
 
@@ -202,6 +203,13 @@ double Graph::perimeter3(FaceId f) const {
     return sum;
 }
 
+double Graph::area3(FaceId f) const {
+    std::vector<vec3> corners;
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) corners.push_back(pos3(cornerNode(c)));
+    return polygonArea3(corners);
+}
+
 vec3 Graph::centroid3(FaceId f) const {
     vec3 sum{0, 0, 0};
     CornerId c = firstCorner(f);
@@ -217,6 +225,12 @@ vec3 Graph::vectorArea(FaceId f) const {
     for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c))
         twice = twice + cross(pos3(cornerNode(c)) - origin, pos3(cornerNode(nextCorner(c))) - origin);
     return twice / 2.0;
+}
+
+void Graph::copyFaceAttrs(FaceId from, FaceId to) {
+    const int kind = faces_[from].kind;
+    if (!pooled(kind)) return;
+    for (std::size_t i = 0; i < defaults_[kind].size(); ++i) initFaceAttr(to, static_cast<int>(i), faceAttr(from, static_cast<int>(i)));
 }
 
 void Graph::setFaceAttr(FaceId f, int i, Value v) {

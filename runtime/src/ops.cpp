@@ -36,6 +36,11 @@ double checkedWeight(double w) {
     return w;
 }
 
+double checkedMergeTolerance(double t) {
+    if (!(t >= 0) || !std::isfinite(t)) throw OpError("a merge tolerance must be finite and not negative, but this is " + formatNumber(t));
+    return t;
+}
+
 long long floatToInt(double x) {
     if (!std::isfinite(x) || x >= 9.2233720368547758e18 || x < -9.2233720368547758e18)
         throw OpError("cannot convert " + formatNumber(x) + " to int: out of range");

@@ -39,15 +39,22 @@ std::optional<Value> parseParamValue(ParamType type, const std::string& text, in
         if (text == "false") return Value{false};
         return std::nullopt;
     case ParamType::String: return Value{text};
-    case ParamType::Vec2: {
+    case ParamType::Vec2:
+    case ParamType::Vec3: {
         std::string inner = trim(text);
         if (inner.size() >= 2 && inner.front() == '(' && inner.back() == ')') inner = inner.substr(1, inner.size() - 2);
-        const auto comma = inner.find(',');
-        if (comma == std::string::npos) return std::nullopt;
-        auto x = parseDouble(trim(inner.substr(0, comma)));
-        auto y = parseDouble(trim(inner.substr(comma + 1)));
-        if (!x || !y) return std::nullopt;
-        return Value{vec2{*x, *y}};
+        std::vector<double> xs;
+        for (std::size_t start = 0;;) {
+            const auto comma = inner.find(',', start);
+            auto x = parseDouble(trim(inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+            if (!x) return std::nullopt;
+            xs.push_back(*x);
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+        if (type == ParamType::Vec2 && xs.size() == 2) return Value{vec2{xs[0], xs[1]}};
+        if (type == ParamType::Vec3 && xs.size() == 3) return Value{vec3{xs[0], xs[1], xs[2]}};
+        return std::nullopt;
     }
     case ParamType::Enum: {
         const std::string prefix = enumName + ".";

@@ -1,5 +1,7 @@
 #include "g2d/run_driver.hpp"
 
+#include "g2d/projection.hpp"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -49,7 +51,7 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
         const auto& p = specs[index];
         auto v = parseParamValue(p.type, text, p.enumId, p.enumValues, p.typeName);
         if (!v) {
-            std::string hint = p.type == ParamType::Vec2 ? " (write x,y or (x, y))" : p.type == ParamType::Bool ? " (write true or false)" : "";
+            std::string hint = p.type == ParamType::Vec2 ? " (write x,y or (x, y))" : p.type == ParamType::Vec3 ? " (write x,y,z or (x, y, z))" : p.type == ParamType::Bool ? " (write true or false)" : "";
             if (p.type == ParamType::Enum) {
                 hint = " (one of";
                 for (const auto& e : p.enumValues) hint += " " + e;
@@ -141,6 +143,16 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
         return usageError(request, err);
     if (request.steps && *request.steps < 0) return usageError(request, "--steps must not be negative");
+    ViewProjection view = viewFrom(kDefaultViewFrom);
+    if (request.viewFrom) {
+        const auto from = parseParamValue(ParamType::Vec3, *request.viewFrom, -1, {}, "vec3");
+        if (!from) return usageError(request, "--view-from " + *request.viewFrom + ": expected three numbers X,Y,Z");
+        try {
+            view = viewFrom(std::get<vec3>(*from));
+        } catch (const std::invalid_argument& e) {
+            return usageError(request, std::string("--view-from: ") + e.what());
+        }
+    }
     if (request.maxElements && *request.maxElements <= 0) return usageError(request, "--max-elements must be positive");
     if (request.timeoutSeconds && !(*request.timeoutSeconds > 0 && *request.timeoutSeconds < 1e9))
         return usageError(request, "--timeout must be a positive number of seconds");
@@ -205,7 +217,9 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         const Graph& graph = grammar.graph();
         const std::string name = std::filesystem::path(request.grammarFile).filename().string();
         const std::vector<DrawItem> items = svgFile || traceHtmlFile || viewFile ? grammar.drawItems() : std::vector<DrawItem>{};
-        const std::string svg = svgFile || traceHtmlFile ? writeSvg(items, grammar.svgDefs()) : "";
+        std::vector<DrawItem> drawn = svgFile || traceHtmlFile ? items : std::vector<DrawItem>{};
+        if (grammar.jsonSchema().space3d) projectDrawing(drawn, graph, view);
+        const std::string svg = svgFile || traceHtmlFile ? writeSvg(std::move(drawn), grammar.svgDefs()) : "";
         if (svgFile) svgFile->commit(svg);
         if (trace) {
             const std::string data = trace->json(name, request.seed, stopped);

@@ -24,6 +24,7 @@ std::string defaultText(const ParamSpec& p) {
         return e.index >= 0 && static_cast<std::size_t>(e.index) < p.enumValues.size() ? p.enumValues[e.index] : "";
     }
     if (const auto* v = std::get_if<vec2>(&p.defaultValue)) return formatNumber(v->x) + "," + formatNumber(v->y);
+    if (const auto* v = std::get_if<vec3>(&p.defaultValue)) return formatNumber(v->x) + "," + formatNumber(v->y) + "," + formatNumber(v->z);
     return toString(p.defaultValue);
 }
 
@@ -34,6 +35,8 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
     addOptional(app, "--json", r.jsonOut, "Graph output in NetworkX node-link JSON", "FILE");
     addOptional(app, "--obj", r.objOut, "Wavefront OBJ output: nodes as vertices, faces by kind, edges as lines", "FILE");
     addOptional(app, "--view", r.viewOut, "Write the model in 3D as a self-contained HTML page (drag to turn it)", "FILE");
+    addOptional(app, "--view-from", r.viewFrom,
+                "3D grammars: draw the SVG as seen from this direction (default 1,-2,1.5; z is up)", "X,Y,Z");
     app.add_flag("--no-svg", r.noSvg, "Write no SVG");
     app.add_option("--seed", r.seed, "Seed of the random generator (default 1)")->check(CLI::NonNegativeNumber)->type_name("N");
     app.add_option("-D,--define", r.defines, "Set a parameter (the grammar's are listed below)")

@@ -72,9 +72,11 @@ TEST_CASE("type mismatches", "[sema][types]") {
 TEST_CASE("wrong arity and argument types of functions", "[sema][calls]") {
     checkCases({
         {"too few arguments", "const v = rotate((1, 0));",
-         "5:11: `rotate` takes 2 to 3 arguments, got 1 (rotate(v: vec2, angle: float[, centre: vec2]) -> vec2)"},
-        {"wrong argument type", "const v = length(3.0);",
-         "5:18: argument 1 of `length` must be vec2, got float (length(v: vec2) -> float)"},
+         "5:11: `rotate` takes 2 to 3 arguments, got 1 (rotate(v: vec2, angle: float[, centre: vec2]) -> vec2, "
+         "rotate(v: vec3, axis: vec3, angle: float) -> vec3)"},
+        {"wrong argument type", "const v = perp_left(3.0);",
+         "5:21: argument 1 of `perp_left` must be vec2, got float (perp_left(v: vec2) -> vec2)"},
+        {"no overload", "const v = length(3.0);", "5:11: no version of `length` takes (float) (length(v: vec2|vec3) -> float)"},
         {"user function arity", "fn twice(x: float) -> float = 2 * x;\nconst y = twice(1, 2);",
          "6:11: `twice` takes 1 argument, got 2"},
         {"format placeholders", "const s = format(\"{} {}\", 1);",

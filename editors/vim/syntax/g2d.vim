@@ -20,14 +20,14 @@ syn match g2dSketch "@"
 
 " ---- keywords
 " declarations
-syn keyword g2dDeclKeyword import param const limit priority defs axiom style
+syn keyword g2dDeclKeyword import param const limit priority defs axiom style space sequence
 syn keyword g2dDeclKeyword node edge face enum nextgroup=g2dTypeName skipwhite skipnl
 syn keyword g2dDeclKeyword fn rule nextgroup=g2dFuncName skipwhite skipnl
 syn match g2dTypeName "\h\w*" contained
 syn match g2dFuncName "\h\w*" contained
 " rules
-syn keyword g2dRuleKeyword match produce let where weight at for in
-syn keyword g2dModifier ordered parallel directed undirected
+syn keyword g2dRuleKeyword match produce let where weight at for in insert between within
+syn keyword g2dModifier ordered parallel directed undirected merge
 syn keyword g2dModifier pick nextgroup=g2dPickPolicy skipwhite
 syn match g2dPickPolicy "\h\w*" contained
 " booleans and logic; `not {` is a negative condition
@@ -36,10 +36,10 @@ syn match g2dLogical "\<\(and\|or\|not\)\>"
 syn match g2dNegative "\<not\ze\s*{"
 
 " ---- built-in types, functions (only before `(`) and constants
-syn match g2dPrimitiveType "\<\(int\|float\|bool\|string\|vec2\)\>\(\s*(\)\@!"
+syn match g2dPrimitiveType "\<\(int\|float\|bool\|string\|vec2\|vec3\)\>\(\s*(\)\@!"
 syn match g2dBuiltin "\<\(sin\|cos\|tan\|asin\|acos\|atan\|atan2\|sqrt\|exp\|log\|pow\|hypot\)\ze\s*("
 syn match g2dBuiltin "\<\(floor\|ceil\|round\|radians\|degrees\|abs\|sign\|clamp\|min\|max\)\ze\s*("
-syn match g2dBuiltin "\<\(vec2\|dot\|cross\|length\|distance\|normalize\|perp_left\|perp_right\)\ze\s*("
+syn match g2dBuiltin "\<\(vec2\|vec3\|dot\|cross\|length\|distance\|normalize\|perp_left\|perp_right\)\ze\s*("
 syn match g2dBuiltin "\<\(rotate\|angle\|lerp\|int\|float\|str\|format\)\ze\s*("
 syn match g2dBuiltin "\<\(random\|uniform\|randint\|choice\|normal\)\ze\s*("
 syn keyword g2dConstant pi tau
@@ -50,13 +50,13 @@ syn keyword g2dConstant pi tau
 " endpoint of a named edge `e: a -[K]-> b`
 syn match g2dElement "\<\h\w*\s*:\s*\(\*\|\h\w*\>\(\s*<\=-\[\)\@!\)" contains=g2dKindRef,g2dElemType,g2dWildcard
 syn match g2dKindRef "\(:\s*\)\@<=\h\w*" contained
-syn match g2dElemType "\(:\s*\)\@<=\(int\|float\|bool\|string\|vec2\)\>" contained
+syn match g2dElemType "\(:\s*\)\@<=\(int\|float\|bool\|string\|vec2\|vec3\)\>" contained
 syn match g2dWildcard "\(:\s*\)\@<=\*" contained
 " fn f(...) -> Type
 syn match g2dReturnType "->\s*\h\w*\>" contains=g2dReturnArrow,g2dReturnKind,g2dReturnPrim
 syn match g2dReturnArrow "->" contained
 syn match g2dReturnKind "\(->\s*\)\@<=\h\w*" contained
-syn match g2dReturnPrim "\(->\s*\)\@<=\(int\|float\|bool\|string\|vec2\)\>" contained
+syn match g2dReturnPrim "\(->\s*\)\@<=\(int\|float\|bool\|string\|vec2\|vec3\)\>" contained
 " a -[Kind]-> b,  b <-[Kind]- a,  a -[Kind]- b
 syn match g2dArrow "<\=-\[" nextgroup=g2dArrowKind skipwhite
 syn match g2dArrowKind "\h\w*" contained

@@ -217,6 +217,9 @@ public:
     // A G^3 command list (`sequence { … }`): these rules in this order, each
     // applied once to all its matches at once (a parallel step, whatever the
     // rule says), and then the derivation ends. Empty: the priorities decide.
+    // Gives a face that merging split off (node_merge.hpp) the attributes of
+    // the face it came from (the graph's own pools by default).
+    virtual void copyFaceAttributes(Graph& g, FaceId from, FaceId to) { g.copyFaceAttrs(from, to); }
     virtual const std::vector<std::size_t>& sequence() const {
         static const std::vector<std::size_t> none;
         return none;

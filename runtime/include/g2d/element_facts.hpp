@@ -45,7 +45,7 @@ inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
     X(Corners, corners, corners, long long, "int", kOnFaces, kInBoth, "the face's corner count")                    \
     X(Area, area, area, double, "float", kOnFaces, kIn2d, "the face's area (by its corners' positions)")            \
     X(Area3, area3, area, double, "float", kOnFaces, kIn3d,                                                          \
-      "the face's area: half the length of the sum of its corners' cross products (exact for a plane face)")         \
+      "the face's area: the sum of its triangles (G^3: shortest diagonals first)")                                    \
     X(SignedArea, signed_area, signed_area, double, "float", kOnFaces, kIn2d,                                        \
       "the face's area, positive when its corners run counter-clockwise (y up)")                                     \
     X(Perimeter, perimeter, perimeter, double, "float", kOnFaces, kIn2d, "the face's perimeter")                    \
@@ -104,7 +104,7 @@ inline double area(const Graph& g, ElemClass, std::uint32_t id) { return finite(
 inline double signed_area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.signedArea(id)); }
 inline double perimeter(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.perimeter(id)); }
 inline vec2 centroid(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid(id)); }
-inline double area3(const Graph& g, ElemClass, std::uint32_t id) { return finite(rt::length(g.vectorArea(id))); }
+inline double area3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.area3(id)); }
 inline double perimeter3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.perimeter3(id)); }
 inline vec3 centroid3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid3(id)); }
 inline vec3 normal(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.vectorArea(id)); }

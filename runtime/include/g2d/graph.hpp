@@ -257,11 +257,15 @@ public:
     // products: its length is the area of a plane face, its direction the
     // normal seen from which the corners run counter-clockwise.
     double perimeter3(FaceId f) const;
+    double area3(FaceId f) const;   // G^3 §3.4: the sum of the triangles of its §3.2.4 triangulation
     vec3 centroid3(FaceId f) const;
     vec3 vectorArea(FaceId f) const;
     const Value& faceAttr(FaceId f, int i) const { return pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)]; }
     void setFaceAttr(FaceId f, int i, Value v);
     void initFaceAttr(FaceId f, int i, Value v);   // without recording a change
+    // Face `to` (of f's kind) takes f's attributes from the graph's own pool
+    // (a back end with its own storage copies them there).
+    void copyFaceAttrs(FaceId from, FaceId to);
     std::uint32_t faceSlot(FaceId f) const { return faces_[f].slot; }
     void setFaceSlot(FaceId f, std::uint32_t slot) { faces_[f].slot = slot; }
     StyleList faceStyle(FaceId f) const;

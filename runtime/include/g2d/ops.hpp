@@ -78,6 +78,8 @@ inline vec3 divVec(vec3 v, double s) {
 
 // A daughter's weight, when a parameter gives it: positive and finite.
 double checkedWeight(double w);
+// A merge tolerance (`merge within`), when a parameter gives it: finite, not negative.
+double checkedMergeTolerance(double t);
 
 long long floatToInt(double x);                 // truncation; throws when out of range
 long long floorToInt(double x);

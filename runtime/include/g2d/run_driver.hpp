@@ -23,6 +23,7 @@ struct RunRequest {
     std::optional<std::string> jsonOut;
     std::optional<std::string> objOut;
     std::optional<std::string> viewOut;   // the model in 3D, as a self-contained page (view_page.hpp)
+    std::optional<std::string> viewFrom;  // 3D grammars: the SVG's view direction, "X,Y,Z" (projection.hpp)
     bool noSvg = false;
     std::uint64_t seed = 1;
     std::vector<std::string> defines;     // NAME=VALUE
