@@ -38,6 +38,7 @@ examples=(
   "fan|1|Fans: one rule for any corner count (g2d example: for (u, v) in f.sides)"
   "subdivide|1|Quad subdivision, depth 4 (g2d example: matched faces, parallel steps)"
   "stained_glass|1 2 3|Stained glass: panes split, then coloured unlike their neighbours (g2d example: faces sharing a side)"
+  "g3_box|1|G^3's open box (Laganeckiene 2012, Table 3.1): Create face, then Split edge, with merging; 3D, drawn from the front right"
 )
 
 {

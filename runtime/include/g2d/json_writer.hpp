@@ -14,10 +14,10 @@
 namespace g2d::rt {
 
 struct JsonSchema {
-    bool space3d = false;                                 // positions have a z; nodes a radius
     std::vector<std::string> kindNames;
     std::vector<std::vector<std::string>> attrNames;      // per kind
     std::vector<std::vector<std::string>> enumValueNames; // per enum
+    bool space3d = false;                                 // positions have a z; nodes a radius
 };
 
 // Reads attribute `attr` of a node or edge (back ends store them their own way).
