@@ -45,7 +45,7 @@ bool readsFact(const ir::Expr& e, ir::ElemFact fact) {
 // Facts counting faces of any kind around an element.
 bool readsFaceCounts(const ir::Expr& e) {
     if (e.op == ir::ExprOp::Fact &&
-        (e.fact == ir::ElemFact::Faces || e.fact == ir::ElemFact::Neighbours))
+        (e.fact == ir::ElemFact::Faces || e.fact == ir::ElemFact::Neighbours || e.fact == ir::ElemFact::Touching))
         return true;
     return std::any_of(e.args.begin(), e.args.end(), readsFaceCounts);
 }
@@ -163,7 +163,9 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
     }
     if (facesCounted) read.add(-1, ir::ElemClass::Face);
     auto neighbours = [](const std::vector<ir::Condition>& cs) {
-        return std::any_of(cs.begin(), cs.end(), [](const ir::Condition& c) { return readsFact(c.expr, ir::ElemFact::Neighbours); });
+        return std::any_of(cs.begin(), cs.end(), [](const ir::Condition& c) {
+            return readsFact(c.expr, ir::ElemFact::Neighbours) || readsFact(c.expr, ir::ElemFact::Touching);
+        });
     };
     out.readsNeighbours = neighbours(rule.conditions);
     for (const auto& nac : rule.nacs) out.readsNeighbours = out.readsNeighbours || neighbours(nac.conditions);

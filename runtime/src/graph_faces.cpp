@@ -182,26 +182,28 @@ double Graph::signedArea(FaceId f) const {
 
 double Graph::area(FaceId f) const { return std::abs(signedArea(f)); }
 
-double Graph::perimeter(FaceId f) const {
+// The sum of the sides' lengths and the mean of the corners, in 2D or 3D
+// (`at` reads a node's position).
+template <class At>
+double Graph::sidesLength(FaceId f, At at) const {
     double sum = 0;
     CornerId c = firstCorner(f);
-    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum += length(pos(cornerNode(nextCorner(c))) - pos(cornerNode(c)));
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum += length(at(cornerNode(nextCorner(c))) - at(cornerNode(c)));
     return sum;
 }
 
-vec2 Graph::centroid(FaceId f) const {
-    vec2 sum{0, 0};
+template <class At>
+auto Graph::cornerMean(FaceId f, At at) const {
+    decltype(at(NodeId{})) sum{};
     CornerId c = firstCorner(f);
-    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum = sum + pos(cornerNode(c));
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum = sum + at(cornerNode(c));
     return sum / static_cast<double>(cornerCount(f));
 }
 
-double Graph::perimeter3(FaceId f) const {
-    double sum = 0;
-    CornerId c = firstCorner(f);
-    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum += length(pos3(cornerNode(nextCorner(c))) - pos3(cornerNode(c)));
-    return sum;
-}
+double Graph::perimeter(FaceId f) const { return sidesLength(f, [this](NodeId n) { return pos(n); }); }
+vec2 Graph::centroid(FaceId f) const { return cornerMean(f, [this](NodeId n) { return pos(n); }); }
+double Graph::perimeter3(FaceId f) const { return sidesLength(f, [this](NodeId n) { return pos3(n); }); }
+vec3 Graph::centroid3(FaceId f) const { return cornerMean(f, [this](NodeId n) { return pos3(n); }); }
 
 double Graph::area3(FaceId f) const {
     std::vector<vec3> corners;
@@ -210,12 +212,6 @@ double Graph::area3(FaceId f) const {
     return polygonArea3(corners);
 }
 
-vec3 Graph::centroid3(FaceId f) const {
-    vec3 sum{0, 0, 0};
-    CornerId c = firstCorner(f);
-    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c)) sum = sum + pos3(cornerNode(c));
-    return sum / static_cast<double>(cornerCount(f));
-}
 
 // Newell's sum, taken about the first corner so that far-off faces keep their precision.
 vec3 Graph::vectorArea(FaceId f) const {
@@ -242,12 +238,22 @@ void Graph::touchFacesAt(NodeId n) {
     for (CornerId c = firstCornerAt(n); c != kNoId; c = nextCornerAt(c)) touchNode(anchorOf(cornerFace(c)));
 }
 
+// Every face sharing a corner with f (a superset of those sharing a side):
+// both `neighbours` and `touching` read them.
 void Graph::touchNeighbourAnchors(FaceId f) {
     CornerId c = firstCorner(f);
     for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c))
-        eachSideUse(cornerNode(c), cornerNode(nextCorner(c)), [&](FaceId g, bool) {
-            if (g != f) touchNode(anchorOf(g));
-        });
+        for (CornerId k = firstCornerAt(cornerNode(c)); k != kNoId; k = nextCornerAt(k))
+            if (cornerFace(k) != f) touchNode(anchorOf(cornerFace(k)));
+}
+
+int Graph::touchingCount(FaceId f) const {
+    std::vector<FaceId> seen;
+    CornerId c = firstCorner(f);
+    for (int i = 0; i < cornerCount(f); ++i, c = nextCorner(c))
+        for (CornerId k = firstCornerAt(cornerNode(c)); k != kNoId; k = nextCornerAt(k))
+            if (cornerFace(k) != f && std::find(seen.begin(), seen.end(), cornerFace(k)) == seen.end()) seen.push_back(cornerFace(k));
+    return static_cast<int>(seen.size());
 }
 
 void Graph::initFaceAttr(FaceId f, int i, Value v) { pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)] = std::move(v); }

@@ -124,6 +124,8 @@ void NodeMerger::merge(Graph& g, NodeId keep, NodeId gone) {
     }
     for (FaceId f : faces) repairFace(g, f);
     removeDuplicateFaces(g, keep);
+    for (FaceId f : faces)
+        if (g.faceAlive(f)) g.faceReshaped(f);
     unindex(gone);
     g.removeNode(gone);
 }

@@ -179,7 +179,7 @@ check(h and "face" in h["contents"]["value"] and "`Room`" in h["contents"]["valu
 items = c.request("textDocument/completion", {"textDocument": face_doc,
                                                "position": {"line": 4, "character": face_line.index("level")}})["result"]
 labels = {i["label"] for i in items}
-check(labels == {"level", "age", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours"},
+check(labels == {"level", "age", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours", "touching"},
       "completion after f.: %s" % labels)
 
 unknown = c.request("textDocument/formatting", {"textDocument": doc, "options": {}})

@@ -55,7 +55,9 @@ inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
       "the mean of the face's corners (as G^3 defines it)")                                                          \
     X(Normal, normal, normal, vec3, "vec3", kOnFaces, kIn3d,                                                         \
       "the face's unit normal (Newell's; counter-clockwise corners seen from its tip)")                               \
-    X(Neighbours, neighbours, neighbours, long long, "int", kOnFaces, kInBoth, "the faces sharing a side with the face")
+    X(Neighbours, neighbours, neighbours, long long, "int", kOnFaces, kInBoth, "the faces sharing a side with the face") \
+    X(Touching, touching, touching, long long, "int", kOnFaces, kInBoth,                                               \
+      "the faces sharing at least a corner with the face (G^3's neighbouring faces)")
 
 enum class ElemFact : std::uint8_t {
 #define G2D_FACT_ID(id, fn, name, type, typeName, classes, spaces, meaning) id,
@@ -109,6 +111,7 @@ inline double perimeter3(const Graph& g, ElemClass, std::uint32_t id) { return f
 inline vec3 centroid3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid3(id)); }
 inline vec3 normal(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.vectorArea(id)); }
 inline long long neighbours(const Graph& g, ElemClass, std::uint32_t id) { return g.neighbourCount(id); }
+inline long long touching(const Graph& g, ElemClass, std::uint32_t id) { return g.touchingCount(id); }
 
 }  // namespace fact
 

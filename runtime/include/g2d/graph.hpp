@@ -217,6 +217,9 @@ public:
     // at least one corner: the caller removes faces that fall below 3);
     // corner c moved to node n.
     CornerId insertCornerAfter(CornerId c, NodeId m);
+    // Records that f's corners changed (its facts, its anchor's matches, and
+    // the faces around it, for `neighbours` and `touching`).
+    void faceReshaped(FaceId f);
     void removeCorner(CornerId c);
     void moveCorner(CornerId c, NodeId n);
     bool faceAlive(FaceId f) const { return f < faces_.size() && faces_[f].alive; }
@@ -246,6 +249,9 @@ public:
     // The distinct faces sharing a side with f, in the order of f's sides.
     void neighbours(FaceId f, std::vector<FaceId>& out) const;
     int neighbourCount(FaceId f) const;
+    // The distinct faces sharing at least a corner with f (G^3's neighbouring
+    // faces, Fig. 3.11: eight around a face of a quad grid).
+    int touchingCount(FaceId f) const;
     // Geometry of the corners' positions: the signed area (shoelace;
     // positive when they run counter-clockwise, y up), its absolute value,
     // the perimeter, and the centroid as the mean of the corners (as G^3).
@@ -436,7 +442,10 @@ private:
     void dropEdgeExtras(EdgeRec& rec, EdgeId e);   // attributes and styles of a removed edge
     void removeFacesAt(NodeId n);
     void touchNeighbourAnchors(FaceId f);
-    void faceReshaped(FaceId f);
+    template <class At>
+    double sidesLength(FaceId f, At at) const;
+    template <class At>
+    auto cornerMean(FaceId f, At at) const;
     void unlinkAtNode(CornerId c);
     // A removed node's or face's record: out of its kind's index (swap-remove,
     // fixing the moved element's place), dead, its attributes and styles dropped.
