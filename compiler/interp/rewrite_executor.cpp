@@ -67,7 +67,7 @@ void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph&
     for (const auto& [sketch, node] : o.refs) {
         refDaughter.push_back({sketch.x, sketch.y});
         refHost.push_back(host[static_cast<std::size_t>(node)]);
-        refZ.push_back(g.z(m.nodes[node]));
+        if (o.space3d) refZ.push_back(g.z(m.nodes[node]));   // 2D grammars have no z
     }
     const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost, refZ);
     for (const auto& t : o.targets) {
