@@ -122,9 +122,16 @@ produceStmt
     | graphStmt
     | forStmt
     | insertStmt
+    | splitStmt
     ;
 // insert m between a and b;   (m joins every face with side a–b, between them)
 insertStmt  : 'insert' node=ID 'between' first=ID 'and' second=ID ';' ;
+// split f [around Kind at POS {…}] with EdgeKind {…} [for c in f.corners where COND];
+// (G^3's Split face: the chosen corners cut f, around a new node or, two, by a chord)
+splitStmt
+    : 'split' face=ID ('around' centreKind=ID position centre=assignments?)? 'with' edgeKind=ID edge=assignments?
+      ('for' var=ID 'in' loopFace=ID '.' what=ID 'where' expr)? ';'
+    ;
 // for (u, v) in f.sides { … }   or   for c in f.corners { … }
 forStmt
     : 'for' (var=ID | '(' first=ID ',' second=ID ')') 'in' face=ID '.' what=ID '{' produceStmt* '}'

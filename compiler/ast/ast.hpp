@@ -124,8 +124,26 @@ struct InsertStmt {
     Ident node, first, second;
     Span span;
 };
+// `split f [around Kind at POS {…}] with EdgeKind {…} [for c in f.corners
+// where COND];` in a daughter: G^3's Split face.
+struct SplitStmt {
+    struct Centre {
+        Ident kind;
+        ExprPtr position;
+        std::vector<Assignment> assigns;
+        Span span;
+    };
+    Ident face;
+    std::optional<Centre> centre;
+    Ident edgeKind;
+    std::vector<Assignment> edgeAssigns;
+    std::optional<Ident> var;          // the corner, with loopFace.what and cond
+    Ident loopFace, what;
+    ExprPtr cond;
+    Span span;
+};
 struct ProduceStmt {
-    std::variant<LetStmt, GraphStmt, ForBlock, InsertStmt> stmt;
+    std::variant<LetStmt, GraphStmt, ForBlock, InsertStmt, SplitStmt> stmt;
 };
 
 struct ProduceBlock {

@@ -380,7 +380,8 @@ private:
                 const std::string rd = str(static_cast<long long>(r)) + "_" + str(static_cast<long long>(d));
                 out += "            case " + str(static_cast<long long>(key)) + ": apply_" + rd + "(G, step, pending_" + rd + "_[ref.index]); break;\n";
                 clears += "        pending_" + rd + "_.clear();\n";
-                for (std::size_t l = 0; l < prog_.rules[r].daughters[d].loops.size(); ++l)
+                const std::size_t loops = lower::lowerRewrite(prog_, prog_.rules[r], d).loops.size();
+                for (std::size_t l = 0; l < loops; ++l)
                     clears += "        turns_" + rd + "_" + str(static_cast<long long>(l)) + "_.clear();\n";
             }
         out += "            default: break;\n            }\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
@@ -482,6 +483,7 @@ private:
         out += "    std::vector<RuleInfo> infos_;\n" + constants_.definitions();
         out += "    struct PendingRef {\n        std::uint32_t daughter, index;\n    };\n    GrowArray<PendingRef> pendingOrder_;\n";
         out += "    std::vector<NodeId> loopNodes_;   // a `for` loop's new nodes, turn by turn\n";
+        out += "    std::vector<NodeId> splitChosen_;   // a split's chosen corners\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             if (prog_.kinds[k].attrs.empty()) continue;
             const std::string sk = str(static_cast<long long>(k));

@@ -88,6 +88,24 @@ std::string RewritePrinter::commitLoop(int loop, const lower::RewriteProgram& p,
     return out;
 }
 
+// The chosen corners from the split's corner loop, then the cut
+// (rt::splitFace), whose makers are the split's operations as lambdas.
+std::string RewritePrinter::splitFace(const lower::SplitFace& o, const lower::RewriteProgram& p, const std::string& c) {
+    const lower::SplitProgram& s = p.splits[static_cast<std::size_t>(o.split)];
+    const std::string L = str(s.loop), b = c + "    ", t = b + "    ";
+    std::string out = c + "{\n" + b + "splitChosen_.clear();\n";
+    out += b + "for (std::uint32_t lt = 0; lt < p.loopCount" + L + "; ++lt) {\n";
+    out += t + "const Turn_" + loopNames_ + "_" + L + "& T = turns_" + loopNames_ + "_" + L + "_[p.loopFirst" + L + " + lt];\n";
+    out += t + (s.chosenReg >= 0 ? "if (T." + loopReg(s.loop, s.chosenReg) + ") " : std::string()) + "splitChosen_.push_back(T.u);\n";
+    out += b + "}\n" + b + "SplitMakers make;\n";
+    if (!s.makeCentre.empty())
+        out += b + "make.centre = [&]() -> NodeId {\n" + commitOps(s.makeCentre, p, t) + t + "return " + node(s.to) + ";\n" + b + "};\n";
+    out += b + "make.edge = [&](NodeId " + node(s.from) + ", NodeId " + node(s.to) + ") -> EdgeId {\n" + commitOps(s.makeEdge, p, t) + t +
+           "return " + edge(s.edgeHandle) + ";\n" + b + "};\n";
+    out += b + "make.copyFace = [&](FaceId from, FaceId to) { copyFaceAttributes(G, from, to); };\n";
+    return out + b + "splitFace(G, " + face(o.face) + ", splitChosen_, make, step);\n" + c + "}\n";
+}
+
 std::string RewritePrinter::prepareOps(const std::vector<lower::PrepareOp>& ops, const lower::RewriteProgram& p, const ExprContext& ctx,
                                        const std::string& in) {
     std::string out;
@@ -187,6 +205,7 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                            commit += c + "if (G.faceAlive(" + face(o.handle) + ")) G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
                        [&](const lower::CommitLoop& o) { commit += commitLoop(o.loop, p, c); },
+                       [&](const lower::SplitFace& o) { commit += splitFace(o, p, c); },
                    },
                    op);
     }

@@ -1,7 +1,9 @@
 #include "interp/rewrite_executor.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "g2d/face_split.hpp"
 #include "g2d/placement.hpp"
 
 namespace g2d::interp {
@@ -183,9 +185,41 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        },
                        [&](const lower::InsertBetween& o) { g.insertBetween(nodes[o.first], nodes[o.second], nodes[o.node]); },
                        [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },
+                       [&](const lower::SplitFace& o) { split(p.splits[o.split], faces[o.face], registers, g, step, p, loops); },
                    },
                    op);
     }
+}
+
+// The chosen corners, then the cut (rt::splitFace), whose makers run the
+// split's operations; each run reads a copy of the registers (they are used
+// once per edge).
+void RewriteExecutor::split(const lower::SplitProgram& s, rt::FaceId face, const std::vector<rt::Value>& registers, rt::Graph& g,
+                            long long step, const lower::RewriteProgram& p, std::vector<LoopValues>& loops) {
+    const LoopValues& turns = loops[static_cast<std::size_t>(s.loop)];
+    const std::size_t regs = p.loops[static_cast<std::size_t>(s.loop)].registers.size();
+    std::vector<rt::NodeId> chosen;
+    for (std::size_t t = 0; t < turns.corners.size(); ++t)
+        if (s.chosenReg < 0 || std::get<bool>(turns.registers[t * regs + static_cast<std::size_t>(s.chosenReg)])) chosen.push_back(turns.corners[t]);
+    hostOf_.resize(std::max(hostOf_.size(), static_cast<std::size_t>(p.nodeHandles)), rt::kNoId);
+    edgeOf_.resize(std::max(edgeOf_.size(), static_cast<std::size_t>(p.edgeHandles)), rt::kNoId);
+    std::vector<rt::Value> scratch;
+    rt::SplitMakers make;
+    if (!s.makeCentre.empty())
+        make.centre = [&] {
+            scratch = registers;
+            apply(s.makeCentre, rt::Match{}, scratch, g, step, p, loops);
+            return hostOf_[static_cast<std::size_t>(s.to)];
+        };
+    make.edge = [&](rt::NodeId from, rt::NodeId to) {
+        hostOf_[static_cast<std::size_t>(s.from)] = from;
+        hostOf_[static_cast<std::size_t>(s.to)] = to;
+        scratch = registers;
+        apply(s.makeEdge, rt::Match{}, scratch, g, step, p, loops);
+        return edgeOf_[static_cast<std::size_t>(s.edgeHandle)];
+    };
+    make.copyFace = [&](rt::FaceId from, rt::FaceId to) { g.copyFaceAttrs(from, to); };
+    rt::splitFace(g, face, chosen, make, step);
 }
 
 }  // namespace g2d::interp

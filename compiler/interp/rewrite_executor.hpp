@@ -38,6 +38,8 @@ private:
                long long step, const lower::RewriteProgram& p, std::vector<LoopValues>& loops);
     void commitLoop(const lower::LoopProgram& l, LoopValues& values, rt::Graph& g, long long step, const lower::RewriteProgram& p,
                     std::vector<LoopValues>& loops);
+    void split(const lower::SplitProgram& s, rt::FaceId face, const std::vector<rt::Value>& registers, rt::Graph& g, long long step,
+               const lower::RewriteProgram& p, std::vector<LoopValues>& loops);
 
     std::vector<std::optional<rt::Value>> placed_;  // automatic positions (vec2 or vec3), by daughter node
     std::vector<rt::NodeId> hostOf_;   // the rewrite's node handles

@@ -343,6 +343,28 @@ struct FaceLoop {
     Span span;
 };
 
+// `split f …`: G^3's Split face (rt::splitFace) on matched face motherFace.
+// `cond`, read with the corner as match node firstVar, chooses corners; the
+// chosen ones cut the face, around a new node (centre), or, two, by a chord.
+struct FaceSplit {
+    int motherFace = -1;
+    int firstVar = -1;
+    std::optional<Expr> cond;          // absent: every corner is chosen
+    struct Centre {
+        int kind = -1;
+        Expr position;
+        std::optional<Expr> radius;    // 3D
+        std::vector<AttrAssign> assigns;
+        std::vector<StyleAssign> styles;
+        Span span;
+    };
+    std::optional<Centre> centre;      // absent: only a chord (two chosen corners) cuts
+    int edgeKind = -1;
+    std::vector<AttrAssign> edgeAssigns;
+    std::vector<StyleAssign> edgeStyles;
+    Span span;
+};
+
 struct Daughter {
     std::optional<Expr> weightExpr;    // absent: weight 1
     std::optional<double> weight;      // known at compile time
@@ -354,6 +376,7 @@ struct Daughter {
     std::vector<FaceLoop> loops;
     struct Insert { int node, first, second; Span span; };   // daughter node indices
     std::vector<Insert> inserts;       // `insert node between first and second`, in order
+    std::vector<FaceSplit> splits;     // after everything else; each face is kept (keptFaces) until it is cut
     std::vector<int> deletedNodes;     // mother nodes not kept (their dangling edges and faces go too)
     std::vector<int> deletedEdges;     // mother edges not kept
     std::vector<int> deletedFaces;     // mother faces not kept

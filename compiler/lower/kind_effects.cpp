@@ -115,6 +115,12 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
         for (int n : {ins.node, ins.first, ins.second})
             if (const ir::DaughterNode* dn = at(d.nodes, n)) changed.add(dn->kind, ir::ElemClass::Node);
     }
+    for (const auto& sp : d.splits) {   // new, and the corners' edges
+        if (sp.centre) changed.add(sp.centre->kind, ir::ElemClass::Node);
+        changed.add(sp.edgeKind, ir::ElemClass::Edge);
+        changed.add(at(rule.faces, sp.motherFace) ? at(rule.faces, sp.motherFace)->kind : -1, ir::ElemClass::Face);
+        changed.add(-1, ir::ElemClass::Node);   // corners of any kind gain an edge
+    }
     for (const auto& l : d.loops) {   // new, every turn
         for (const auto& n : l.nodes) changed.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : l.edges) changed.add(e.kind, ir::ElemClass::Edge);

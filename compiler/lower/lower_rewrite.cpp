@@ -134,6 +134,42 @@ private:
             p_.loops.push_back(lowerLoop(d_.loops[i]));
             p_.prepare.push_back(PrepareLoop{static_cast<int>(i)});
         }
+        for (const auto& s : d_.splits) lowerSplit(s);
+    }
+
+    // A split: its centre's values and its edges' (once), then its corner loop.
+    void lowerSplit(const ir::FaceSplit& s) {
+        SplitProgram sp;
+        sp.from = p_.nodeHandles++;
+        sp.to = p_.nodeHandles++;
+        sp.edgeHandle = p_.edgeHandles++;
+        if (s.centre) {
+            const int pos = newRegister(ir::positionType(prog_));
+            p_.prepare.push_back(EvalPosition{pos, &s.centre->position, "position of the split's new node is not finite"});
+            CreateNode c{sp.to, s.centre->kind, pos, {}};
+            for (const auto& a : s.centre->assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+            sp.makeCentre.push_back(std::move(c));
+            if (s.centre->radius) sp.makeCentre.push_back(SetRadius{sp.to, operand(*s.centre->radius)});
+            for (const auto& st : s.centre->styles) sp.makeCentre.push_back(SetNodeStyle{sp.to, &st, operand(st.value)});
+        }
+        CreateEdge e{sp.edgeHandle, s.edgeKind, sp.from, sp.to, {}};
+        for (const auto& a : s.edgeAssigns) e.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+        sp.makeEdge.push_back(std::move(e));
+        for (const auto& st : s.edgeStyles) sp.makeEdge.push_back(SetEdgeStyle{sp.edgeHandle, &st, operand(st.value)});
+        LoopProgram corners;
+        corners.matchFace = s.motherFace;
+        corners.sides = false;
+        corners.firstVar = s.firstVar >= 0 ? s.firstVar : static_cast<int>(r_.nodes.size());
+        corners.outerNodes = static_cast<int>(d_.nodes.size());
+        if (s.cond) {
+            corners.registers.push_back(ir::kBoolType);
+            corners.prepare.push_back(Eval{0, &*s.cond});
+            sp.chosenReg = 0;
+        }
+        sp.loop = static_cast<int>(p_.loops.size());
+        p_.prepare.push_back(PrepareLoop{sp.loop});
+        p_.loops.push_back(std::move(corners));
+        p_.splits.push_back(std::move(sp));
     }
 
     void place() {
@@ -227,14 +263,24 @@ private:
             for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value});
         }
         for (std::size_t i = 0; i < d_.loops.size(); ++i) c.push_back(CommitLoop{static_cast<int>(i)});
+        // Last, so the face has its attributes (and any inserted corners) when it is cut.
+        for (std::size_t i = 0; i < d_.splits.size(); ++i) c.push_back(SplitFace{keptFaceHandle(d_.splits[i].motherFace), static_cast<int>(i)});
         writeSet();
     }
 
-    // Deleted elements, and kept ones that move, change ends or are written.
+    int keptFaceHandle(int motherFace) const {
+        for (std::size_t i = 0; i < d_.keptFaces.size(); ++i)
+            if (d_.keptFaces[i].motherFace == motherFace) return static_cast<int>(d_.faces.size() + i);
+        return -1;
+    }
+
+    // Deleted elements, and kept ones that move, change ends or are written
+    // (a split face is replaced).
     void writeSet() {
         p_.writtenNodes = d_.deletedNodes;
         p_.writtenEdges = d_.deletedEdges;
         p_.writtenFaces = d_.deletedFaces;
+        for (const auto& s : d_.splits) p_.writtenFaces.push_back(s.motherFace);
         for (std::size_t i = 0; i < d_.keptFaces.size(); ++i)
             if (!keptFaceAttrs_[i].empty() || !keptFaceStyles_[i].empty()) p_.writtenFaces.push_back(d_.keptFaces[i].motherFace);
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {

@@ -105,6 +105,8 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                                          attrs(prog, o.kind, o.attrs);
                               } else if constexpr (std::is_same_v<T, SetFaceStyle>)
                                   return "f" + std::to_string(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              else if constexpr (std::is_same_v<T, SplitFace>)
+                                  return "split f" + std::to_string(o.face) + " by split " + std::to_string(o.split);
                               else {
                                   static_assert(std::is_same_v<T, CommitLoop>, "an operation the printer does not know");
                                   return "loop " + std::to_string(o.loop);
@@ -124,6 +126,14 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
         for (const auto& op : l.create) out += "    " + commitLine(op) + "\n";
         out += "  link\n";
         for (const auto& op : l.link) out += "    " + commitLine(op) + "\n";
+    }
+    for (std::size_t i = 0; i < p.splits.size(); ++i) {
+        const SplitProgram& sp = p.splits[i];
+        out += "split " + std::to_string(i) + ": corners of loop " + std::to_string(sp.loop) + ", chosen " +
+               (sp.chosenReg >= 0 ? "by r" + std::to_string(sp.chosenReg) : std::string("all")) + "\n  centre\n";
+        for (const auto& op : sp.makeCentre) out += "    " + commitLine(op) + "\n";
+        out += "  edge\n";
+        for (const auto& op : sp.makeEdge) out += "    " + commitLine(op) + "\n";
     }
     out += "commit\n";
     for (const auto& op : p.commit) out += "  " + commitLine(op) + "\n";

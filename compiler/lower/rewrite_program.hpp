@@ -110,9 +110,10 @@ struct CreateFace {
 struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; };
 struct InsertBetween { int node, first, second; };    // node handles (rt::Graph::insertBetween)
 struct CommitLoop { int loop; };    // RewriteProgram::loops[loop]: every turn's create, then every turn's link
+struct SplitFace { int face; int split; };   // face handle; RewriteProgram::splits[split] (rt::splitFace)
 using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetRadius, SetNodeAttr,
                               TouchNodeValues, SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle,
-                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, InsertBetween, CommitLoop>;
+                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, InsertBetween, CommitLoop, SplitFace>;
 
 // A `for` loop (ir::FaceLoop), one turn per corner of the matched face, from
 // its first corner. Prepare takes the corners (before the step changes
@@ -135,10 +136,24 @@ struct LoopProgram {
     int nodeHandles() const { return outerNodes + 2 + 3 * localNodes; }
 };
 
+// G^3's Split face (ir::FaceSplit, rt::splitFace). Loop `loop` takes the
+// face's corners in prepare and evaluates whether each is chosen into its
+// register chosenReg (-1: every corner is). Commit runs `makeCentre` to make
+// the new node on node handle `to` (empty: a chord only cuts), and
+// `makeEdge`, once per edge, to make edge handle `edgeHandle` from node
+// handle `from` to `to`; the cut itself is the runtime's. Their operands are
+// read once per edge: a back end must not use a register up.
+struct SplitProgram {
+    int loop = -1, chosenReg = -1;
+    int from = -1, to = -1, edgeHandle = -1;
+    std::vector<CommitOp> makeCentre, makeEdge;
+};
+
 struct RewriteProgram {
     std::vector<PrepareOp> prepare;
     std::vector<CommitOp> commit;
-    std::vector<LoopProgram> loops;
+    std::vector<LoopProgram> loops;     // the `for` loops, then the splits' corner loops
+    std::vector<SplitProgram> splits;
     std::vector<ir::Type> registers;
     int nodeHandles = 0, edgeHandles = 0, faceHandles = 0;
     bool placement = false;             // prepare has a Place (the `placed` positions exist)

@@ -63,6 +63,7 @@ public:
         if (s->letStmt()) return ProduceStmt{let(s->letStmt())};
         if (s->graphStmt()) return ProduceStmt{graphStmt(s->graphStmt())};
         if (auto* i = s->insertStmt()) return ProduceStmt{InsertStmt{ident(i->node), ident(i->first), ident(i->second), span(i)}};
+        if (auto* sp = s->splitStmt()) return ProduceStmt{split(sp)};
         auto* f = s->forStmt();
         ForBlock b;
         b.span = span(f);
@@ -72,6 +73,28 @@ public:
         b.what = ident(f->what);
         for (auto* inner : f->produceStmt()) b.body.push_back(produceStmt(inner));
         return ProduceStmt{std::move(b)};
+    }
+    SplitStmt split(P::SplitStmtContext* ctx) {
+        SplitStmt s;
+        s.span = span(ctx);
+        s.face = ident(ctx->face);
+        if (ctx->centreKind) {
+            SplitStmt::Centre c;
+            c.kind = ident(ctx->centreKind);
+            c.position = expr(ctx->position()->expr());
+            if (ctx->centre) c.assigns = assignments(ctx->centre);
+            c.span = span(ctx->centreKind, ctx->centre ? ctx->centre->getStop() : ctx->position()->getStop());
+            s.centre = std::move(c);
+        }
+        s.edgeKind = ident(ctx->edgeKind);
+        if (ctx->edge) s.edgeAssigns = assignments(ctx->edge);
+        if (ctx->var) {
+            s.var = ident(ctx->var);
+            s.loopFace = ident(ctx->loopFace);
+            s.what = ident(ctx->what);
+            s.cond = expr(ctx->expr());
+        }
+        return s;
     }
     TypeRef typeRef(P::TypeRefContext* ctx) const { return TypeRef{ident(ctx->ID())}; }
 

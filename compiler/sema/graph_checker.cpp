@@ -869,6 +869,10 @@ private:
                     dg.inserts.push_back(ir::Daughter::Insert{node, first, second, ins->span});
                 continue;
             }
+            if (const auto* sp = std::get_if<ast::SplitStmt>(&s.stmt)) {
+                daughterSplit(*sp, dg, exprEnv(), elems);
+                continue;
+            }
             const auto& gs = std::get<ast::GraphStmt>(s.stmt);
             if (const auto* n = asNode(gs)) {
                 if (nodeCursor < pendingNodes.size() && pendingNodes[nodeCursor].stmt == n) {
@@ -953,6 +957,10 @@ private:
             if (de.src <= -3) de.src = keepEndpointOf(-3 - de.src, dg, keptNodes, named);
             if (de.dst <= -3) de.dst = keepEndpointOf(-3 - de.dst, dg, keptNodes, named);
         }
+        // A face that is split is kept until it is cut.
+        for (const auto& sp : dg.splits)
+            if (std::none_of(dg.keptFaces.begin(), dg.keptFaces.end(), [&](const ir::KeptFace& k) { return k.motherFace == sp.motherFace; }))
+                dg.keptFaces.push_back(ir::KeptFace{sp.motherFace, {}, {}, sp.span});
         // Wildcards are always kept.
         for (std::size_t i = 0; i < rule_.nodes.size(); ++i)
             if (rule_.nodes[i].kind < 0 && !keptNodes.count(static_cast<int>(i)))
@@ -1070,6 +1078,11 @@ private:
                 ok = false;
                 continue;
             }
+            if (const auto* sp = std::get_if<ast::SplitStmt>(&st.stmt)) {
+                g_.diags.error(sp->span, "`split` inside `for` is not supported; split outside the loop");
+                ok = false;
+                continue;
+            }
             const auto* n = asNode(std::get<ast::GraphStmt>(st.stmt));
             if (!n) continue;
             if (!n->kind || n->wildcard) {
@@ -1162,6 +1175,61 @@ private:
             }
         }
         if (ok) dg.loops.push_back(std::move(loop));
+    }
+
+    // `split f [around Kind at POS {…}] with EdgeKind {…} [for c in f.corners
+    // where COND];`: the corner `c` reads as a wildcard node, like a loop's.
+    void daughterSplit(const ast::SplitStmt& sp, ir::Daughter& dg, ExprEnv env, const std::vector<ElemBinding>& elems) {
+        ir::FaceSplit split;
+        split.span = sp.span;
+        split.motherFace = motherFace(sp.face.name);
+        bool ok = true;
+        if (split.motherFace < 0) {
+            g_.diags.error(sp.face.span, "`" + sp.face.name + "` is not a face of the match: `split` cuts a matched face");
+            ok = false;
+        }
+        for (const auto& other : dg.splits)
+            if (ok && other.motherFace == split.motherFace) {
+                auto& d = g_.diags.error(sp.face.span, "face `" + sp.face.name + "` is split twice in this daughter");
+                d.notes.push_back({other.span, "first split here"});
+                ok = false;
+            }
+        split.edgeKind = resolveKind(g_, sp.edgeKind, ElemClass::Edge);
+        if (split.edgeKind < 0) ok = false;
+        else checkAssignments(g_, ec_, split.edgeKind, sp.edgeAssigns, env, split.edgeAssigns, split.edgeStyles);
+        if (sp.centre) {
+            ir::FaceSplit::Centre c;
+            c.span = sp.centre->span;
+            c.kind = resolveKind(g_, sp.centre->kind, ElemClass::Node);
+            if (auto pos = ec_.checkAs(*sp.centre->position, ir::positionType(g_.prog), env, "a position")) c.position = std::move(*pos);
+            else ok = false;
+            if (c.kind < 0) ok = false;
+            else checkAssignments(g_, ec_, c.kind, sp.centre->assigns, env, c.assigns, c.styles, &c.radius);
+            split.centre = std::move(c);
+        }
+        if (sp.var) {
+            split.firstVar = static_cast<int>(rule_.nodes.size());
+            if (sp.loopFace.name != sp.face.name || sp.what.name != "corners") {
+                g_.diags.error(sp.loopFace.span, "a split chooses among the corners of `" + sp.face.name + "`: write `for " + sp.var->name +
+                                                     " in " + sp.face.name + ".corners where …`");
+                ok = false;
+            }
+            std::vector<ElemBinding> cornerElems = elems;
+            if (auto prev = findName(sp.var->name)) {
+                reportDuplicate(g_, *sp.var, *prev);
+                ok = false;
+            }
+            ElemBinding b;
+            b.name = sp.var->name;
+            b.ref = ElemRef{ElemClass::Node, split.firstVar};
+            b.kind = -1;   // a face's corners may be of any kind
+            b.span = sp.var->span;
+            cornerElems.push_back(b);
+            env.elems = &cornerElems;
+            if (auto cond = ec_.checkAs(*sp.cond, ir::kBoolType, env, "a corner condition")) split.cond = std::move(*cond);
+            else ok = false;
+        }
+        if (ok) dg.splits.push_back(std::move(split));
     }
 
     std::string suggestElement(const std::string& name) {

@@ -18,6 +18,10 @@ void lintProgram(Globals& g) {
             for (const auto& e : d.edges)
                 if (e.motherEdge < 0) created.insert(e.kind);
             for (const auto& f : d.faces) created.insert(f.kind);
+            for (const auto& sp : d.splits) {
+                if (sp.centre) created.insert(sp.centre->kind);
+                created.insert(sp.edgeKind);
+            }
             for (const auto& l : d.loops) {
                 for (const auto& n : l.nodes) created.insert(n.kind);
                 for (const auto& e : l.edges) created.insert(e.kind);

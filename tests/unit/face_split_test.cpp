@@ -21,8 +21,18 @@ struct Quad {
         f = g.addFace(2, n, 0);
         g.setFaceAttr(f, 0, Value{42LL});
     }
-    FaceSplit split(std::vector<std::uint8_t> chosen) {
-        return splitFace(g, f, n, chosen, vec3{1, 1, 0}, 0, 1, 1, [&](FaceId from, FaceId to) { g.copyFaceAttrs(from, to); });
+    SplitMakers makers(bool centre = true) {
+        SplitMakers m;
+        if (centre) m.centre = [this] { return g.addNode(0, vec3{1, 1, 0}, 1); };
+        m.edge = [this](NodeId a, NodeId b) { return g.addEdge(1, a, b, 1); };
+        m.copyFace = [this](FaceId from, FaceId to) { g.copyFaceAttrs(from, to); };
+        return m;
+    }
+    FaceSplit split(std::vector<std::uint8_t> chosen, bool centre = true) {
+        std::vector<NodeId> picked;
+        for (std::size_t i = 0; i < chosen.size(); ++i)
+            if (chosen[i]) picked.push_back(n[i]);
+        return splitFace(g, f, picked, makers(centre), 1);
     }
     std::vector<NodeId> corners(FaceId face) const {
         std::vector<NodeId> out;
@@ -91,4 +101,21 @@ TEST_CASE("split face leaves the face alone with fewer than two chosen corners, 
         CHECK(q.g.faceCount() == 1);
         CHECK(q.g.edgeCount() == 0);
     }
+}
+
+TEST_CASE("split face without a centre maker cuts only by a chord", "[g3][split]") {
+    Quad q;
+    CHECK(q.split({1, 1, 1, 1}, false).faces.empty());
+    CHECK(q.g.faceAlive(q.f));
+    CHECK(q.split({1, 0, 1, 0}, false).faces.size() == 2);
+}
+
+TEST_CASE("split face reads the face's corners as they are now: a corner inserted since is not chosen", "[g3][split]") {
+    Quad q;
+    const NodeId m = q.g.addNode(0, vec3{1, -1, 0}, 1);
+    q.g.insertBetween(q.n[0], q.n[1], m);
+    // Chosen before the insert: all four old corners (a fan of four, m on the first part).
+    const FaceSplit s = q.split({1, 1, 1, 1});
+    REQUIRE(s.faces.size() == 4);
+    CHECK(q.corners(s.faces[0]) == std::vector<NodeId>{q.n[0], m, q.n[1], s.centre});
 }

@@ -18,6 +18,7 @@
 #include "g2d/derivation.hpp"
 #include "g2d/draw_items.hpp"
 #include "g2d/element_facts.hpp"
+#include "g2d/face_split.hpp"
 #include "g2d/obj_writer.hpp"
 #include "g2d/grammar_run.hpp"
 #include "g2d/graph.hpp"

@@ -3,20 +3,23 @@
 // which of its corners meet the command's secondary conditions (the chosen
 // corners, k of them):
 //
-//   k >= 3  a node at `centre`; an edge from each chosen corner to it; and for
-//           each two chosen corners that follow each other round the face, a
-//           face of the corners from the one to the next, then the new node
-//           (all corners chosen: a fan). The face is replaced.
+//   k >= 3  a node (make.centre); an edge from each chosen corner to it; and
+//           for each two chosen corners that follow each other round the
+//           face, a face of the corners from the one to the next, then the
+//           new node (all corners chosen: a fan). The face is replaced.
+//           Without make.centre the face is left alone.
 //   k == 2  no node (§3.4): an edge from the first chosen corner to the
 //           second, and two faces, the corners from each chosen one round to
 //           the other. The face is replaced — unless the two are neighbours
 //           on it (a face needs three corners): then it is left alone.
 //   k < 2   the face is left alone (one corner cannot divide it).
 //
-// New faces have the face's kind and run its way round; `copyFace(f, new)`
-// gives each the face's attributes before the face goes. The new node and
-// edges are the caller's to give attributes (their kinds' defaults).
-#include <cstdint>
+// The corners are the face's as they are now, from its first one; a corner
+// is chosen when it is in `chosen` (the caller judged them before the step,
+// so a corner the step inserted since is not chosen). New faces have the
+// face's kind and run its way round, and get its attributes (make.copyFace)
+// before it goes. The caller's makers give the new node and edges their
+// attributes.
 #include <functional>
 #include <span>
 #include <vector>
@@ -25,15 +28,18 @@
 
 namespace g2d::rt {
 
+struct SplitMakers {
+    std::function<NodeId()> centre;                           // empty: only a chord cuts
+    std::function<EdgeId(NodeId from, NodeId to)> edge;
+    std::function<void(FaceId from, FaceId to)> copyFace;
+};
+
 struct FaceSplit {
     NodeId centre = kNoId;          // kNoId: none made
     std::vector<EdgeId> edges;
     std::vector<FaceId> faces;      // empty: the face was left alone
 };
 
-// `corners`: f's corners from its first one (as read before the step),
-// `chosen[i]` whether corners[i] meets the conditions.
-FaceSplit splitFace(Graph& g, FaceId f, std::span<const NodeId> corners, std::span<const std::uint8_t> chosen, vec3 centre,
-                    int nodeKind, int edgeKind, long long step, const std::function<void(FaceId from, FaceId to)>& copyFace);
+FaceSplit splitFace(Graph& g, FaceId f, std::span<const NodeId> chosen, const SplitMakers& make, long long step);
 
 }  // namespace g2d::rt
