@@ -15,7 +15,7 @@ What is checked:
   docs/language.md, and chosen tokens get the expected scopes;
 * every keyword of grammar/G2d.g4 and every built-in function of
   compiler/sema/builtins.cpp is known to both the TextMate grammar and
-  editors/vim/syntax/g2d.vim;
+  editors/vim/syntax/g2d.vim, and the keywords are the ones docs/language.md lists;
 * if `vim` is installed: the Vim files load without errors and give chosen
   tokens the expected syntax groups.
 
@@ -995,6 +995,20 @@ def dump(path):
                 print("        %-24r %s" % (text, " ".join(s[1:])))
 
 
+def check_docs_keywords():
+    """The reference's list of reserved words is the grammar's."""
+    path = os.path.join(ROOT, "docs", "language.md")
+    text = read(path)
+    start = text.find("**Keywords** are reserved")
+    block = re.search(r"```\n(.*?)```", text[start:], re.S) if start >= 0 else None
+    listed = set(block.group(1).split()) if block else set()
+    R.check(bool(listed), "%s lists the keywords" % rel(path))
+    for kw in g4_keywords():
+        R.check(kw in listed, "keyword `%s` from G2d.g4 is listed in %s" % (kw, rel(path)))
+    for w in sorted(listed - set(g4_keywords())):
+        R.check(False, "`%s` listed as a keyword in %s is not one in G2d.g4" % (w, rel(path)))
+
+
 def main(argv):
     if len(argv) == 3 and argv[1] == "--dump":
         dump(argv[2])
@@ -1007,6 +1021,7 @@ def main(argv):
         check_regexes(gram)
         check_tokenizing(gram)
     check_vim()
+    check_docs_keywords()
     print("%d passed, %d failed" % (R.passed, R.failed))
     return 1 if R.failed else 0
 
