@@ -18,6 +18,7 @@ topDecl
     | defsDecl
     | mergeDecl
     | sequenceDecl
+    | compoundDecl
     | ruleDecl
     ;
 
@@ -41,6 +42,9 @@ defsDecl    : 'defs' STRING ';' ;
 mergeDecl   : 'merge' 'within' expr ';' ;
 // sequence { A; B; A; }   a G^3 command list: each once, in order, in parallel
 sequenceDecl: 'sequence' '{' (ID ';')* '}' ;
+// compound C { match { f: Face …; } sequence { A; B; } }   G^3's compound
+// command (§3.3): its commands, in order, within the scope of each match
+compoundDecl: 'compound' ID '{' matchBlock sequenceDecl '}' ;
 
 typeRef     : ID ;
 

@@ -208,10 +208,14 @@ struct PriorityDecl {
 struct DefsDecl { std::string svg; Span span; };
 struct MergeDecl { ExprPtr tolerance; Span span; };
 struct SequenceDecl { std::vector<Ident> rules; Span span; };
+// `compound C { match { … } sequence { … } }`: `match` is a rule named C
+// whose one daughter is empty (it is never applied: its matches are the
+// compound's initial primitives).
+struct CompoundDecl { RuleDecl match; SequenceDecl body; Span span; };
 
 struct Decl {
     std::variant<SpaceDecl, ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
-                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, RuleDecl> decl;
+                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, CompoundDecl, RuleDecl> decl;
 };
 
 // One parsed file.

@@ -5,6 +5,7 @@
 #include "emit/cpp_expr.hpp"
 #include "emit/cpp_rewrite.hpp"
 #include "emit/cpp_rules.hpp"
+#include "lower/command_lists.hpp"
 #include "lower/start_program.hpp"
 #include "lower/rule_facts.hpp"
 
@@ -384,7 +385,7 @@ private:
                 for (std::size_t l = 0; l < loops; ++l)
                     clears += "        turns_" + rd + "_" + str(static_cast<long long>(l)) + "_.clear();\n";
             }
-        out += "            default: break;\n            }\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
+        out += "            default: break;\n            }\n            if (onApplied) onApplied();\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
         out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";
         out += emitPrefetchData(perRule);
         return out;
@@ -415,10 +416,21 @@ private:
     // taking the attributes of the face they came from.
     std::string emitSequenceAndCopies() {
         std::string out;
+        auto entries = [](const std::vector<rt::SequenceEntry>& list) {
+            std::string e;
+            for (const auto& x : list) e += std::string(e.empty() ? "" : ", ") + "{" + (x.compound ? "true" : "false") + ", " + str(static_cast<long long>(x.index)) + "}";
+            return "{" + e + "}";
+        };
         if (!prog_.sequence.empty()) {
-            out += "    const std::vector<std::size_t>& sequence() const override {\n        static const std::vector<std::size_t> list = {";
-            for (std::size_t i = 0; i < prog_.sequence.size(); ++i) out += (i ? ", " : "") + str(prog_.sequence[i]);
-            out += "};\n        return list;\n    }\n\n";
+            out += "    const std::vector<SequenceEntry>& sequence() const override {\n        static const std::vector<SequenceEntry> list = " +
+                   entries(lower::sequenceOf(prog_)) + ";\n        return list;\n    }\n\n";
+        }
+        if (!prog_.compounds.empty()) {
+            std::string list;
+            for (const auto& c : lower::compoundsOf(prog_))
+                list += "            {" + cppString(c.name) + ", " + str(static_cast<long long>(c.matchRule)) + ", " + entries(c.entries) + "},\n";
+            out += "    const std::vector<CompoundInfo>& compounds() const override {\n        static const std::vector<CompoundInfo> list = {\n" + list +
+                   "        };\n        return list;\n    }\n\n";
         }
         std::string cases;
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {

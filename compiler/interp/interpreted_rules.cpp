@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lower/command_lists.hpp"
 #include "lower/rule_facts.hpp"
 
 namespace g2d::interp {
@@ -12,7 +13,8 @@ using rt::kNoId;
 using rt::NodeId;
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
-    for (int r : st.prog->sequence) sequence_.push_back(static_cast<std::size_t>(r));
+    sequence_ = lower::sequenceOf(*st.prog);
+    compounds_ = lower::compoundsOf(*st.prog);
     std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
     for (const auto& r : st.prog->rules) {
         lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);
@@ -287,6 +289,7 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
         Prepared& p = pending_[k];
         executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, p.loops,
                          g, step);
+        if (onApplied) onApplied();
     }
     pendingCount_ = 0;
 }

@@ -19,7 +19,8 @@ public:
 
     std::size_t ruleCount() const override { return infos_.size(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
-    const std::vector<std::size_t>& sequence() const override { return sequence_; }
+    const std::vector<rt::SequenceEntry>& sequence() const override { return sequence_; }
+    const std::vector<rt::CompoundInfo>& compounds() const override { return compounds_; }
     void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override;
     void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out,
                       rt::EdgeId newEdgesFrom = rt::kNoId) override;
@@ -32,7 +33,8 @@ public:
     const ir::Rule* currentRule() const { return current_; }
 
 private:
-    std::vector<std::size_t> sequence_;   // ir::Program::sequence
+    std::vector<rt::SequenceEntry> sequence_;   // lower::sequenceOf
+    std::vector<rt::CompoundInfo> compounds_;
     // One prepared application; kept in a pool so that its vectors are reused.
     struct Prepared {
         std::size_t rule = 0, daughter = 0;

@@ -388,6 +388,7 @@ using Pick = rt::Pick;   // g2d/pick.hpp
 
 struct Rule {
     std::string name;
+    int compound = -1;                 // >= 0: the match of Program::compounds[compound] (never applied)
     long long priority = 0;
     Pick pick = Pick::Random;
     bool ordered = false;              // the match keeps the x and y order of the sketch
@@ -425,6 +426,19 @@ inline const PatternNode& slotNode(const Rule& r, const NegativeCondition* nac, 
     return i < static_cast<int>(r.nodes.size()) ? r.nodes[i] : nac->nodes[i - nac->outerNodes];
 }
 
+// An entry of a `sequence`: a rule, or a compound (Program::compounds).
+struct SequenceEntry {
+    bool compound = false;
+    int index = -1;
+};
+// `compound C { match { … } sequence { … } }`: G^3's compound command (§3.3).
+struct Compound {
+    std::string name;
+    int matchRule = -1;                // its initial primitives: the matches of this rule (Rule::compound)
+    std::vector<SequenceEntry> entries;
+    Span span;
+};
+
 struct Program {
     bool space3d = false;              // `space 3d;`: positions are vec3
     // `merge within T;`: every rule merges, with tolerance T (a constant
@@ -432,7 +446,8 @@ struct Program {
     // merge with it too, or with rt::kDefaultMergeTolerance without one.
     std::optional<Expr> mergeTolerance;
     bool mergeAll = false;
-    std::vector<int> sequence;         // `sequence { … }`: rule indices, in order
+    std::vector<SequenceEntry> sequence;   // `sequence { … }`, in order
+    std::vector<Compound> compounds;
     std::vector<Enum> enums;
     std::vector<Kind> kinds;
     std::vector<Param> params;

@@ -153,12 +153,27 @@ public:
         }
         if (auto* c = ctx->defsDecl()) return Decl{DefsDecl{unescape(c->STRING()->getText()), span(c)}};
         if (auto* c = ctx->mergeDecl()) return Decl{MergeDecl{expr(c->expr()), span(c)}};
-        if (auto* c = ctx->sequenceDecl()) {
-            SequenceDecl d{{}, span(c)};
-            for (auto* id : c->ID()) d.rules.push_back(ident(id));
+        if (auto* c = ctx->sequenceDecl()) return Decl{sequence(c)};
+        if (auto* c = ctx->compoundDecl()) {
+            CompoundDecl d;
+            d.span = span(c);
+            d.match.name = ident(c->ID());
+            d.match.span = span(c);
+            d.match.matchSpan = span(c->matchBlock());
+            for (auto* m : c->matchBlock()->matchStmt()) d.match.match.push_back(matchStmt(m));
+            ProduceBlock none;
+            none.span = d.match.matchSpan;
+            d.match.items.push_back(RuleItem{std::move(none)});
+            d.body = sequence(c->sequenceDecl());
             return Decl{std::move(d)};
         }
         return Decl{rule(ctx->ruleDecl())};
+    }
+
+    SequenceDecl sequence(P::SequenceDeclContext* c) {
+        SequenceDecl d{{}, span(c)};
+        for (auto* id : c->ID()) d.rules.push_back(ident(id));
+        return d;
     }
 
     // Priorities are written as integers; `overflow` flags values beyond 64 bits.

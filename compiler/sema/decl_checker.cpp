@@ -364,20 +364,6 @@ void checkMerge(Globals& g, ExprChecker& ec, const ast::MergeDecl& d) {
     g.prog.mergeTolerance = std::move(*v);
 }
 
-void checkSequence(Globals& g, const ast::SequenceDecl& d, const std::map<std::string, int>& ruleIndex) {
-    if (!g.prog.sequence.empty()) {
-        g.diags.error(d.span, "a grammar has one `sequence`, but this is a second one");
-        return;
-    }
-    std::vector<std::string> names;
-    for (const auto& [name, index] : ruleIndex) names.push_back(name);
-    for (const auto& r : d.rules) {
-        if (auto it = ruleIndex.find(r.name); it != ruleIndex.end()) g.prog.sequence.push_back(it->second);
-        else g.diags.error(r.span, "no rule named `" + r.name + "`" + suggest(r.name, names));
-    }
-    if (d.rules.empty()) g.diags.error(d.span, "an empty `sequence` would apply nothing; list rules, each followed by `;`");
-}
-
 void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
     if (d.priorityOverflow) {
         g.diags.error(d.prioritySpan, "priority is out of range (64-bit integers)");

@@ -25,8 +25,6 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d);
 void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen);
 // `merge within T;` (a constant float, not negative).
 void checkMerge(Globals& g, ExprChecker& ec, const ast::MergeDecl& d);
-// `sequence { … }`: rule names, by the rules' indices.
-void checkSequence(Globals& g, const ast::SequenceDecl& d, const std::map<std::string, int>& ruleIndex);
 void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d);
 
 // Style property values that are checked when constant.

@@ -3,6 +3,7 @@
 #include "sema/decl_checker.hpp"
 #include "sema/graph_checker.hpp"
 #include "sema/lint.hpp"
+#include "sema/sequence_checker.hpp"
 
 namespace g2d {
 
@@ -85,6 +86,7 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         diags.error(at, "the grammar has no `axiom { … }`: there is no graph to start from");
     }
     std::map<std::string, Span> ruleNames;
+    std::vector<const ast::CompoundDecl*> compounds;
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::RuleDecl>) {
@@ -94,6 +96,14 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
             }
             checkRule(g, ec, d);
         }
+        if constexpr (std::is_same_v<T, ast::CompoundDecl>) {
+            if (auto [it, inserted] = ruleNames.emplace(d.match.name.name, d.match.name.span); !inserted) {
+                auto& diag = diags.error(d.match.name.span, "a rule or compound named `" + d.match.name.name + "` already exists");
+                diag.notes.push_back({it->second, "the first one is here"});
+            }
+            checkCompoundMatch(g, ec, d);
+            compounds.push_back(&d);
+        }
     });
     std::map<std::string, int> ruleIndex;
     for (std::size_t r = 0; r < prog.rules.size(); ++r) ruleIndex.emplace(prog.rules[r].name, static_cast<int>(r));
@@ -101,6 +111,7 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::SequenceDecl>) checkSequence(g, d, ruleIndex);
     });
+    checkCompoundBodies(g, compounds, ruleIndex);
     if (diags.errorCount() > errorsBefore) return std::nullopt;
     lintProgram(g);
     return prog;

@@ -3,6 +3,8 @@
 #include "g2d/deadline.hpp"
 #include "g2d/incremental_matches.hpp"
 #include "g2d/node_merge.hpp"
+#include "g2d/parallel_step.hpp"
+#include "g2d/compound_run.hpp"
 #include "g2d/pick_lookahead.hpp"
 
 #include <algorithm>
@@ -48,91 +50,6 @@ struct Group {
     std::vector<std::size_t> rules;
     std::optional<long long> limit;
     long long applied = 0;
-};
-
-// Applies a maximal set of non-overlapping matches, all found before the
-// step: taken in the order drawn (shuffled, or oldest first), with their
-// daughters drawn then, and rewritten in the set's order. Marks are
-// step-stamped arrays, so a step costs O(matches).
-class ParallelStep {
-public:
-    // Returns how many matches were rewritten.
-    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step,
-                    StepTracer* tracer) {
-        const RuleInfo& info = rules.info(rule);
-        const int nn = set.nodes(), ne = set.edges(), nf = set.faces();
-        // The matches are read in place: the set is repaired only after
-        // commit(), so the views the rules keep until then stay valid.
-        order_.resize(set.size());
-        std::iota(order_.begin(), order_.end(), 0);
-        if (info.pick == Pick::Random) {
-            shuffle(order_, rng);
-        } else {
-            sums_.resize(set.size());
-            for (std::size_t i = 0; i < set.size(); ++i) sums_[i] = set.ageSumAt(i);
-            std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return sums_[a] < sums_[b]; });
-        }
-        if (++stamp_ >= 0x7fffffffu) {   // about to wrap: forget every old mark
-            for (auto* v : {&nodeMarks_, &edgeMarks_, &faceMarks_}) std::fill(v->begin(), v->end(), 0);
-            stamp_ = 1;
-        }
-        grow(nodeMarks_, g.nodeCapacity());
-        grow(edgeMarks_, g.edgeCapacity());
-        grow(faceMarks_, g.faceCapacity());
-        const std::uint32_t read = stamp_ * 2, written = stamp_ * 2 + 1;
-        // daughter_[i]: the daughter drawn for the set's match i, kNotTaken if it is not rewritten.
-        daughter_.assign(set.size(), kNotTaken);
-        std::size_t taken = 0;
-        for (std::uint32_t i : order_) {
-            const Match m = set.at(i);
-            bool clash = false;
-            for (int k = 0; k < nn; ++k) clash = clash || nodeMarks_[m.nodes[k]] == written;
-            for (int k = 0; k < ne; ++k) clash = clash || edgeMarks_[m.edges[k]] == written;
-            for (int k = 0; k < nf; ++k) clash = clash || faceMarks_[m.faces[k]] == written;
-            if (clash) continue;
-            const std::size_t daughter = pickDaughter(info.weights, rng);
-            writes_.clear();
-            rules.writeSet(rule, daughter, m, writes_);
-            for (NodeId n : writes_.nodes) clash = clash || (nodeMarks_[n] >> 1) == stamp_;
-            for (EdgeId e : writes_.edges) clash = clash || (edgeMarks_[e] >> 1) == stamp_;
-            for (FaceId f : writes_.faces) clash = clash || (faceMarks_[f] >> 1) == stamp_;
-            if (clash) continue;
-            for (int k = 0; k < nn; ++k) nodeMarks_[m.nodes[k]] = read;   // none was written (no clash)
-            for (int k = 0; k < ne; ++k) edgeMarks_[m.edges[k]] = read;
-            for (int k = 0; k < nf; ++k) faceMarks_[m.faces[k]] = read;
-            for (NodeId n : writes_.nodes) nodeMarks_[n] = written;
-            for (EdgeId e : writes_.edges) edgeMarks_[e] = written;
-            for (FaceId f : writes_.faces) faceMarks_[f] = written;
-            daughter_[i] = static_cast<std::uint32_t>(daughter);
-            ++taken;
-        }
-        // Rewrite the taken matches in the set's order, not the draw's: the
-        // set holds them roughly as the graph stores their elements, so the
-        // rewrite walks memory forward instead of jumping across it.
-        for (std::size_t i = 0; i < daughter_.size(); ++i) {
-            if (daughter_[i] == kNotTaken) continue;
-            const Match m = set.at(i);
-            if (tracer) tracer->applying(rule, daughter_[i], m, g);
-            rules.prepare(rule, daughter_[i], m, g, rng, step);
-        }
-        rules.commit(g, step);
-        return taken;
-    }
-
-private:
-    // A little room ahead only: the marks are filled as they grow, and a
-    // whole generation's graph is large.
-    static void grow(std::vector<std::uint32_t>& v, std::size_t n) {
-        if (v.size() < n) v.resize(n + n / 8, 0);
-    }
-    static constexpr std::uint32_t kNotTaken = 0xffffffffu;
-    std::vector<std::uint32_t> order_, daughter_;
-    std::vector<long long> sums_;
-    // Per element, stamp * 2 if a taken match reads it in this step, stamp *
-    // 2 + 1 if one writes it (a match writes only elements it reads).
-    std::vector<std::uint32_t> nodeMarks_, edgeMarks_, faceMarks_;
-    std::uint32_t stamp_ = 0;
-    WriteSet writes_;
 };
 
 }  // namespace
@@ -243,23 +160,38 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                                std::to_string(step) + " (a runaway derivation? set a `limit`, or raise --max-elements)");
     };
     if (!rules.sequence().empty()) {
-        // A command list: step k applies command k to all its matches (none: the graph stays as it is).
-        for (std::size_t r : rules.sequence()) {
-            if (limits.steps && result.steps >= *limits.steps) {
-                result.stopped = StopReason::StepLimit;
-                return;
+        // A command list: step k applies command k to all its matches (none:
+        // the graph stays as it is); a compound runs its commands in turn.
+        auto mayStep = [&] {
+            if (!limits.steps || result.steps < *limits.steps) return true;
+            result.stopped = StopReason::StepLimit;
+            return false;
+        };
+        auto apply = [&](std::size_t r, const MatchSet& set, long long step) {
+            try {
+                return parallel.run(r, set, rules, g, rng, step, tracer);
+            } catch (const DeadlinePassed&) {
+                throw timeLimit(limits, step);
             }
+        };
+        auto afterCommand = [&](std::size_t r, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom) {
+            afterStep(r, IncrementalMatches::kAnyDaughter, step, newEdgesFrom, newNodesFrom);
+        };
+        CompoundRun compounds(g, rules, parallel,
+                              CompoundRun::Hooks{mayStep, [&] { return result.steps + 1; }, apply, afterCommand, stepDone});
+        for (const SequenceEntry& entry : rules.sequence()) {
+            if (entry.compound) {
+                if (!compounds.run(entry.index, sets.of(rules.compounds()[entry.index].matchRule), result.applications)) return;
+                continue;
+            }
+            if (!mayStep()) return;
             const long long step = result.steps + 1;
             const auto newEdgesFrom = static_cast<EdgeId>(g.edgeCapacity());
             const auto newNodesFrom = static_cast<NodeId>(g.nodeCapacity());
-            const MatchSet& set = sets.of(r);
+            const MatchSet& set = sets.of(entry.index);
             if (!set.empty()) {
-                try {
-                    result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
-                } catch (const DeadlinePassed&) {
-                    throw timeLimit(limits, step);
-                }
-                afterStep(r, IncrementalMatches::kAnyDaughter, step, newEdgesFrom, newNodesFrom);
+                result.applications += static_cast<long long>(apply(entry.index, set, step));
+                afterCommand(entry.index, step, newEdgesFrom, newNodesFrom);
             }
             stepDone(step);
         }

@@ -35,6 +35,7 @@
 #include <span>
 #include <vector>
 
+#include "g2d/command_list.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/match_set.hpp"
 #include "g2d/pick.hpp"
@@ -214,16 +215,25 @@ public:
     virtual void prefetchData(std::size_t rule, Match m, const Graph& g) const {
         (void)rule, (void)m, (void)g;
     }
-    // A G^3 command list (`sequence { … }`): these rules in this order, each
-    // applied once to all its matches at once (a parallel step, whatever the
-    // rule says), and then the derivation ends. Empty: the priorities decide.
     // Gives a face that merging split off (node_merge.hpp) the attributes of
     // the face it came from (the graph's own pools by default).
     virtual void copyFaceAttributes(Graph& g, FaceId from, FaceId to) { g.copyFaceAttrs(from, to); }
-    virtual const std::vector<std::size_t>& sequence() const {
-        static const std::vector<std::size_t> none;
+    // A G^3 command list (`sequence { … }`): these entries in this order,
+    // a rule applied once to all its matches at once (a parallel step,
+    // whatever the rule says), a compound as compound_run.hpp says; then the
+    // derivation ends. Empty: the priorities decide.
+    virtual const std::vector<SequenceEntry>& sequence() const {
+        static const std::vector<SequenceEntry> none;
         return none;
     }
+    // The compound commands the sequence names (directly or within each other).
+    virtual const std::vector<CompoundInfo>& compounds() const {
+        static const std::vector<CompoundInfo> none;
+        return none;
+    }
+    // Called by commit() after each application it makes, when set (compound
+    // scopes take in what each application created).
+    std::function<void()> onApplied;
 };
 
 // A runaway guard: a derivation stops with an error past this many nodes +

@@ -5,6 +5,7 @@
 // (fact::NAME) are all made, and which the checker and the editor read.
 #include <cstdint>
 
+#include "g2d/element_scope.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/ops.hpp"
 #include "g2d/value.hpp"
@@ -91,11 +92,18 @@ inline long long age(const Graph& g, ElemClass c, std::uint32_t id) {
     return c == ElemClass::Edge ? g.edgeAge(id) : c == ElemClass::Face ? g.faceAge(id) : g.nodeAge(id);
 }
 inline long long id(const Graph&, ElemClass, std::uint32_t id) { return static_cast<long long>(id); }
-inline long long degree(const Graph& g, ElemClass, std::uint32_t id) { return g.degree(id); }
-inline long long in_degree(const Graph& g, ElemClass, std::uint32_t id) { return g.inDegree(id); }
-inline long long out_degree(const Graph& g, ElemClass, std::uint32_t id) { return g.outDegree(id); }
+// The topological facts count within a compound's scope while one is set (element_scope.hpp).
+inline long long degree(const Graph& g, ElemClass, std::uint32_t id) { return g.scope() ? scoped::degree(g, *g.scope(), id) : g.degree(id); }
+inline long long in_degree(const Graph& g, ElemClass, std::uint32_t id) {
+    return g.scope() ? scoped::inDegree(g, *g.scope(), id) : g.inDegree(id);
+}
+inline long long out_degree(const Graph& g, ElemClass, std::uint32_t id) {
+    return g.scope() ? scoped::outDegree(g, *g.scope(), id) : g.outDegree(id);
+}
 inline long long faces(const Graph& g, ElemClass c, std::uint32_t id) {
-    return c == ElemClass::Edge ? g.sideFaceCount(g.source(id), g.target(id)) : g.faceCountAt(id);
+    if (c == ElemClass::Edge)
+        return g.scope() ? scoped::sideFaces(g, *g.scope(), g.source(id), g.target(id)) : g.sideFaceCount(g.source(id), g.target(id));
+    return g.scope() ? scoped::facesAt(g, *g.scope(), id) : g.faceCountAt(id);
 }
 inline double length(const Graph& g, ElemClass, std::uint32_t id) { return finite(rt::length(g.pos(g.target(id)) - g.pos(g.source(id)))); }
 inline vec2 direction(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.pos(g.target(id)) - g.pos(g.source(id))); }
@@ -110,8 +118,12 @@ inline double area3(const Graph& g, ElemClass, std::uint32_t id) { return finite
 inline double perimeter3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.perimeter3(id)); }
 inline vec3 centroid3(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.centroid3(id)); }
 inline vec3 normal(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.vectorArea(id)); }
-inline long long neighbours(const Graph& g, ElemClass, std::uint32_t id) { return g.neighbourCount(id); }
-inline long long touching(const Graph& g, ElemClass, std::uint32_t id) { return g.touchingCount(id); }
+inline long long neighbours(const Graph& g, ElemClass, std::uint32_t id) {
+    return g.scope() ? scoped::neighbours(g, *g.scope(), id) : g.neighbourCount(id);
+}
+inline long long touching(const Graph& g, ElemClass, std::uint32_t id) {
+    return g.scope() ? scoped::touching(g, *g.scope(), id) : g.touchingCount(id);
+}
 
 }  // namespace fact
 

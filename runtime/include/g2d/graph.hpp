@@ -50,6 +50,7 @@ struct StyleOverride {
 };
 
 class Graph;
+class ElementScope;
 
 // The edges touching a node, each once (outgoing first, then incoming; a
 // self-loop only among the outgoing), newest first within each list.
@@ -252,6 +253,10 @@ public:
     // The distinct faces sharing at least a corner with f (G^3's neighbouring
     // faces, Fig. 3.11: eight around a face of a quad grid).
     int touchingCount(FaceId f) const;
+    // G^3's compound scopes (element_scope.hpp): while one is set, the
+    // topological facts (element_facts.hpp) count only its elements.
+    void setScope(const ElementScope* s) { scope_ = s; }
+    const ElementScope* scope() const { return scope_; }
     // Geometry of the corners' positions: the signed area (shoelace;
     // positive when they run counter-clockwise, y up), its absolute value,
     // the perimeter, and the centroid as the mean of the corners (as G^3).
@@ -375,6 +380,7 @@ public:
     std::size_t memoryBytes() const;
 
 private:
+    const ElementScope* scope_ = nullptr;
     struct NodeRec {                         // 48 bytes
         vec2 pos{0, 0};
         long long age = 0;

@@ -1,0 +1,86 @@
+#include "sema/sequence_checker.hpp"
+
+#include <algorithm>
+#include <functional>
+
+#include "sema/graph_checker.hpp"
+#include "diag/suggest.hpp"
+
+namespace g2d::sema {
+
+namespace {
+
+// A list's names, each a rule or a compound.
+std::vector<ir::SequenceEntry> entries(Globals& g, const ast::SequenceDecl& d, const std::map<std::string, int>& ruleIndex) {
+    std::vector<std::string> names;
+    for (const auto& [name, index] : ruleIndex) names.push_back(name);
+    std::vector<ir::SequenceEntry> out;
+    for (const auto& r : d.rules) {
+        auto it = ruleIndex.find(r.name);
+        if (it == ruleIndex.end()) {
+            g.diags.error(r.span, "no rule or compound named `" + r.name + "`" + suggest(r.name, names));
+            continue;
+        }
+        const int compound = g.prog.rules[static_cast<std::size_t>(it->second)].compound;
+        out.push_back(compound >= 0 ? ir::SequenceEntry{true, compound} : ir::SequenceEntry{false, it->second});
+    }
+    if (d.rules.empty()) g.diags.error(d.span, "an empty `sequence` would apply nothing; list rules, each followed by `;`");
+    return out;
+}
+
+// What a compound's match binds, when it is one primitive (§3.3.2): a node;
+// an edge and its ends; or a face and its corners.
+bool bindsOnePrimitive(const ir::Rule& r) {
+    if (r.faces.size() == 1 && r.edges.empty()) {
+        const auto& f = r.faces[0];
+        for (std::size_t i = 0; i < r.nodes.size(); ++i)
+            if (r.nodes[i].anchorOf != 0 && std::find(f.corners.begin(), f.corners.end(), static_cast<int>(i)) == f.corners.end())
+                return false;
+        return true;
+    }
+    if (r.faces.empty() && r.edges.size() == 1) return r.nodes.size() <= 2;
+    return r.faces.empty() && r.edges.empty() && r.nodes.size() == 1;
+}
+
+}  // namespace
+
+void checkSequence(Globals& g, const ast::SequenceDecl& d, const std::map<std::string, int>& ruleIndex) {
+    if (!g.prog.sequence.empty()) {
+        g.diags.error(d.span, "a grammar has one `sequence`, but this is a second one");
+        return;
+    }
+    g.prog.sequence = entries(g, d, ruleIndex);
+}
+
+void checkCompoundMatch(Globals& g, ExprChecker& ec, const ast::CompoundDecl& d) {
+    checkRule(g, ec, d.match);
+    ir::Rule& r = g.prog.rules.back();
+    r.compound = static_cast<int>(g.prog.compounds.size());
+    if (!bindsOnePrimitive(r))
+        g.diags.error(d.match.matchSpan, "a compound starts from one primitive: its match binds a node, an edge (with its ends) "
+                                         "or a face (with its corners), and nothing else");
+    g.prog.compounds.push_back(ir::Compound{r.name, static_cast<int>(g.prog.rules.size() - 1), {}, d.span});
+}
+
+void checkCompoundBodies(Globals& g, const std::vector<const ast::CompoundDecl*>& decls, const std::map<std::string, int>& ruleIndex) {
+    for (std::size_t c = 0; c < decls.size(); ++c) g.prog.compounds[c].entries = entries(g, decls[c]->body, ruleIndex);
+    // A compound within itself would never end.
+    std::vector<int> state(decls.size(), 0);   // 0 unseen, 1 on the path, 2 done
+    std::function<bool(int)> cycles = [&](int c) {
+        if (state[static_cast<std::size_t>(c)] == 1) return true;
+        if (state[static_cast<std::size_t>(c)] == 2) return false;
+        state[static_cast<std::size_t>(c)] = 1;
+        for (const auto& e : g.prog.compounds[static_cast<std::size_t>(c)].entries)
+            if (e.compound && cycles(e.index)) return true;
+        state[static_cast<std::size_t>(c)] = 2;
+        return false;
+    };
+    for (std::size_t c = 0; c < decls.size(); ++c)
+        if (state[c] == 0 && cycles(static_cast<int>(c))) {
+            g.diags.error(decls[c]->match.name.span, "compound `" + decls[c]->match.name.name + "` contains itself (directly or "
+                                                                                              "through another compound)");
+            return;
+        }
+}
+
+}  // namespace g2d::sema

@@ -1,0 +1,37 @@
+#pragma once
+// One parallel step of a rule (`parallel`, and every command of a G^3
+// command list): a maximal set of non-overlapping matches, all found before
+// the step, taken in the order drawn (shuffled, or oldest first), with their
+// daughters drawn then, and rewritten in the set's order. Marks are
+// step-stamped arrays, so a step costs O(matches).
+#include <cstdint>
+#include <vector>
+
+#include "g2d/derivation.hpp"
+
+namespace g2d::rt {
+
+class ParallelStep {
+public:
+    // Returns how many matches were rewritten.
+    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step, StepTracer* tracer);
+    // Whether the last run rewrote the set's match i (they are rewritten in the set's order).
+    bool taken(std::size_t i) const { return i < daughter_.size() && daughter_[i] != kNotTaken; }
+
+private:
+    // A little room ahead only: the marks are filled as they grow, and a
+    // whole generation's graph is large.
+    static void grow(std::vector<std::uint32_t>& v, std::size_t n) {
+        if (v.size() < n) v.resize(n + n / 8, 0);
+    }
+    static constexpr std::uint32_t kNotTaken = 0xffffffffu;
+    std::vector<std::uint32_t> order_, daughter_;
+    std::vector<long long> sums_;
+    // Per element, stamp * 2 if a taken match reads it in this step, stamp *
+    // 2 + 1 if one writes it (a match writes only elements it reads).
+    std::vector<std::uint32_t> nodeMarks_, edgeMarks_, faceMarks_;
+    std::uint32_t stamp_ = 0;
+    WriteSet writes_;
+};
+
+}  // namespace g2d::rt
