@@ -112,6 +112,7 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         if constexpr (std::is_same_v<T, ast::SequenceDecl>) checkSequence(g, d, ruleIndex);
     });
     checkCompoundBodies(g, compounds, ruleIndex);
+    if (diags.errorCount() == errorsBefore) checkCommandListsReach(g);
     if (diags.errorCount() > errorsBefore) return std::nullopt;
     lintProgram(g);
     return prog;

@@ -83,4 +83,34 @@ void checkCompoundBodies(Globals& g, const std::vector<const ast::CompoundDecl*>
         }
 }
 
+void checkCommandListsReach(Globals& g) {
+    auto& prog = g.prog;
+    if (prog.sequence.empty()) {
+        for (const auto& c : prog.compounds)
+            g.diags.error(c.span, "compound `" + c.name + "` runs only from a `sequence { … }`, and the grammar has none");
+        return;
+    }
+    // What the sequence runs, directly or through compounds.
+    std::vector<char> rules(prog.rules.size(), 0), compounds(prog.compounds.size(), 0);
+    std::function<void(const std::vector<ir::SequenceEntry>&)> reach = [&](const std::vector<ir::SequenceEntry>& list) {
+        for (const auto& e : list) {
+            if (!e.compound) {
+                rules[static_cast<std::size_t>(e.index)] = 1;
+                continue;
+            }
+            if (compounds[static_cast<std::size_t>(e.index)]) continue;
+            compounds[static_cast<std::size_t>(e.index)] = 1;
+            reach(prog.compounds[static_cast<std::size_t>(e.index)].entries);
+        }
+    };
+    reach(prog.sequence);
+    for (std::size_t c = 0; c < prog.compounds.size(); ++c)
+        if (!compounds[c] && prog.compounds[c].span.file == g.mainFile)
+            g.diags.warning(prog.compounds[c].span, "compound `" + prog.compounds[c].name + "` is in no `sequence`: it never runs");
+    for (std::size_t r = 0; r < prog.rules.size(); ++r)
+        if (!rules[r] && prog.rules[r].compound < 0 && prog.rules[r].span.file == g.mainFile)
+            g.diags.warning(prog.rules[r].span, "rule `" + prog.rules[r].name + "` is in no `sequence` (nor compound): with a "
+                                                "sequence, only the commands it lists apply");
+}
+
 }  // namespace g2d::sema

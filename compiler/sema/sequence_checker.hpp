@@ -19,4 +19,7 @@ void checkCompoundMatch(Globals& g, ExprChecker& ec, const ast::CompoundDecl& d)
 // The compounds' entries (decls[i] is Program::compounds[i]), and no compound within itself.
 void checkCompoundBodies(Globals& g, const std::vector<const ast::CompoundDecl*>& decls, const std::map<std::string, int>& ruleIndex);
 
+// Compounds need a sequence; a compound or rule the sequence never reaches is reported.
+void checkCommandListsReach(Globals& g);
+
 }  // namespace g2d::sema

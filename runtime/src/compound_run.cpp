@@ -99,11 +99,13 @@ bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& inst
             // graph's capacities before it up to those after it.
             using Capacities = std::array<std::size_t, 3>;
             auto capacities = [&] { return Capacities{g_.nodeCapacity(), g_.edgeCapacity(), g_.faceCapacity()}; };
+            std::vector<const ElementScope*> scopes;
+            for (const auto& o : owners) scopes.push_back(&instances_[o.front()].scope);
             std::vector<Capacities> after;
             Capacities from = capacities();
             rules_.onApplied = [&] { after.push_back(capacities()); };
             try {
-                applications += static_cast<long long>(hooks_.apply(e.index, set, step));
+                applications += static_cast<long long>(hooks_.apply(e.index, set, step, scopes.data()));
             } catch (...) {
                 rules_.onApplied = nullptr;
                 throw;

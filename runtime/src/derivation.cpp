@@ -167,9 +167,9 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             result.stopped = StopReason::StepLimit;
             return false;
         };
-        auto apply = [&](std::size_t r, const MatchSet& set, long long step) {
+        auto apply = [&](std::size_t r, const MatchSet& set, long long step, const ElementScope* const* scopes) {
             try {
-                return parallel.run(r, set, rules, g, rng, step, tracer);
+                return parallel.run(r, set, rules, g, rng, step, tracer, scopes);
             } catch (const DeadlinePassed&) {
                 throw timeLimit(limits, step);
             }
@@ -190,7 +190,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             const auto newNodesFrom = static_cast<NodeId>(g.nodeCapacity());
             const MatchSet& set = sets.of(entry.index);
             if (!set.empty()) {
-                result.applications += static_cast<long long>(apply(entry.index, set, step));
+                result.applications += static_cast<long long>(apply(entry.index, set, step, nullptr));
                 afterCommand(entry.index, step, newEdgesFrom, newNodesFrom);
             }
             stepDone(step);

@@ -6,7 +6,7 @@
 namespace g2d::rt {
 
 std::size_t ParallelStep::run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step,
-                               StepTracer* tracer) {
+                               StepTracer* tracer, const ElementScope* const* scopes) {
     const RuleInfo& info = rules.info(rule);
     const int nn = set.nodes(), ne = set.edges(), nf = set.faces();
     // The matches are read in place: the set is repaired only after
@@ -61,8 +61,10 @@ std::size_t ParallelStep::run(std::size_t rule, const MatchSet& set, RuleSet& ru
         if (daughter_[i] == kNotTaken) continue;
         const Match m = set.at(i);
         if (tracer) tracer->applying(rule, daughter_[i], m, g);
+        if (scopes) g.setScope(scopes[i]);
         rules.prepare(rule, daughter_[i], m, g, rng, step);
     }
+    g.setScope(nullptr);
     rules.commit(g, step);
     return taken;
 }

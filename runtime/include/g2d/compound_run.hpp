@@ -7,7 +7,8 @@
 // lock-step, one step each, for all its instances at once:
 //   * a rule: for every instance, its matches on the graph with the scope
 //     set (so topological facts count the scope only) whose elements all lie
-//     in the scope; a match found in several scopes is one application
+//     in the scope; the daughter reads within the scope too (the first one
+//     the match was found in); a match found in several scopes is one application
 //     (§3.3.3), and what it creates joins every one of them (and, up the
 //     stack, their compounds' scopes, §3.3.5). They are rewritten as one
 //     parallel step;
@@ -32,8 +33,9 @@ public:
     struct Hooks {
         std::function<bool()> mayStep;
         std::function<long long()> nextStep;   // the number of the step about to start
-        // Rewrites `set` as one parallel step (with `parallel`): how many were applied.
-        std::function<std::size_t(std::size_t rule, const MatchSet& set, long long step)> apply;
+        // Rewrites `set` as one parallel step (with `parallel`, reading
+        // match i within scopes[i]): how many were applied.
+        std::function<std::size_t(std::size_t rule, const MatchSet& set, long long step, const ElementScope* const* scopes)> apply;
         std::function<void(std::size_t rule, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom)> afterStep;
         std::function<void(long long step)> stepDone;
     };

@@ -8,13 +8,17 @@
 #include <vector>
 
 #include "g2d/derivation.hpp"
+#include "g2d/element_scope.hpp"
 
 namespace g2d::rt {
 
 class ParallelStep {
 public:
-    // Returns how many matches were rewritten.
-    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step, StepTracer* tracer);
+    // Returns how many matches were rewritten. With `scopes`, the daughter of
+    // the set's match i reads the graph within scopes[i] (a compound's,
+    // element_scope.hpp).
+    std::size_t run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step, StepTracer* tracer,
+                    const ElementScope* const* scopes = nullptr);
     // Whether the last run rewrote the set's match i (they are rewritten in the set's order).
     bool taken(std::size_t i) const { return i < daughter_.size() && daughter_[i] != kNotTaken; }
 
