@@ -112,7 +112,9 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
                                             else if (const auto* g = std::get_if<ast::GraphStmt>(&ps.stmt))
                                                 graphStmt(*g, SymbolKind::DaughterNode, SymbolKind::DaughterEdge, scope,
                                                           d.name.name);
-                                            else if (const auto* loop = std::get_if<ast::ForBlock>(&ps.stmt)) {
+                                            else if (const auto* split = std::get_if<ast::SplitStmt>(&ps.stmt)) {
+                                                if (split->var) add(SymbolKind::DaughterNode, *split->var, split->span, d.name.name);
+                                            } else if (const auto* loop = std::get_if<ast::ForBlock>(&ps.stmt)) {
                                                 for (const auto& v : loop->vars) add(SymbolKind::DaughterNode, v, loop->span, d.name.name);
                                                 body(loop->body, loop->span);
                                             }
@@ -121,6 +123,9 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
                                 body(block->body, block->span);
                             }
                         }
+                    } else if constexpr (std::is_same_v<T, ast::CompoundDecl>) {
+                        add(SymbolKind::Rule, d.match.name, Span{});   // a sequence names it as it names a rule
+                        matchStmts(d.match.match, d.span, d.match.name.name);
                     } else if constexpr (std::is_same_v<T, ast::FnDecl>) {
                         add(SymbolKind::Function, d.name, Span{}, "", d.result.name.name);
                         for (const auto& p : d.params) add(SymbolKind::FnParam, p.name, d.span, d.name.name, p.type.name.name);

@@ -20,7 +20,7 @@ syn match g2dSketch "@"
 
 " ---- keywords
 " declarations
-syn keyword g2dDeclKeyword import param const limit priority defs axiom style space sequence
+syn keyword g2dDeclKeyword import param const limit priority defs axiom style space sequence compound
 syn keyword g2dDeclKeyword node edge face enum nextgroup=g2dTypeName skipwhite skipnl
 syn keyword g2dDeclKeyword fn rule nextgroup=g2dFuncName skipwhite skipnl
 syn match g2dTypeName "\h\w*" contained
