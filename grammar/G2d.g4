@@ -43,8 +43,9 @@ mergeDecl   : 'merge' 'within' expr ';' ;
 // sequence { A; B; A; }   a G^3 command list: each once, in order, in parallel
 sequenceDecl: 'sequence' '{' (ID ';')* '}' ;
 // compound C { match { f: Face …; } sequence { A; B; } }   G^3's compound
-// command (§3.3): its commands, in order, within the scope of each match
-compoundDecl: 'compound' ID '{' matchBlock sequenceDecl '}' ;
+// command (§3.3): its commands, in order, within the scope of each match;
+// its lets are values of each match that its commands' rules read as C.name
+compoundDecl: 'compound' ID '{' matchBlock letStmt* sequenceDecl '}' ;
 
 typeRef     : ID ;
 

@@ -167,6 +167,7 @@ struct RuleOption {
 
 struct RuleDecl {
     Ident name;
+    bool compoundMatch = false;        // a compound's match (CompoundDecl): its lets are the compound's values
     std::vector<RuleOption> options;
     std::vector<MatchStmt> match;
     Span matchSpan;
@@ -208,9 +209,9 @@ struct PriorityDecl {
 struct DefsDecl { std::string svg; Span span; };
 struct MergeDecl { ExprPtr tolerance; Span span; };
 struct SequenceDecl { std::vector<Ident> rules; Span span; };
-// `compound C { match { … } sequence { … } }`: `match` is a rule named C
-// whose one daughter is empty (it is never applied: its matches are the
-// compound's initial primitives).
+// `compound C { match { … } let …; sequence { … } }`: `match` is a rule named
+// C, with the compound's lets, whose one daughter is empty (it is never
+// applied: its matches are the compound's initial primitives).
 struct CompoundDecl { RuleDecl match; SequenceDecl body; Span span; };
 
 struct Decl {

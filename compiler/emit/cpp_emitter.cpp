@@ -79,6 +79,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     }
     out += in + "info.deletesNodes = " + listOf(i.deletesNodes, byteText) + ";\n";
     if (i.mergeTolerance > 0) out += in + "info.mergeTolerance = " + cppLiteral(ir::Value{i.mergeTolerance}, ir::kFloatType) + ";\n";
+    if (!i.globalMatches) out += in + "info.globalMatches = false;\n";
     return out;
 }
 
@@ -431,6 +432,7 @@ private:
                 list += "            {" + cppString(c.name) + ", " + str(static_cast<long long>(c.matchRule)) + ", " + entries(c.entries) + "},\n";
             out += "    const std::vector<CompoundInfo>& compounds() const override {\n        static const std::vector<CompoundInfo> list = {\n" + list +
                    "        };\n        return list;\n    }\n\n";
+            out += emitCompoundValues();
         }
         std::string cases;
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
@@ -442,6 +444,34 @@ private:
         out += "    void copyFaceAttributes(Graph& G, FaceId from, FaceId to) override {\n        switch (G.faceKind(from)) {\n" + cases +
                "        default: break;\n        }\n    }\n\n";
         return out;
+    }
+
+    // Each compound's lets, on the match of its match rule (RuleSet::compoundValues).
+    std::string emitCompoundValues() {
+        std::string out = "    std::vector<Value> compoundValues(std::size_t compound, Match m, const Graph& g, Rng& rng) override {\n";
+        out += "        rng_ = &rng;\n        switch (compound) {\n";
+        for (std::size_t c = 0; c < prog_.compounds.size(); ++c) {
+            const ir::Rule& r = prog_.rules[static_cast<std::size_t>(prog_.compounds[c].matchRule)];
+            if (r.lets.empty()) continue;
+            ExprContext ctx;
+            ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
+            ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
+            ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
+            ctx.nodeKind = [&r](int i) { return r.nodes[static_cast<std::size_t>(i)].kind; };
+            ctx.edgeKind = [&r](int i) { return r.edges[static_cast<std::size_t>(i)].kind; };
+            ctx.faceKind = [&r](int i) { return r.faces[static_cast<std::size_t>(i)].kind; };
+            const std::string in = "                ";
+            std::string body, values;
+            for (const auto& l : r.lets) {
+                const std::string v = gen_.gen(l.value, ctx, body, in);
+                const std::string name = "L" + str(l.slot);
+                body += in + "const " + cppType(l.value.type) + " " + name + " = " + v + ";\n";
+                values += (values.empty() ? "" : ", ") + valueOf(l.value.type, name);
+            }
+            out += "        case " + str(static_cast<long long>(c)) + ":\n            current_ = " + cLiteral(r.name) + ";\n            try {\n" + body +
+                   in + "return {" + values + "};\n            } catch (const OpError& e) {\n                throw PlacedError(loc_, e.what());\n            }\n";
+        }
+        return out + "        default: break;\n        }\n        (void)m;\n        (void)g;\n        return {};\n    }\n\n";
     }
 
     std::string emitAttribute() {

@@ -284,6 +284,24 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     ++pendingCount_;
 }
 
+std::vector<rt::Value> InterpretedRules::compoundValues(std::size_t compound, rt::Match m, const rt::Graph& g, rt::Rng& rng) {
+    const ir::Rule& r = st_.prog->rules[static_cast<std::size_t>(st_.prog->compounds[compound].matchRule)];
+    current_ = &r;
+    locals_.assign(static_cast<std::size_t>(r.localSlots), rt::Value{});
+    EvalFrame f = st_.frame(&rng);
+    f.graph = &g;
+    f.nodes = m.nodes;
+    f.edges = m.edges;
+    f.faces = m.faces;
+    f.locals = &locals_;
+    std::vector<rt::Value> values;
+    for (const auto& l : r.lets) {
+        locals_[static_cast<std::size_t>(l.slot)] = evaluate(l.value, f);
+        values.push_back(locals_[static_cast<std::size_t>(l.slot)]);
+    }
+    return values;
+}
+
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (std::size_t k = 0; k < pendingCount_; ++k) {
         Prepared& p = pending_[k];

@@ -21,6 +21,7 @@ public:
     const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
     const std::vector<rt::SequenceEntry>& sequence() const override { return sequence_; }
     const std::vector<rt::CompoundInfo>& compounds() const override { return compounds_; }
+    std::vector<rt::Value> compoundValues(std::size_t compound, rt::Match m, const rt::Graph& g, rt::Rng& rng) override;
     void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override;
     void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out,
                       rt::EdgeId newEdgesFrom = rt::kNoId) override;

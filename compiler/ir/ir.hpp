@@ -89,6 +89,7 @@ enum class ExprOp {
     SelfAttr,    // index = attribute of the element being styled (kind style expressions)
     SelfFact,    // fact of the element being styled
     Placed,      // index = daughter node: its automatic position (`placed` in `at`)
+    CompoundValue,   // index = compound, slot = its let: the value of the instance the application runs in (`C.name`)
     Fact,        // elem, fact
     VecX, VecY, VecZ,  // args[0]
     Neg, Not,
@@ -111,7 +112,8 @@ struct Expr {
     Type type;
     Span span;
     Value value;             // Literal
-    int index = -1;          // Param / Const / Local / FnArg / Attr / SelfAttr / CallFn
+    int index = -1;          // Param / Const / Local / FnArg / Attr / SelfAttr / CallFn / CompoundValue
+    int slot = -1;           // CompoundValue
     ElemRef elem;            // Attr / Fact
     ElemFact fact = ElemFact::Pos;
     Builtin builtin = Builtin::Sin;
@@ -435,6 +437,9 @@ struct SequenceEntry {
 struct Compound {
     std::string name;
     int matchRule = -1;                // its initial primitives: the matches of this rule (Rule::compound)
+    // Its lets (the match rule's, in order): per instance, evaluated on its match (rt::CompoundInfo).
+    struct Let { std::string name; Type type; };
+    std::vector<Let> lets;
     std::vector<SequenceEntry> entries;
     Span span;
 };

@@ -1,5 +1,7 @@
 #include "lower/rule_facts.hpp"
 
+#include <algorithm>
+
 #include "lower/kind_effects.hpp"
 #include "lower/search_plan.hpp"
 #include "g2d/node_merge.hpp"
@@ -29,6 +31,14 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.edgeCount = static_cast<int>(r.edges.size());
     info.faceCount = static_cast<int>(r.faces.size());
     info.kindsKnown = true;
+    if (!prog.sequence.empty()) {
+        // `r` is one of prog.rules: its index, as the sequence names it.
+        const int index = static_cast<int>(std::find_if(prog.rules.begin(), prog.rules.end(), [&](const ir::Rule& x) { return &x == &r; }) -
+                                           prog.rules.begin());
+        info.globalMatches = false;
+        for (const auto& e : prog.sequence)
+            if (e.compound ? prog.compounds[static_cast<std::size_t>(e.index)].matchRule == index : e.index == index) info.globalMatches = true;
+    }
     KindEffects effects = kindEffects(r, prog.kinds);
     info.readKinds = std::move(effects.readKinds);
     info.readsDegrees = effects.readsDegrees;

@@ -161,6 +161,8 @@ public:
             d.match.span = span(c);
             d.match.matchSpan = span(c->matchBlock());
             for (auto* m : c->matchBlock()->matchStmt()) d.match.match.push_back(matchStmt(m));
+            for (auto* l : c->letStmt()) d.match.items.push_back(RuleItem{let(l)});
+            d.match.compoundMatch = true;
             ProduceBlock none;
             none.span = d.match.matchSpan;
             d.match.items.push_back(RuleItem{std::move(none)});

@@ -32,6 +32,9 @@ struct Globals {
     // Values and functions declared anywhere, for "used before its declaration".
     std::map<std::string, Span> laterValues, laterFunctions;
     std::string definingConst;                  // the constant whose value is being checked
+    std::map<std::string, int> compounds;       // compound name -> index (its lets are readable as C.name)
+    // Per rule (by index), the compounds whose lets it reads, with a place (it must run within them).
+    std::map<int, std::map<int, Span>> compoundReads;
 
     std::string typeName(const ir::Type& t) const { return ir::typeName(t, prog); }
 };
@@ -62,6 +65,7 @@ struct ExprEnv {
     bool allowLocals = true;
     int selfKind = -1;               // style expressions: bare names read the element's attributes
     int placedNode = -1;             // `at` of a new sketched node: `placed` is its automatic position
+    bool compoundValues = false;     // a rule's expression: `C.name` reads compound C's let
     std::vector<LocalVar>* locals = nullptr;      // searched from the back (inner scopes last)
     const std::vector<ElemBinding>* elems = nullptr;
     std::set<ir::ElemRef>* deps = nullptr;        // collects the elements read

@@ -260,6 +260,7 @@ std::optional<Expr> ExprChecker::member(const ast::Expr& e, const ast::Member& m
                 if (b.name == objName->name) return elementMember(e, b, m.member, env);
         }
         if (!isLocal) {
+            if (auto it = g_.compounds.find(objName->name); it != g_.compounds.end()) return compoundValue(e, it->second, m.member, env);
             if (auto it = g_.enums.find(objName->name); it != g_.enums.end()) {
                 const auto& en = g_.prog.enums[it->second];
                 for (std::size_t i = 0; i < en.values.size(); ++i)
@@ -290,6 +291,34 @@ std::optional<Expr> ExprChecker::member(const ast::Expr& e, const ast::Member& m
         g_.diags.error(m.member.span, "a vec3 has only `.x`, `.y` and `.z`, not `." + m.member.name + "`");
     else
         g_.diags.error(m.member.span, "a value of type " + tn(obj->type) + " has no member `." + m.member.name + "`");
+    return std::nullopt;
+}
+
+// `C.name`: compound C's let, as the instance the rule runs in has it.
+std::optional<Expr> ExprChecker::compoundValue(const ast::Expr& e, int compound, const ast::Ident& member, const ExprEnv& env) {
+    const auto* name = std::get_if<ast::Name>(&std::get<ast::Member>(e.node).object->node);
+    if (!env.compoundValues || compound < 0) {
+        g_.diags.error(e.span, "`" + name->name + "." + member.name + "` is a compound's value: only the rules the compound runs can read it" +
+                                   (env.compoundValues ? std::string(" (and compounds declared after it)") : ", not " + env.context));
+        return std::nullopt;
+    }
+    const ir::Compound& c = g_.prog.compounds[static_cast<std::size_t>(compound)];
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < c.lets.size(); ++i) {
+        if (c.lets[i].name != member.name) {
+            names.push_back(c.lets[i].name);
+            continue;
+        }
+        Expr r;
+        r.op = ExprOp::CompoundValue;
+        r.type = c.lets[i].type;
+        r.span = e.span;
+        r.index = compound;
+        r.slot = static_cast<int>(i);
+        g_.compoundReads[static_cast<int>(g_.prog.rules.size())].emplace(compound, e.span);
+        return r;
+    }
+    g_.diags.error(member.span, "compound `" + c.name + "` has no `let " + member.name + "`" + suggest(member.name, names));
     return std::nullopt;
 }
 

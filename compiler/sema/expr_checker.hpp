@@ -25,6 +25,7 @@ public:
 private:
     std::optional<ir::Expr> name(const ast::Expr& e, const ast::Name& n, const ExprEnv& env);
     std::optional<ir::Expr> member(const ast::Expr& e, const ast::Member& m, const ExprEnv& env);
+    std::optional<ir::Expr> compoundValue(const ast::Expr& e, int compound, const ast::Ident& member, const ExprEnv& env);
     std::optional<ir::Expr> elementMember(const ast::Expr& e, const ElemBinding& b, const ast::Ident& member,
                                           const ExprEnv& env);
     std::optional<ir::Expr> call(const ast::Expr& e, const ast::Call& c, const ExprEnv& env);

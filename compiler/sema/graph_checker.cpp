@@ -436,6 +436,7 @@ private:
         env.allowRandom = false;
         env.allowLocals = false;
         env.elems = &bindings_;
+        env.compoundValues = true;
         std::set<ElemRef> deps;
         env.deps = &deps;
         auto e = ec_.checkAs(expr, ir::kBoolType, env, what);
@@ -609,6 +610,7 @@ private:
         env.context = "a let";
         env.locals = &locals_;
         env.elems = &elems;
+        env.compoundValues = true;
         std::optional<ir::Expr> v;
         if (l.type) {
             auto t = resolveType(g_, *l.type);
@@ -818,6 +820,7 @@ private:
             env.context = "a daughter";
             env.locals = &locals_;
             env.elems = &elems;
+            env.compoundValues = true;
             return env;
         };
         auto daughterNode = [&](const ast::Ident& id, const char* role = "edge endpoint") -> int {
@@ -1312,7 +1315,7 @@ private:
     void warnUnusedLets() {
         for (const auto& l : locals_) finishedLocals_.push_back(l);
         for (const auto& l : finishedLocals_)
-            if (!l.used && l.span.file == g_.mainFile)
+            if (!l.used && l.span.file == g_.mainFile && !d_.compoundMatch)
                 g_.diags.warning(l.span, "`" + l.name + "` is never used");
         if (rule_.ordered)
             for (const auto& n : rule_.nodes)

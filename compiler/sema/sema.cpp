@@ -59,6 +59,11 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::KindDecl>) checkKindBody(g, ec, d);
     });
+    // Compound names, so that `C.name` outside a rule gets a clear message (their lets come later).
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::CompoundDecl>) g.compounds.emplace(d.match.name.name, -1);
+    });
     bool limitSeen = false;
     const ast::AxiomDecl* axiom = nullptr;
     each([&](const auto& d) {
@@ -85,24 +90,28 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         Span at{programs.back()->file, 0, 0, 0, 0};
         diags.error(at, "the grammar has no `axiom { … }`: there is no graph to start from");
     }
+    // Compounds first: rules read their lets (`C.name`).
     std::map<std::string, Span> ruleNames;
     std::vector<const ast::CompoundDecl*> compounds;
+    auto claimName = [&](const ast::Ident& name) {
+        if (auto [it, inserted] = ruleNames.emplace(name.name, name.span); !inserted) {
+            auto& diag = diags.error(name.span, "a rule or compound named `" + name.name + "` already exists");
+            diag.notes.push_back({it->second, "the first one is here"});
+        }
+    };
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::CompoundDecl>) {
+            claimName(d.match.name);
+            checkCompoundMatch(g, ec, d);
+            compounds.push_back(&d);
+        }
+    });
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::RuleDecl>) {
-            if (auto [it, inserted] = ruleNames.emplace(d.name.name, d.name.span); !inserted) {
-                auto& diag = diags.error(d.name.span, "a rule named `" + d.name.name + "` already exists");
-                diag.notes.push_back({it->second, "the first one is here"});
-            }
+            claimName(d.name);
             checkRule(g, ec, d);
-        }
-        if constexpr (std::is_same_v<T, ast::CompoundDecl>) {
-            if (auto [it, inserted] = ruleNames.emplace(d.match.name.name, d.match.name.span); !inserted) {
-                auto& diag = diags.error(d.match.name.span, "a rule or compound named `" + d.match.name.name + "` already exists");
-                diag.notes.push_back({it->second, "the first one is here"});
-            }
-            checkCompoundMatch(g, ec, d);
-            compounds.push_back(&d);
         }
     });
     std::map<std::string, int> ruleIndex;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <set>
 
 #include "sema/graph_checker.hpp"
 #include "diag/suggest.hpp"
@@ -59,7 +60,16 @@ void checkCompoundMatch(Globals& g, ExprChecker& ec, const ast::CompoundDecl& d)
     if (!bindsOnePrimitive(r))
         g.diags.error(d.match.matchSpan, "a compound starts from one primitive: its match binds a node, an edge (with its ends) "
                                          "or a face (with its corners), and nothing else");
-    g.prog.compounds.push_back(ir::Compound{r.name, static_cast<int>(g.prog.rules.size() - 1), {}, d.span});
+    ir::Compound c{r.name, static_cast<int>(g.prog.rules.size() - 1), {}, {}, d.span};
+    for (const auto& l : r.lets) {
+        const ir::TypeKind k = l.value.type.kind;
+        if (k == ir::TypeKind::Int || k == ir::TypeKind::Float || k == ir::TypeKind::Bool || k == ir::TypeKind::Vec2 || k == ir::TypeKind::Vec3)
+            c.lets.push_back(ir::Compound::Let{l.name, l.value.type});
+        else
+            g.diags.error(l.value.span, "a compound's `let` is a number, a truth value or a vector, not " + g.typeName(l.value.type));
+    }
+    if (auto it = g.compounds.find(c.name); it == g.compounds.end() || it->second < 0) g.compounds[c.name] = static_cast<int>(g.prog.compounds.size());
+    g.prog.compounds.push_back(std::move(c));
 }
 
 void checkCompoundBodies(Globals& g, const std::vector<const ast::CompoundDecl*>& decls, const std::map<std::string, int>& ruleIndex) {
@@ -90,17 +100,31 @@ void checkCommandListsReach(Globals& g) {
             g.diags.error(c.span, "compound `" + c.name + "` runs only from a `sequence { … }`, and the grammar has none");
         return;
     }
-    // What the sequence runs, directly or through compounds.
+    // What the sequence runs, directly or through compounds (`within`: the
+    // compounds around); a rule reading `C.name` must run within C.
     std::vector<char> rules(prog.rules.size(), 0), compounds(prog.compounds.size(), 0);
+    std::set<std::pair<int, int>> reported;
+    auto readsWithin = [&](int rule, const std::vector<int>& within) {
+        auto it = g.compoundReads.find(rule);
+        if (it == g.compoundReads.end()) return;
+        for (const auto& [c, span] : it->second)
+            if (std::find(within.begin(), within.end(), c) == within.end() && reported.emplace(rule, c).second)
+                g.diags.error(span, "`" + prog.rules[static_cast<std::size_t>(rule)].name + "` reads a value of compound `" +
+                                        prog.compounds[static_cast<std::size_t>(c)].name + "` but also runs outside it");
+    };
+    std::vector<int> within;
     std::function<void(const std::vector<ir::SequenceEntry>&)> reach = [&](const std::vector<ir::SequenceEntry>& list) {
         for (const auto& e : list) {
             if (!e.compound) {
                 rules[static_cast<std::size_t>(e.index)] = 1;
+                readsWithin(e.index, within);
                 continue;
             }
-            if (compounds[static_cast<std::size_t>(e.index)]) continue;
             compounds[static_cast<std::size_t>(e.index)] = 1;
+            readsWithin(prog.compounds[static_cast<std::size_t>(e.index)].matchRule, within);
+            within.push_back(e.index);
             reach(prog.compounds[static_cast<std::size_t>(e.index)].entries);
+            within.pop_back();
         }
     };
     reach(prog.sequence);

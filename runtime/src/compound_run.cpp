@@ -25,16 +25,26 @@ bool inScope(const ElementScope& s, Match m, int nodes, int edges, int faces) {
 bool CompoundRun::run(std::size_t c, const MatchSet& initial, long long& applications) {
     std::vector<std::size_t> instances;
     for (std::size_t i = 0; i < initial.size(); ++i)
-        instances.push_back(newInstance(initial.at(i), initial.nodes(), initial.edges(), initial.faces(), {}));
+        instances.push_back(newInstance(c, initial.at(i), initial.nodes(), initial.edges(), initial.faces(), {}));
     return runEntries(c, instances, applications);
 }
 
-std::size_t CompoundRun::newInstance(Match m, int nodes, int edges, int faces, std::vector<std::size_t> parents) {
+std::size_t CompoundRun::newInstance(std::size_t c, Match m, int nodes, int edges, int faces, std::vector<std::size_t> parents) {
     Instance& in = instances_.emplace_back();
     for (int i = 0; i < nodes; ++i) in.scope.addWithParts(g_, ElemClass::Node, m.nodes[i]);
     for (int i = 0; i < edges; ++i) in.scope.addWithParts(g_, ElemClass::Edge, m.edges[i]);
     for (int i = 0; i < faces; ++i) in.scope.addWithParts(g_, ElemClass::Face, m.faces[i]);
     in.parents = std::move(parents);
+    in.scope.compound = static_cast<int>(c);
+    if (!in.parents.empty()) in.scope.parent = &instances_[in.parents.front()].scope;
+    g_.setScope(&in.scope);
+    try {
+        in.scope.values = rules_.compoundValues(c, m, g_, rng_);
+    } catch (...) {
+        g_.setScope(nullptr);
+        throw;
+    }
+    g_.setScope(nullptr);
     return instances_.size() - 1;
 }
 
@@ -83,7 +93,7 @@ bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& inst
             scopedMatches(matchRule, instances, found, owners);
             std::vector<std::size_t> children;
             for (std::size_t i = 0; i < found.size(); ++i)
-                children.push_back(newInstance(found.at(i), found.nodes(), found.edges(), found.faces(), owners[i]));
+                children.push_back(newInstance(e.index, found.at(i), found.nodes(), found.edges(), found.faces(), owners[i]));
             if (!runEntries(e.index, children, applications)) return false;
             continue;
         }

@@ -177,7 +177,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
         auto afterCommand = [&](std::size_t r, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom) {
             afterStep(r, IncrementalMatches::kAnyDaughter, step, newEdgesFrom, newNodesFrom);
         };
-        CompoundRun compounds(g, rules, parallel,
+        CompoundRun compounds(g, rules, rng, parallel,
                               CompoundRun::Hooks{mayStep, [&] { return result.steps + 1; }, apply, afterCommand, stepDone});
         for (const SequenceEntry& entry : rules.sequence()) {
             if (entry.compound) {

@@ -1,5 +1,7 @@
 #include "g2d/element_scope.hpp"
 
+#include <stdexcept>
+
 namespace g2d::rt {
 
 void ElementScope::addWithParts(const Graph& g, ElemClass c, std::uint32_t id) {
@@ -18,6 +20,12 @@ void ElementScope::addWithParts(const Graph& g, ElemClass c, std::uint32_t id) {
                 if (g.source(e) == v) add(ElemClass::Edge, e);
         }
     }
+}
+
+const Value& compoundValue(const Graph& g, int compound, int slot) {
+    for (const ElementScope* s = g.scope(); s; s = s->parent)
+        if (s->compound == compound) return s->values.at(static_cast<std::size_t>(slot));
+    throw std::logic_error("a compound's value was read outside the compound");
 }
 
 namespace scoped {

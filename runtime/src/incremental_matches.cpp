@@ -45,9 +45,10 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         sets_.emplace_back(nn, info.edgeCount, info.faceCount, info.pick == Pick::Oldest, info.readsIncidence, info.readDirections);
         radius_.push_back(info.radius);
         anchors_.push_back(repairAnchors(info));
-        refill(r, g);
         byRadius_.push_back(r);
-        retired_.push_back(0);
+        retired_.push_back(info.globalMatches ? 0 : 1);   // searched within compounds' scopes only
+        if (!info.globalMatches) continue;
+        refill(r, g);
         ++liveRules_;
         pairs += (info.weights.size() + 1) * rules.ruleCount();
     }

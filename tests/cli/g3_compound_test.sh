@@ -12,6 +12,10 @@
 #    finds the new edges, each once), and the outer `Fan`'s corner condition
 #    counts degrees within its triangle (2 everywhere; 3 at the shared
 #    side's ends globally), so both hexagons fan out whole.
+# 3. Table 3.2: a compound's `let` on its initial edge (l_ini = 3) as the
+#    compound's length (l_cc = 5, or l_ini · l_cc when relative), read by a
+#    contained Create edge (l_i = 2) as `C.l`, or the preceding edge's length
+#    (l_pre = 0.5) when relative: 10, 1, 30, 1.
 # Interpreted and compiled runs give the same bytes; incremental matching
 # agrees with a full search after every step.
 # Usage: g3_compound_test.sh G2D SOURCE_DIR [COMPILED]   (COMPILED=no: the interpreter only)
@@ -95,4 +99,38 @@ assert d["graph"]["steps"] == 3, d["graph"]      # SplitMid, Tag, Fan
 assert sum(l["tagged"] for l in d["links"]) == 5, [l for l in d["links"] if l["tagged"]]
 assert all(len(f["corners"]) == 3 for f in d["faces"]), d["faces"]
 PY
+cat > table32.g2d <<'G2D'
+space 3d;
+param cc_relative: bool = false;
+param i_relative: bool = false;
+node P;
+edge E directed;
+axiom { a: P at (0, 0, 0); b: P at (3, 0, 0); a -[E]-> b; }
+compound C {
+    match { a: P; b: P; e: a -[E]-> b where e.length > 2.5; }
+    let l = cc_relative ? e.length * 5 : 5.0;
+    sequence { Stub; CreateEdge; }
+}
+rule Stub {
+    match { a: P; b: P; e: a -[E]-> b where e.length > 2.5; }
+    produce { e; s: P at b.pos + (0, 0, 0.5); b -[E]-> s; }
+}
+rule CreateEdge {
+    match { b: P; s: P; p: b -[E]-> s where p.length < 1; }
+    produce { p; n: P at s.pos + p.direction * (i_relative ? p.length * 2 : C.l * 2); s -[E]-> n; }
+}
+sequence { C; }
+G2D
+for modes in "false false 10" "false true 1" "true false 30" "true true 1"; do
+  set -- $modes
+  expect_code 0 "$g2d" run table32.g2d -D cc_relative=$1 -D i_relative=$2 --json "i_t32_$1_$2.json" -o "i_t32_$1_$2.svg"
+  python3 - "i_t32_$1_$2.json" "$3" <<'PY' || fail "Table 3.2: C_cc relative=$1, C_i relative=$2 should give $3"
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+pos = {v["id"]: v["pos"] for v in d["nodes"]}
+last = max(d["links"], key=lambda l: l["id"])
+assert abs(math.dist(pos[last["source"]], pos[last["target"]]) - float(sys.argv[2])) < 1e-12, last
+PY
+done
+same_bytes table32.g2d t32_true_false -D cc_relative=true -D i_relative=false
 finish

@@ -14,6 +14,7 @@
 //     parallel step;
 //   * a compound: its instances are found the same way within each scope
 //     (one found in two scopes belongs to both), and its entries run in turn.
+// An instance's lets are evaluated when it is found, within its own scope.
 // Every entry is a step, with or without instances, so `age` counts
 // commands whatever matched.
 #include <deque>
@@ -40,8 +41,8 @@ public:
         std::function<void(long long step)> stepDone;
     };
     // `parallel` is the step Hooks::apply runs (which matches it took).
-    CompoundRun(Graph& g, RuleSet& rules, const ParallelStep& parallel, Hooks hooks)
-        : g_(g), rules_(rules), parallel_(parallel), hooks_(std::move(hooks)) {}
+    CompoundRun(Graph& g, RuleSet& rules, Rng& rng, const ParallelStep& parallel, Hooks hooks)
+        : g_(g), rules_(rules), rng_(rng), parallel_(parallel), hooks_(std::move(hooks)) {}
 
     // Runs compound `c` from its initial primitives `initial` (its match
     // rule's matches). False when a limit stopped it. `applications` counts
@@ -57,11 +58,13 @@ private:
     // The matches of `rule` within each instance's scope, each once, with the instances it was found in.
     void scopedMatches(std::size_t rule, const std::vector<std::size_t>& instances, MatchSet& set,
                        std::vector<std::vector<std::size_t>>& owners);
-    std::size_t newInstance(Match m, int nodes, int edges, int faces, std::vector<std::size_t> parents);
+    // An instance of compound `c` at match `m` of its match rule: its scope, and its lets' values read within it.
+    std::size_t newInstance(std::size_t c, Match m, int nodes, int edges, int faces, std::vector<std::size_t> parents);
     void addToScopes(std::size_t instance, ElemClass c, std::uint32_t from, std::uint32_t to);
 
     Graph& g_;
     RuleSet& rules_;
+    Rng& rng_;
     const ParallelStep& parallel_;
     Hooks hooks_;
     std::deque<Instance> instances_;

@@ -90,6 +90,10 @@ struct RuleInfo {
     // moved nodes within this distance of another node merge with it
     // (0: no merging).
     double mergeTolerance = 0;
+    // Whether its matches are kept over the whole graph (IncrementalMatches):
+    // with a command list, only those of the rules and compounds the list
+    // names itself; the others run within compounds' scopes (compound_run.hpp).
+    bool globalMatches = true;
 };
 
 // What repair needs of one pattern node, from RuleInfo (repairAnchors):
@@ -230,6 +234,12 @@ public:
     virtual const std::vector<CompoundInfo>& compounds() const {
         static const std::vector<CompoundInfo> none;
         return none;
+    }
+    // The values of compound `compound`'s lets for the instance at match `m`
+    // (its match rule's), in order, on the graph as it is now.
+    virtual std::vector<Value> compoundValues(std::size_t compound, Match m, const Graph& g, Rng& rng) {
+        (void)compound, (void)m, (void)g, (void)rng;
+        return {};
     }
     // Called by commit() after each application it makes, when set (compound
     // scopes take in what each application created).

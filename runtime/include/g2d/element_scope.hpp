@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "g2d/graph.hpp"
+#include "g2d/value.hpp"
 
 namespace g2d::rt {
 
@@ -30,6 +31,12 @@ public:
     void addWithParts(const Graph& g, ElemClass c, std::uint32_t id);
     std::size_t size(ElemClass c) const { return ids(c).size(); }
 
+    // The compound instance the scope is of: the compound, its lets' values,
+    // and the scope of the instance it runs within (none at the top).
+    int compound = -1;
+    std::vector<Value> values;
+    const ElementScope* parent = nullptr;
+
 private:
     std::vector<std::uint32_t>& ids(ElemClass c) { return c == ElemClass::Edge ? edges_ : c == ElemClass::Face ? faces_ : nodes_; }
     const std::vector<std::uint32_t>& ids(ElemClass c) const {
@@ -37,6 +44,11 @@ private:
     }
     std::vector<std::uint32_t> nodes_, edges_, faces_;   // sorted
 };
+
+// `C.name` (compound C's let `slot`) as the instance of C that the graph's
+// scope lies within has it (std::logic_error outside one: the checker
+// lets only rules that run within C read it).
+const Value& compoundValue(const Graph& g, int compound, int slot);
 
 // The topological facts counted within a scope.
 namespace scoped {
