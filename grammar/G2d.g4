@@ -108,7 +108,7 @@ ruleOption
     | 'pick' ID                     # rulePick
     | 'ordered'                     # ruleOrdered
     | 'parallel'                    # ruleParallel
-    | word='merge'                  # ruleWordOption
+    | word=('merge' | 'intersect')  # ruleWordOption
     ;
 matchBlock  : 'match' '{' matchStmt* '}' ;
 matchStmt

@@ -80,6 +80,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     out += in + "info.deletesNodes = " + listOf(i.deletesNodes, byteText) + ";\n";
     if (i.mergeTolerance > 0) out += in + "info.mergeTolerance = " + cppLiteral(ir::Value{i.mergeTolerance}, ir::kFloatType) + ";\n";
     if (!i.globalMatches) out += in + "info.globalMatches = false;\n";
+    if (i.intersect) out += in + "info.intersect = true;\n";
     return out;
 }
 

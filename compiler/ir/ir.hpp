@@ -395,6 +395,7 @@ struct Rule {
     Pick pick = Pick::Random;
     bool ordered = false;              // the match keeps the x and y order of the sketch
     bool merge = false;                // `merge`: coinciding nodes merge after each step
+    bool intersect = false;            // `intersect`: an application that would intersect the model is undone
     bool parallel = false;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;

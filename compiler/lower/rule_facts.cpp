@@ -46,7 +46,8 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.readValues = std::move(effects.readValues);
     info.changedKinds = std::move(effects.changedKinds);
     info.changedValues = std::move(effects.changedValues);
-    if (r.merge || prog.mergeAll) {
+    info.intersect = r.intersect;
+    if ((r.merge || prog.mergeAll) && !r.intersect) {   // a command tests for intersection or merges (G^3 §4.3)
         if (!prog.mergeTolerance) info.mergeTolerance = rt::kDefaultMergeTolerance;
         else if (prog.mergeTolerance->op == ir::ExprOp::Literal) info.mergeTolerance = std::get<double>(prog.mergeTolerance->value);
         else out.mergeExpr = &*prog.mergeTolerance;

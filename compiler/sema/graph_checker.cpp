@@ -268,6 +268,7 @@ public:
         match();
         items();
         warnUnusedLets();
+        if (rule_.intersect) checkOnlyAdds();
         // Advice about a rule is noise while the rule has errors.
         if (g_.diags.errorCount() == errorsBefore)
             for (auto& w : pendingWarnings_) g_.diags.warning(w.span, w.message).notes = w.notes;
@@ -291,8 +292,9 @@ private:
             case ast::RuleOption::Kind::Parallel: rule_.parallel = true; break;
             case ast::RuleOption::Kind::Word:
                 if (o.word.name == "merge") rule_.merge = true;
+                else if (o.word.name == "intersect") rule_.intersect = true;
                 else g_.diags.error(o.word.span, "unknown rule option `" + o.word.name + "`" +
-                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge"}));
+                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect"}));
                 break;
             case ast::RuleOption::Kind::Pick:
                 if (o.pick.name == "random") rule_.pick = ir::Pick::Random;
@@ -1309,6 +1311,42 @@ private:
                                               "give `" + mn.name + "` one with `@ (x, y)`");
             d.notes.push_back({dg.span, "a new node of this daughter is placed automatically"});
             return;
+        }
+    }
+
+    // `intersect`: an application found to intersect is undone by removing
+    // what it added, so it may only add (G^3's Create edge and Create face).
+    void checkOnlyAdds() {
+        if (rule_.merge) {
+            g_.diags.error(d_.name.span, "rule `" + rule_.name + "` cannot both `merge` and `intersect` (G^3 does one or the other per command)");
+            return;
+        }
+        for (const auto& d : rule_.daughters) {
+            std::string what;
+            if (!d.deletedNodes.empty()) what = "deletes node `" + rule_.nodes[static_cast<std::size_t>(d.deletedNodes[0])].name + "`";
+            else if (!d.deletedEdges.empty()) what = "deletes an edge of the match";
+            else if (!d.deletedFaces.empty()) what = "deletes face `" + rule_.faces[static_cast<std::size_t>(d.deletedFaces[0])].name + "`";
+            else if (!d.inserts.empty()) what = "inserts a node into faces";
+            else if (!d.splits.empty()) what = "splits a face";
+            for (const auto& n : d.nodes)
+                if (what.empty() && n.motherNode >= 0 && (n.position || n.radius || !n.assigns.empty() || !n.styles.empty()))
+                    what = "changes node `" + n.name + "`";
+            for (const auto& e : d.edges)
+                if (what.empty() && e.motherEdge >= 0) {
+                    const auto& me = rule_.edges[static_cast<std::size_t>(e.motherEdge)];
+                    const bool rewired = d.nodes[static_cast<std::size_t>(e.src)].motherNode != me.src ||
+                                         d.nodes[static_cast<std::size_t>(e.dst)].motherNode != me.dst;
+                    if (rewired || !e.assigns.empty() || !e.styles.empty()) what = "changes edge `" + e.name + "`";
+                }
+            for (const auto& k : d.keptFaces)
+                if (what.empty() && (!k.assigns.empty() || !k.styles.empty()))
+                    what = "changes face `" + rule_.faces[static_cast<std::size_t>(k.motherFace)].name + "`";
+            if (!what.empty()) {
+                auto& diag = g_.diags.error(d.span, "a rule with `intersect` may only add elements (an application that would intersect "
+                                                    "the model is undone), but this daughter " + what);
+                diag.notes.push_back({d_.name.span, "rule `" + rule_.name + "` has `intersect`"});
+                return;
+            }
         }
     }
 

@@ -98,6 +98,10 @@ void checkCommandListsReach(Globals& g) {
     if (prog.sequence.empty()) {
         for (const auto& c : prog.compounds)
             g.diags.error(c.span, "compound `" + c.name + "` runs only from a `sequence { … }`, and the grammar has none");
+        for (const auto& r : prog.rules)
+            if (r.intersect)
+                g.diags.error(r.span, "rule `" + r.name + "` has `intersect`, which needs a `sequence { … }` (a command applies once; "
+                                      "without one an undone application would be tried again and again)");
         return;
     }
     // What the sequence runs, directly or through compounds (`within`: the

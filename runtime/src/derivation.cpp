@@ -2,6 +2,7 @@
 
 #include "g2d/deadline.hpp"
 #include "g2d/incremental_matches.hpp"
+#include "g2d/intersection_guard.hpp"
 #include "g2d/node_merge.hpp"
 #include "g2d/parallel_step.hpp"
 #include "g2d/compound_run.hpp"
@@ -167,12 +168,37 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             result.stopped = StopReason::StepLimit;
             return false;
         };
-        auto apply = [&](std::size_t r, const MatchSet& set, long long step, const ElementScope* const* scopes) {
-            try {
-                return parallel.run(r, set, rules, g, rng, step, tracer, scopes);
-            } catch (const DeadlinePassed&) {
-                throw timeLimit(limits, step);
+        auto apply = [&](std::size_t r, const MatchSet& set, long long step, const ElementScope* const* scopes) -> std::size_t {
+            if (!rules.info(r).intersect) {
+                try {
+                    return parallel.run(r, set, rules, g, rng, step, tracer, scopes);
+                } catch (const DeadlinePassed&) {
+                    throw timeLimit(limits, step);
+                }
             }
+            // Each application's additions are tested as it is committed (before a compound records them).
+            IntersectionGuard guard;
+            guard.begin(g);
+            auto from = IntersectionGuard::capacities(g);
+            const std::function<void()> previous = rules.onApplied;
+            rules.onApplied = [&] {
+                const auto to = IntersectionGuard::capacities(g);
+                guard.admit(g, from, to);
+                from = to;
+                if (previous) previous();
+            };
+            std::size_t applied = 0;
+            try {
+                applied = parallel.run(r, set, rules, g, rng, step, tracer, scopes);
+            } catch (const DeadlinePassed&) {
+                rules.onApplied = previous;
+                throw timeLimit(limits, step);
+            } catch (...) {
+                rules.onApplied = previous;
+                throw;
+            }
+            rules.onApplied = previous;
+            return applied - guard.cancelled();
         };
         auto afterCommand = [&](std::size_t r, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom) {
             afterStep(r, IncrementalMatches::kAnyDaughter, step, newEdgesFrom, newNodesFrom);

@@ -27,7 +27,7 @@ syn match g2dTypeName "\h\w*" contained
 syn match g2dFuncName "\h\w*" contained
 " rules
 syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with
-syn keyword g2dModifier ordered parallel directed undirected merge
+syn keyword g2dModifier ordered parallel directed undirected merge intersect
 syn keyword g2dModifier pick nextgroup=g2dPickPolicy skipwhite
 syn match g2dPickPolicy "\h\w*" contained
 " booleans and logic; `not {` is a negative condition

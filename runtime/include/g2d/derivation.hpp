@@ -94,6 +94,9 @@ struct RuleInfo {
     // with a command list, only those of the rules and compounds the list
     // names itself; the others run within compounds' scopes (compound_run.hpp).
     bool globalMatches = true;
+    // G^3's intersection tests (intersection_guard.hpp): an application
+    // whose additions would intersect the model is undone.
+    bool intersect = false;
 };
 
 // What repair needs of one pattern node, from RuleInfo (repairAnchors):
