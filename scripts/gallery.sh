@@ -42,6 +42,7 @@ examples=(
   "g3_grid_split|1|G^3's Fig. 3.11: Split edge and two-corner Split face cut squares into cells; Split face on the cells with eight neighbouring faces (\`-D squares=2\`: four)"
   "g3_compound|1|G^3's Fig. 3.12: the same commands as a compound on two squares: within each square's scope only its middle cell has eight neighbours"
   "g3_flags|1 2|G^3's flags (Fig. 3.7): Create edge, then Create face with intersection testing: a flag that would cut another is not made"
+  "g3_tree_box|1|G^3's tree in a box (Figs 3.6, 5.4): Create edge with intersection testing against the walls and the tree itself"
   "g3_windmill|1|G^3's windmill compound (Figs 3.13, 3.14): Split face, Edit node, Create edge and Create face, sized by the face it starts from"
 )
 

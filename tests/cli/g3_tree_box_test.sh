@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# examples/g3_tree_box.g2d: G^3's tree in a box (Figs 3.6, 5.4). With
+# intersection testing every branch stays inside the closed box of nine
+# faces (a branch that would pierce a wall is not made), and the tree is
+# still a tree (every node one stem in); without testing the same growth
+# goes through the walls and is bigger. Interpreted and compiled runs give the same bytes.
+# Usage: g3_tree_box_test.sh G2D SOURCE_DIR [COMPILED]   (COMPILED=no: the interpreter only)
+set -u
+g2d="$1"; src="$2"; compiled="${3:-yes}"
+source "$(dirname "$0")/test_lib.sh"
+grammar="$src/examples/g3_tree_box.g2d"
+
+[ "$compiled" = yes ] && expect_code 0 "$g2d" build "$grammar" -o tree
+for testing in true false; do
+  expect_code 0 "$g2d" run "$grammar" -D "testing=$testing" --json "i_$testing.json" --no-svg
+  if [ "$compiled" = yes ]; then
+    expect_code 0 ./tree -D "testing=$testing" --json "c_$testing.json" --no-svg
+    cmp -s "i_$testing.json" "c_$testing.json" || fail "testing=$testing: interpreted and compiled JSON differ"
+  fi
+done
+python3 - i_true.json i_false.json <<'PY' || fail "wrong tree"
+import json, sys
+tested, untested = (json.load(open(f)) for f in sys.argv[1:])
+def inside(p):
+    return -1 < p[0] < 1 and -1 < p[1] < 1 and 0 < p[2] < 2
+for d in (tested, untested):
+    assert len(d["faces"]) == 9 and d["graph"]["steps"] == 52, (len(d["faces"]), d["graph"])
+tree = [v for v in tested["nodes"] if v["kind"] == "N"]
+assert len(tree) > 5000, len(tree)
+assert all(inside(v["pos"]) for v in tree), [v["pos"] for v in tree if not inside(v["pos"])][:3]
+wild = [v for v in untested["nodes"] if v["kind"] == "N"]
+assert len(wild) > len(tree) and not all(inside(v["pos"]) for v in wild)
+# every tree node but the root has one stem in; tips none out, forks at most two
+ins = {}
+for l in tested["links"]:
+    ins[l["target"]] = ins.get(l["target"], 0) + 1
+assert sum(1 for v in tree if ins.get(v["id"], 0) != 1) == 1
+PY
+finish
