@@ -17,6 +17,9 @@ Benchmarks:
   subdivide    faces: examples/subdivide.g2d, a square split into 4^depth quads, depth up to 9
   thesis       the thesis's examples at the original tool's step counts, with
                the speed-up over its measured seconds (../shared/reference/README.md)
+  g3           G^3's models beside its Table 5.1 (Laganeckiene 2012: Core2 Duo seconds),
+               and G^3's Split edge / Split face over a model growing to a million elements
+               (bench/grammars/g3_quads.g2d)
 
 usage: bench/run.py [--g2d build/release/bin/g2d] [--quick] [--repeat N] [--only NAME...]
 """
@@ -140,7 +143,7 @@ class Suite:
     def flatness(self):
         """Per Koch variant: time per rewrite at the smallest and the largest level, and their ratio."""
         lines = []
-        for name in ("koch-oldest", "koch-random", "koch-parallel"):
+        for name in ("koch-oldest", "koch-random", "koch-parallel", "g3-quads"):
             rows = [r for r in self.rows if r["benchmark"] == name]
             if len(rows) < 2:
                 continue
@@ -269,6 +272,25 @@ def subdivide(s, quick):
         s.case("subdivide", f"depth {d}: {4 ** d:,} faces", grammar, exe, ["-D", f"depth={d}"], interpret=d <= 7)
 
 
+# G^3 (Laganeckiene 2012) Table 5.1: its models' generation times on a Core2 Duo, in seconds.
+G3_TABLE_5_1 = {"g3_tree_box": 6.14}
+
+
+def g3(s, quick):
+    for name, seconds in G3_TABLE_5_1.items():
+        path = os.path.join(ROOT, "examples", name + ".g2d")
+        if not os.path.exists(path):
+            continue
+        grammar, exe = s.build(name, open(path).read())
+        s.case("g3 " + name, "Table 5.1", grammar, exe, [], original=seconds)
+    # Scaling to a million elements: a command list of `Mid; Quad;` rounds (4^rounds quads).
+    text = open(os.path.join(ROOT, "bench/grammars/g3_quads.g2d")).read()
+    for rounds in ([3, 4] if quick else [5, 7, 9]):
+        source = text + "sequence {" + " Mid; Quad;" * rounds + " }\n"
+        grammar, exe = s.build(f"g3_quads_{rounds}", source)
+        s.case("g3-quads", f"{rounds} rounds: {4 ** rounds:,} quads", grammar, exe, [], interpret=rounds <= 7)
+
+
 def thesis(s, quick):
     for name, (steps, seconds) in ORIGINAL.items():
         grammar, exe = s.build(name, open(os.path.join(ROOT, "examples", name + ".g2d")).read())
@@ -303,7 +325,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
     ap.add_argument("--short-repeat", type=int, default=21,
                     help="runs per case when its runs take under 10 ms (default 21)")
-    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "instructions"])
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "g3", "instructions"])
     args = ap.parse_args()
     if args.quick:
         args.repeat = args.short_repeat = 1
@@ -311,7 +333,7 @@ def main():
     print(f"g2d benchmark suite — {time.strftime('%Y-%m-%d')}, {os.cpu_count()} cores; fastest of {args.repeat}"
           + (f" ({max(args.repeat, args.short_repeat)} for runs under 10 ms)" if args.short_repeat > args.repeat else ""))
     timed = [(n, fn) for n, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex),
-                                     ("subdivide", subdivide)]
+                                     ("subdivide", subdivide), ("g3", g3)]
              if not args.only or n in args.only]
     if timed:
         print()
