@@ -91,18 +91,18 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         diags.error(at, "the grammar has no `axiom { … }`: there is no graph to start from");
     }
     // Compounds first: rules read their lets (`C.name`).
-    std::map<std::string, Span> ruleNames;
+    std::map<std::string, std::pair<Span, const char*>> ruleNames;   // and what it names
     std::vector<const ast::CompoundDecl*> compounds;
-    auto claimName = [&](const ast::Ident& name) {
-        if (auto [it, inserted] = ruleNames.emplace(name.name, name.span); !inserted) {
-            auto& diag = diags.error(name.span, "a rule or compound named `" + name.name + "` already exists");
-            diag.notes.push_back({it->second, "the first one is here"});
+    auto claimName = [&](const ast::Ident& name, const char* what) {
+        if (auto [it, inserted] = ruleNames.emplace(name.name, std::pair{name.span, what}); !inserted) {
+            auto& diag = diags.error(name.span, std::string("a ") + it->second.second + " named `" + name.name + "` already exists");
+            diag.notes.push_back({it->second.first, "the first one is here"});
         }
     };
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::CompoundDecl>) {
-            claimName(d.match.name);
+            claimName(d.match.name, "compound");
             checkCompoundMatch(g, ec, d);
             compounds.push_back(&d);
         }
@@ -110,7 +110,7 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, ast::RuleDecl>) {
-            claimName(d.name);
+            claimName(d.name, "rule");
             checkRule(g, ec, d);
         }
     });
