@@ -230,11 +230,16 @@ int repairRadius(const ir::Rule& rule) {
 
 namespace {
 
-void markDegreeReads(const ir::Expr& e, int matchNodes, std::vector<bool>& reads) {
-    if (e.op == ir::ExprOp::Fact && e.elem.cls == ir::ElemClass::Node && e.elem.index < matchNodes &&
-        (e.fact == ir::ElemFact::Degree || e.fact == ir::ElemFact::InDegree || e.fact == ir::ElemFact::OutDegree))
-        reads[static_cast<std::size_t>(e.elem.index)] = true;
-    for (const auto& a : e.args) markDegreeReads(a, matchNodes, reads);
+// Degrees read every edge at a node; an edge's degree reads every edge at its ends.
+void markDegreeReads(const ir::Expr& e, const ir::Rule& rule, std::vector<bool>& reads) {
+    const int matchNodes = static_cast<int>(rule.nodes.size());
+    const bool degree = e.op == ir::ExprOp::Fact &&
+                        (e.fact == ir::ElemFact::Degree || e.fact == ir::ElemFact::InDegree || e.fact == ir::ElemFact::OutDegree);
+    if (degree && e.elem.cls == ir::ElemClass::Node && e.elem.index < matchNodes) reads[static_cast<std::size_t>(e.elem.index)] = true;
+    if (degree && e.elem.cls == ir::ElemClass::Edge && e.elem.index < static_cast<int>(rule.edges.size()))
+        for (int end : {rule.edges[static_cast<std::size_t>(e.elem.index)].src, rule.edges[static_cast<std::size_t>(e.elem.index)].dst})
+            if (end >= 0 && end < matchNodes) reads[static_cast<std::size_t>(end)] = true;
+    for (const auto& a : e.args) markDegreeReads(a, rule, reads);
 }
 
 }  // namespace
@@ -244,14 +249,14 @@ std::vector<rt::Incidence> incidenceReaders(const ir::Rule& rule) {
     std::vector<bool> all(rule.nodes.size(), false);
     // Forced: degrees read in conditions, and edges to a negative condition's
     // own nodes (only this end sees them change).
-    for (const auto& c : rule.conditions) markDegreeReads(c.expr, outer, all);
+    for (const auto& c : rule.conditions) markDegreeReads(c.expr, rule, all);
     // Edges between two match nodes: the pattern's, and negative conditions'.
     std::vector<std::pair<int, int>> own, forbidden;
     const auto valid = [&](int i, int limit) { return i >= 0 && i < limit; };  // not after an error
     for (const auto& e : rule.edges)
         if (valid(e.src, outer) && valid(e.dst, outer)) own.emplace_back(e.src, e.dst);
     for (const auto& nac : rule.nacs) {
-        for (const auto& c : nac.conditions) markDegreeReads(c.expr, outer, all);
+        for (const auto& c : nac.conditions) markDegreeReads(c.expr, rule, all);
         const int total = outer + static_cast<int>(nac.nodes.size());
         for (const auto& e : nac.edges) {
             if (!valid(e.src, total) || !valid(e.dst, total)) continue;

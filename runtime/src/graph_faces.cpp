@@ -223,6 +223,22 @@ vec3 Graph::vectorArea(FaceId f) const {
     return twice / 2.0;
 }
 
+Graph::Bounds3 Graph::bounds3(bool edge, std::uint32_t id) const {
+    auto widen = [](Bounds3& b, vec3 p) {
+        b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+        b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+    };
+    if (edge) {
+        Bounds3 b{pos3(source(id)), pos3(source(id))};
+        widen(b, pos3(target(id)));
+        return b;
+    }
+    CornerId c = firstCorner(id);
+    Bounds3 b{pos3(cornerNode(c)), pos3(cornerNode(c))};
+    for (int i = 0; i < cornerCount(id); ++i, c = nextCorner(c)) widen(b, pos3(cornerNode(c)));
+    return b;
+}
+
 void Graph::copyFaceAttrs(FaceId from, FaceId to) {
     const int kind = faces_[from].kind;
     if (!pooled(kind)) return;

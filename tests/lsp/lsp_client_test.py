@@ -140,8 +140,8 @@ check(split and {ch["name"] for ch in split[0]["children"]} >= {"s", "e", "old",
 
 items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(5, "lod")})["result"]
 labels = {i["label"] for i in items}
-# An edge: its attributes and the facts edges have (no position, no degrees).
-check(labels == {"lod", "age", "id", "faces", "length", "direction"}, "completion after old.: %s" % labels)
+# An edge: its attributes and the facts edges have (no position; its degree, its ends' bounds).
+check(labels == {"lod", "age", "id", "faces", "length", "direction", "degree", "lo", "hi"}, "completion after old.: %s" % labels)
 # Each one offered is accepted by `g2d check` where it was offered.
 for label in sorted(labels):
     with open(os.path.join(work, "offered.g2d"), "w") as f:
@@ -179,7 +179,7 @@ check(h and "face" in h["contents"]["value"] and "`Room`" in h["contents"]["valu
 items = c.request("textDocument/completion", {"textDocument": face_doc,
                                                "position": {"line": 4, "character": face_line.index("level")}})["result"]
 labels = {i["label"] for i in items}
-check(labels == {"level", "age", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours", "touching"},
+check(labels == {"level", "age", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours", "touching", "lo", "hi"},
       "completion after f.: %s" % labels)
 
 unknown = c.request("textDocument/formatting", {"textDocument": doc, "options": {}})

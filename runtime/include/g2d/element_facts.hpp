@@ -32,7 +32,8 @@ inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
     X(Age, age, age, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth,                                      \
       "the step that created the element (0: the axiom)")                                                            \
     X(Id, id, id, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, "the element's id (never reused)")     \
-    X(Degree, degree, degree, long long, "int", kOnNodes, kInBoth, "the node's edges, both directions")             \
+    X(Degree, degree, degree, long long, "int", kOnNodes | kOnEdges, kInBoth,                                        \
+      "the node's edges, both directions; for an edge, the other edges at its ends (G^3's neighbouring edges)")      \
     X(InDegree, in_degree, in_degree, long long, "int", kOnNodes, kInBoth, "the node's incoming edges")             \
     X(OutDegree, out_degree, out_degree, long long, "int", kOnNodes, kInBoth, "the node's outgoing edges")          \
     X(Faces, faces, faces, long long, "int", kOnNodes | kOnEdges, kInBoth,                                           \
@@ -58,7 +59,15 @@ inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
       "the face's unit normal (Newell's; counter-clockwise corners seen from its tip)")                               \
     X(Neighbours, neighbours, neighbours, long long, "int", kOnFaces, kInBoth, "the faces sharing a side with the face") \
     X(Touching, touching, touching, long long, "int", kOnFaces, kInBoth,                                               \
-      "the faces sharing at least a corner with the face (G^3's neighbouring faces)")
+      "the faces sharing at least a corner with the face (G^3's neighbouring faces)")                               \
+    X(Lo, lo, lo, vec2, "vec2", kOnEdges | kOnFaces, kIn2d,                                                          \
+      "the least x and y of its nodes (an edge's ends, a face's corners): `f.lo.x > 1` holds when every corner has x > 1") \
+    X(Hi, hi, hi, vec2, "vec2", kOnEdges | kOnFaces, kIn2d,                                                          \
+      "the greatest x and y of its nodes: `f.hi.x < 1` holds when every corner has x < 1")                         \
+    X(Lo3, lo3, lo, vec3, "vec3", kOnEdges | kOnFaces, kIn3d,                                                        \
+      "the least x, y and z of its nodes (an edge's ends, a face's corners): `f.lo.z > 1` holds when every corner has z > 1") \
+    X(Hi3, hi3, hi, vec3, "vec3", kOnEdges | kOnFaces, kIn3d,                                                        \
+      "the greatest x, y and z of its nodes: `f.hi.z < 1` holds when every corner has z < 1")
 
 enum class ElemFact : std::uint8_t {
 #define G2D_FACT_ID(id, fn, name, type, typeName, classes, spaces, meaning) id,
@@ -93,7 +102,13 @@ inline long long age(const Graph& g, ElemClass c, std::uint32_t id) {
 }
 inline long long id(const Graph&, ElemClass, std::uint32_t id) { return static_cast<long long>(id); }
 // The topological facts count within a compound's scope while one is set (element_scope.hpp).
-inline long long degree(const Graph& g, ElemClass, std::uint32_t id) { return g.scope() ? scoped::degree(g, *g.scope(), id) : g.degree(id); }
+inline long long nodeDegree(const Graph& g, NodeId n) { return g.scope() ? scoped::degree(g, *g.scope(), n) : g.degree(n); }
+// An edge's: the other edges at its ends (each once; a self-loop has one end).
+inline long long degree(const Graph& g, ElemClass c, std::uint32_t id) {
+    if (c != ElemClass::Edge) return nodeDegree(g, id);
+    const NodeId a = g.source(id), b = g.target(id);
+    return a == b ? nodeDegree(g, a) - 1 : nodeDegree(g, a) + nodeDegree(g, b) - 2;
+}
 inline long long in_degree(const Graph& g, ElemClass, std::uint32_t id) {
     return g.scope() ? scoped::inDegree(g, *g.scope(), id) : g.inDegree(id);
 }
@@ -124,6 +139,11 @@ inline long long neighbours(const Graph& g, ElemClass, std::uint32_t id) {
 inline long long touching(const Graph& g, ElemClass, std::uint32_t id) {
     return g.scope() ? scoped::touching(g, *g.scope(), id) : g.touchingCount(id);
 }
+// The bounds of an edge's ends or a face's corners (G^3's position condition on every node).
+inline vec3 lo3(const Graph& g, ElemClass c, std::uint32_t id) { return g.bounds3(c == ElemClass::Edge, id).lo; }
+inline vec3 hi3(const Graph& g, ElemClass c, std::uint32_t id) { return g.bounds3(c == ElemClass::Edge, id).hi; }
+inline vec2 lo(const Graph& g, ElemClass c, std::uint32_t id) { const vec3 v = lo3(g, c, id); return {v.x, v.y}; }
+inline vec2 hi(const Graph& g, ElemClass c, std::uint32_t id) { const vec3 v = hi3(g, c, id); return {v.x, v.y}; }
 
 }  // namespace fact
 

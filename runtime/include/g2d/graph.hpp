@@ -271,6 +271,11 @@ public:
     double area3(FaceId f) const;   // G^3 §3.4: the sum of the triangles of its §3.2.4 triangulation
     vec3 centroid3(FaceId f) const;
     vec3 vectorArea(FaceId f) const;
+    // The least and greatest coordinates of an edge's ends (edge) or a face's corners.
+    struct Bounds3 {
+        vec3 lo, hi;
+    };
+    Bounds3 bounds3(bool edge, std::uint32_t id) const;
     const Value& faceAttr(FaceId f, int i) const { return pool_[faces_[f].kind][attrIndex(faces_[f].kind, faces_[f].slot, i)]; }
     void setFaceAttr(FaceId f, int i, Value v);
     void initFaceAttr(FaceId f, int i, Value v);   // without recording a change
