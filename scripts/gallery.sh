@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Renders every example to docs/gallery/*.png (several seeds for the random
-# ones) and writes docs/gallery.md with steps, elements and time per run.
+# ones; 3D grammars through their --view page in headless Chromium) and
+# writes docs/gallery.md with steps, elements and time per run.
 # Needs the release build (scripts/build.sh) and rsvg-convert (librsvg2-bin,
 # installed here if missing).
 set -euo pipefail
@@ -50,7 +51,8 @@ examples=(
   echo "# Gallery"
   echo
   echo "Every example under [examples/](../examples/), derived with \`g2d run\` and"
-  echo "rendered from its SVG with \`rsvg-convert\` by \`scripts/gallery.sh\`. Random"
+  echo "rendered from its SVG with \`rsvg-convert\` (3D grammars: a screenshot of"
+  echo "their \`--view\` page in headless Chromium) by \`scripts/gallery.sh\`. Random"
   echo "examples are shown for several seeds. *Elements* = nodes + edges at the end;"
   echo "*time* is the derivation alone (\`--stats\` seconds) of the interpreter, on"
   echo "the 2-core machine this page was made on."
@@ -71,8 +73,16 @@ for entry in "${examples[@]}"; do
   } >> "$work/gallery.md"
   images=""
   for seed in $seeds; do
-    stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" -o "$work/$name-$seed.svg" --stats)
-    rsvg-convert -w 360 -b white "$work/$name-$seed.svg" -o "$out/$name-$seed.png"
+    if grep -q '^space 3d;' "$file" && command -v chromium >/dev/null; then
+      # 3D grammars: a screenshot of the --view page (three.js, software WebGL).
+      stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" --no-svg --view "$work/$name-$seed.html" --stats)
+      timeout 120 chromium --headless --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+        --host-resolver-rules="MAP * ~NOTFOUND" --hide-scrollbars --window-size=480,360 --virtual-time-budget=5000 \
+        --screenshot="$out/$name-$seed.png" "file://$work/$name-$seed.html" >/dev/null 2>&1
+    else
+      stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" -o "$work/$name-$seed.svg" --stats)
+      rsvg-convert -w 360 -b white "$work/$name-$seed.svg" -o "$out/$name-$seed.png"
+    fi
     read -r steps nodes edges seconds stopped < <(python3 -c 'import json,sys; d=json.loads(sys.argv[1]); print(d["steps"], d["nodes"], d["edges"], d["seconds"], d["stopped"])' "$stats")
     printf '| %s | %s | %s | %s | %.4f s |\n' "$seed" "$steps" "$((nodes + edges))" "$stopped" "$seconds" >> "$work/gallery.md"
     images+="<img src=\"gallery/$name-$seed.png\" width=\"240\" alt=\"$name, seed $seed\"> "

@@ -236,7 +236,11 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                                        [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); }));
         }
         if (objFile) objFile->commit(writeObj(graph, grammar.jsonSchema()));
-        if (viewFile) viewFile->commit(writeViewPage(viewModelOf(graph, items, name)));
+        if (viewFile) {
+            ViewModel model = viewModelOf(graph, items, name);
+            if (grammar.jsonSchema().space3d) model.home = view.toward;   // the SVG's view, z up
+            viewFile->commit(writeViewPage(model));
+        }
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "

@@ -78,13 +78,17 @@ std::string modelJson(const ViewModel& m) {
     for (const auto& e : m.edges)
         edges += std::string(edges.empty() ? "\n" : ",\n") + "[" + std::to_string(e.a) + "," + std::to_string(e.b) + "," +
                  std::to_string(colors.index(e.color)) + "]";
+    std::string alphas;
     for (const auto& f : m.faces) {
         faces += std::string(faces.empty() ? "\n" : ",\n") + "[" + std::to_string(colors.index(f.color));
         for (auto c : f.corners) faces += "," + std::to_string(c);
         faces += "]";
+        alphas += (alphas.empty() ? "" : ",") + num(f.opacity);
     }
-    return "{\"title\":" + jsonString(m.title) + ",\n\"colors\":" + colors.json() + ",\n\"nodes\":[" + nodes +
-           "],\n\"edges\":[" + edges + "],\n\"faces\":[" + faces + "]}";
+    std::string home;
+    if (m.home) home = ",\n\"home\":[" + num(m.home->x) + "," + num(m.home->y) + "," + num(m.home->z) + "]";
+    return "{\"title\":" + jsonString(m.title) + home + ",\n\"colors\":" + colors.json() + ",\n\"nodes\":[" + nodes +
+           "],\n\"edges\":[" + edges + "],\n\"faces\":[" + faces + "],\n\"faceAlphas\":[" + alphas + "]}";
 }
 
 std::string counted(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
@@ -142,7 +146,8 @@ ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const 
         if (!it || styleText(*it, "tag", "polygon") == "none") continue;
         ViewFace v;
         v.color = styleText(*it, "fill", "#d9d9d9");
-        if (!painted(v.color)) continue;
+        v.opacity = std::clamp(styleNumber(*it, "fill_opacity", 1.0), 0.0, 1.0);
+        if (!painted(v.color) || v.opacity == 0) continue;
         CornerId c = g.firstCorner(f);
         for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) v.corners.push_back(index[g.cornerNode(c)]);
         m.faces.push_back(std::move(v));

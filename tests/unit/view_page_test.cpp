@@ -36,7 +36,7 @@ TEST_CASE("view model: nodes, edges and faces as the styles draw them, in 3D", "
     const NodeId abc[] = {a, b, c}, abd[] = {a, b, d};
     const FaceId shown = g.addFace(2, abc, 0), hidden = g.addFace(2, abd, 0);
     const std::vector<DrawItem> items = {
-        item(ElemClass::Face, shown, {{"fill", std::string("hsl(10, 50%, 50%)")}}),
+        item(ElemClass::Face, shown, {{"fill", std::string("hsl(10, 50%, 50%)")}, {"fill_opacity", 0.4}}),
         item(ElemClass::Face, hidden, {{"tag", std::string("none")}, {"fill", std::string("red")}}),
         item(ElemClass::Edge, ab, {{"stroke", std::string("#d62728")}}),
         item(ElemClass::Edge, bc, {{"tag", std::string("none")}}),
@@ -62,6 +62,7 @@ TEST_CASE("view model: nodes, edges and faces as the styles draw them, in 3D", "
     REQUIRE(m.faces.size() == 1);
     CHECK(m.faces[0].corners == std::vector<std::uint32_t>{0, 1, 2});
     CHECK(m.faces[0].color == "hsl(10, 50%, 50%)");
+    CHECK(m.faces[0].opacity == 0.4);
 }
 
 TEST_CASE("view page: the model inline, colours once each, nothing ends a script early", "[view]") {
@@ -69,13 +70,14 @@ TEST_CASE("view page: the model inline, colours once each, nothing ends a script
     m.title = "a</script><b>&\"";
     m.nodes = {{{0, 0.1, -2.5}, 0.05, "red"}, {{1, 0, 0}, 0, ""}, {{0, 1, 1e-7}, 0.05, "red"}};
     m.edges = {{0, 1, "red"}};
-    m.faces = {{{0, 1, 2}, "#00ff00"}};
+    m.faces = {{{0, 1, 2}, "#00ff00", 0.5}};
+    m.home = vec3{1, -2, 1.5};
     const std::string page = writeViewPage(m);
     CHECK(page == writeViewPage(m));
     CHECK(contains(page, "<title>a&lt;/script&gt;&lt;b&gt;&amp;&quot; — g2d view</title>"));
-    CHECK(contains(page, "{\"title\":\"a\\u003c/script>\\u003cb>&\\\"\",\n\"colors\":[\"red\",\"#00ff00\"],\n"
+    CHECK(contains(page, "{\"title\":\"a\\u003c/script>\\u003cb>&\\\"\",\n\"home\":[1,-2,1.5],\n\"colors\":[\"red\",\"#00ff00\"],\n"
                          "\"nodes\":[\n[0,0.1,-2.5,0.05,0],\n[1,0,0,0,-1],\n[0,1,1e-07,0.05,0]],\n"
-                         "\"edges\":[\n[0,1,0]],\n\"faces\":[\n[1,0,1,2]]}</script>"));
+                         "\"edges\":[\n[0,1,0]],\n\"faces\":[\n[1,0,1,2]],\n\"faceAlphas\":[0.5]}</script>"));
     CHECK(contains(page, "3 nodes, 1 edge, 1 face"));
     // The model's script element, then the embedded bundle's, and no other.
     CHECK(page.find("</script>") != page.rfind("</script>"));

@@ -6,6 +6,7 @@
 // inline JSON plus the embedded script (web/view/src/view.js).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,16 +27,19 @@ struct ViewEdge {
 struct ViewFace {
     std::vector<std::uint32_t> corners;   // indices into ViewModel::nodes, in the face's order
     std::string color;
+    double opacity = 1;                   // style `fill_opacity`
 };
 struct ViewModel {
     std::string title;
+    std::optional<vec3> home;      // where the camera looks from (3D grammars: --view-from, z up); none: from above
     std::vector<ViewNode> nodes;   // every live node, in id order
     std::vector<ViewEdge> edges;   // the edges drawn (not tag or stroke "none"), in id order
     std::vector<ViewFace> faces;   // the faces drawn (not tag or fill "none"), in id order
 };
 
 // Nodes: style `r` (default 0.6% of the model's diagonal), colour `fill` or
-// else `stroke`; edges: `stroke`; faces: `fill` (SVG's defaults otherwise).
+// else `stroke`; edges: `stroke`; faces: `fill` and `fill_opacity` (SVG's
+// defaults otherwise).
 // `items` are drawItems() of `g`.
 ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title);
 

@@ -4,10 +4,13 @@
 // with orbit controls. Bundled by esbuild into one file that the runtime
 // embeds, so the page needs no network.
 //
-// Model (JSON): { title, colors: [css...],
+// Model (JSON): { title, home?: [x, y, z], colors: [css...],
 //   nodes: [[x, y, z, radius, color]...]   radius 0: not drawn (still an end or corner)
 //   edges: [[a, b, color]...]               a, b: node indices
-//   faces: [[color, i, j, k, ...]...] }     corners in order; color: an index into colors
+//   faces: [[color, i, j, k, ...]...]       corners in order; color: an index into colors
+//   faceAlphas: [opacity...] }              one per face (1: opaque)
+// `home`: the direction the camera looks from, z up (3D grammars); without
+// it, from above, y up (a 2D drawing).
 import {
   AmbientLight,
   BufferAttribute,
@@ -47,30 +50,40 @@ const palette = model.colors.map((css) => {
 const nodes = model.nodes;
 const nodePos = (i) => new Vector3(nodes[i][0], nodes[i][1], nodes[i][2]);
 
-function faceMesh() {
+// The faces that are opaque, or those that are not (`translucent`), as one
+// mesh: see-through ones carry their opacity per vertex and are drawn after
+// the rest without hiding what lies behind them.
+const alphas = model.faceAlphas || model.faces.map(() => 1);
+function faceMesh(translucent) {
+  const chosen = model.faces.filter((f, i) => (alphas[i] < 1) === translucent);
+  const alpha = model.faces.map((f, i) => alphas[i]).filter((a) => (a < 1) === translucent);
   let triangles = 0;
-  for (const f of model.faces) triangles += f.length - 3;
-  const pos = new Float32Array(triangles * 9), col = new Float32Array(triangles * 9);
-  let k = 0;
+  for (const f of chosen) triangles += f.length - 3;
+  const pos = new Float32Array(triangles * 9), col = new Float32Array(triangles * 12);
+  let k = 0, q = 0;
   // Each polygon as a fan from its first corner.
-  for (const f of model.faces) {
+  chosen.forEach((f, i) => {
     const c = palette[f[0]];
     for (let t = 2; t + 1 < f.length; t++) {
       for (const n of [f[1], f[t], f[t + 1]]) {
         pos.set(nodes[n].slice(0, 3), k);
-        col.set([c.r, c.g, c.b], k);
+        col.set([c.r, c.g, c.b, alpha[i]], q);
         k += 3;
+        q += 4;
       }
     }
-  }
+  });
   const geometry = new BufferGeometry();
   geometry.setAttribute("position", new BufferAttribute(pos, 3));
-  geometry.setAttribute("color", new BufferAttribute(col, 3));
+  geometry.setAttribute("color", new BufferAttribute(col, 4));
   geometry.computeVertexNormals();   // unindexed: one normal per triangle
   // Pushed back a little, so that edges along the faces stay in front.
   const material = new MeshLambertMaterial({ vertexColors: true, side: DoubleSide, flatShading: true,
-    polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
-  return { mesh: new Mesh(geometry, material), triangles };
+    polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+    transparent: translucent, depthWrite: !translucent });
+  const mesh = new Mesh(geometry, material);
+  if (translucent) mesh.renderOrder = 1;
+  return { mesh, triangles };
 }
 
 function edgeLines() {
@@ -112,8 +125,12 @@ const radius = Math.max(hi.distanceTo(lo) / 2, 1e-6);
 
 const scene = new Scene();
 scene.background = new Color(0xffffff);
-const { mesh, triangles } = faceMesh();
-if (triangles > 0) scene.add(mesh);
+let triangles = 0;
+for (const translucent of [false, true]) {
+  const part = faceMesh(translucent);
+  if (part.triangles > 0) scene.add(part.mesh);
+  triangles += part.triangles;
+}
 if (model.edges.length > 0) scene.add(edgeLines());
 if (nodes.some((n) => n[3] > 0)) scene.add(nodeSpheres());
 
@@ -136,14 +153,16 @@ try {
 renderer.setPixelRatio(window.devicePixelRatio || 1);
 document.body.appendChild(renderer.domElement);
 
+if (model.home) camera.up.set(0, 0, 1);   // 3D grammars: z is up, as in the SVG
 const controls = new OrbitControls(camera, renderer.domElement);
-// Looking down at the model, a little from the front and the side: a flat
-// (2D) model reads as its drawing, a 3D one shows its depth.
+// A 3D grammar's model from its `home` (the SVG's direction); a 2D one
+// looking down, a little from the front and the side, so it reads as its drawing.
 function home() {
   const fov = (camera.fov * Math.PI) / 180;
   const fit = Math.min(fov, 2 * Math.atan(Math.tan(fov / 2) * camera.aspect)) / 2;
   const distance = (radius / Math.sin(fit)) * 1.05;
-  camera.position.copy(center).add(new Vector3(0.25, -0.4, 1).normalize().multiplyScalar(distance));
+  const from = model.home ? new Vector3(...model.home) : new Vector3(0.25, -0.4, 1);
+  camera.position.copy(center).add(from.normalize().multiplyScalar(distance));
   controls.target.copy(center);
   controls.maxDistance = distance * 10;
   controls.update();
