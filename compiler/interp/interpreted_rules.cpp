@@ -259,10 +259,7 @@ void InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, rt::Matc
     for (int f : p.writtenFaces) w.faces.push_back(m.faces[f]);
 }
 
-void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
-                               rt::Rng& rng, long long) {
-    const ir::Rule& r = st_.prog->rules[rule];
-    const lower::RewriteProgram& program = rewrites_[rule][daughter];
+EvalFrame InterpretedRules::matchFrame(const ir::Rule& r, rt::Match m, const rt::Graph& g, rt::Rng& rng) {
     current_ = &r;
     locals_.assign(static_cast<std::size_t>(r.localSlots), rt::Value{});
     EvalFrame f = st_.frame(&rng);
@@ -271,6 +268,14 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
     f.edges = m.edges;
     f.faces = m.faces;
     f.locals = &locals_;
+    return f;
+}
+
+void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
+                               rt::Rng& rng, long long) {
+    const ir::Rule& r = st_.prog->rules[rule];
+    const lower::RewriteProgram& program = rewrites_[rule][daughter];
+    EvalFrame f = matchFrame(r, m, g, rng);
 
     if (pendingCount_ == pending_.size()) pending_.emplace_back();
     Prepared& p = pending_[pendingCount_];
@@ -286,14 +291,7 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
 
 std::vector<rt::Value> InterpretedRules::compoundValues(std::size_t compound, rt::Match m, const rt::Graph& g, rt::Rng& rng) {
     const ir::Rule& r = st_.prog->rules[static_cast<std::size_t>(st_.prog->compounds[compound].matchRule)];
-    current_ = &r;
-    locals_.assign(static_cast<std::size_t>(r.localSlots), rt::Value{});
-    EvalFrame f = st_.frame(&rng);
-    f.graph = &g;
-    f.nodes = m.nodes;
-    f.edges = m.edges;
-    f.faces = m.faces;
-    f.locals = &locals_;
+    EvalFrame f = matchFrame(r, m, g, rng);
     std::vector<rt::Value> values;
     for (const auto& l : r.lets) {
         locals_[static_cast<std::size_t>(l.slot)] = evaluate(l.value, f);

@@ -34,6 +34,8 @@ public:
     const ir::Rule* currentRule() const { return current_; }
 
 private:
+    // The frame of rule r's expressions on match m (its locals cleared).
+    EvalFrame matchFrame(const ir::Rule& r, rt::Match m, const rt::Graph& g, rt::Rng& rng);
     std::vector<rt::SequenceEntry> sequence_;   // lower::sequenceOf
     std::vector<rt::CompoundInfo> compounds_;
     // One prepared application; kept in a pool so that its vectors are reused.

@@ -28,8 +28,7 @@ same_bytes() {   # same_bytes GRAMMAR NAME ARGS...: compiled output equals the i
   local g="$1" name="$2"; shift 2
   [ "$compiled" = yes ] || return 0
   expect_code 0 "$g2d" build "$g" -o "bin_$name"
-  expect_code 0 "./bin_$name" "$@" --json "c_$name.json" -o "c_$name.svg"
-  for ext in json svg; do cmp -s "i_$name.$ext" "c_$name.$ext" || fail "$name: interpreted and compiled $ext differ"; done
+  compiled_same "./bin_$name" "$name" "json svg" "$@"
 }
 
 expect_code 0 "$g2d" run "$grammar" --json i_two.json -o i_two.svg --verify-matches

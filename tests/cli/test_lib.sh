@@ -16,3 +16,16 @@ finish() {
   echo "$failures failed"
   [ "$failures" = 0 ]
 }
+# compiled_same PROGRAM STEM "EXTS" ARGS...: runs the compiled PROGRAM with ARGS,
+# writing c_STEM.EXT for each of EXTS (json svg obj), which must equal the
+# interpreter's i_STEM.EXT byte for byte.
+compiled_same() {
+  local program=$1 stem=$2 exts=$3; shift 3
+  local outs=() ext
+  for ext in $exts; do
+    case $ext in json) outs+=(--json "c_$stem.json") ;; obj) outs+=(--obj "c_$stem.obj") ;; svg) outs+=(-o "c_$stem.svg") ;; esac
+  done
+  [[ " $exts " == *" svg "* ]] || outs+=(--no-svg)
+  expect_code 0 "$program" "$@" "${outs[@]}"
+  for ext in $exts; do cmp -s "i_$stem.$ext" "c_$stem.$ext" || fail "$stem: interpreted and compiled $ext differ"; done
+}
