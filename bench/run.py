@@ -207,6 +207,10 @@ def instructions(s, quick):
         ("thesis facade_varied", "examples/facade_varied.g2d", None, ["--seed", "1", "--steps", "116"], True),
         ("thesis pattern_square", "examples/pattern_square.g2d", None, ["--seed", "1", "--steps", "70"], True),
     ]
+    # G^3's Split edge and Split face at 1,024 and 65,536 quads (64 times the size), compiled.
+    for rounds in ([3, 4] if quick else [5, 8]):
+        cases.append(("g3-quads", "bench/grammars/g3_quads.g2d",
+                      ("rule Quad {", "sequence {" + " Mid; Quad;" * rounds + " }\nrule Quad {"), [f"rounds={rounds}"], False))
     print()
     print("Instructions inside the derivation (callgrind; the same on every run):")
     print()
@@ -218,7 +222,7 @@ def instructions(s, quick):
             assert replace[0] in text, f"{path} no longer contains {replace[0]!r}"
             text = text.replace(*replace)
         grammar, exe = s.build(name.replace(" ", "_") + "-count", text)
-        flags = ["--no-svg", "--stats"] + extra
+        flags = ["--no-svg", "--stats"] + [a for a in extra if not a.startswith("rounds=")]   # a label only
         stats = run_once([exe] + flags)
         compiled = count_instructions([exe] + flags)
         interp = None
