@@ -293,7 +293,17 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
 
 // The rule's options, with those its priority gives it (`priority P limit N
 // parallel;`): what decides when and how often it applies.
+// A compound's heading: its name and what it runs, in order.
+std::string compoundHeading(const ir::Compound& c, const ir::Program& prog) {
+    std::string runs;
+    for (const auto& e : c.entries)
+        runs += (runs.empty() ? "" : "; ") +
+                (e.compound ? prog.compounds[static_cast<std::size_t>(e.index)].name : prog.rules[static_cast<std::size_t>(e.index)].name);
+    return "compound " + c.name + " · runs " + runs + " within each match's scope";
+}
+
 std::string ruleHeading(const ir::Rule& r, const ir::Program& prog, const SourceManager& sources) {
+    if (r.compound >= 0) return compoundHeading(prog.compounds[static_cast<std::size_t>(r.compound)], prog);
     std::string h = "rule " + r.name;
     const auto prio = prog.priorities.find(r.priority);
     const ir::PriorityConfig* config = prio != prog.priorities.end() ? &prio->second : nullptr;
@@ -324,6 +334,16 @@ std::string productionsSvg(const ir::Program& prog, const SourceManager& sources
             body += "<text x=\"20\" y=\"" + num(lineY) + "\" font-size=\"11\" fill=\"#555555\">where " +
                     xmlEscape(sourceText(sources, c.expr.span)) + "</text>\n";
             lineY += 14;
+        }
+        if (r.compound >= 0) {   // its initial primitives and values; it has no daughter of its own
+            for (const auto& l : r.lets) {
+                body += "<text x=\"20\" y=\"" + num(lineY) + "\" font-size=\"11\" fill=\"#555555\">let " + xmlEscape(l.name) + " = " +
+                        xmlEscape(sourceText(sources, l.value.span)) + "</text>\n";
+                lineY += 14;
+            }
+            body += drawPanel(motherPanel(prog, r, std::vector<bool>(r.nodes.size(), true)), 20, lineY + 14);
+            y = lineY + 14 + kPanel + 50;
+            continue;
         }
         std::vector<bool> keptAnywhere(r.nodes.size(), false);
         for (const auto& d : r.daughters)
