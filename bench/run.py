@@ -277,7 +277,7 @@ def subdivide(s, quick):
 
 
 # G^3 (Laganeckiene 2012) Table 5.1: its models' generation times on a Core2 Duo, in seconds.
-G3_TABLE_5_1 = {"g3_tree_box": 6.14}
+G3_TABLE_5_1 = {"g3_house": 0.31, "g3_cupboard": 0.16, "g3_sofa": 50.22, "g3_tree_box": 6.14}
 
 
 def g3(s, quick):

@@ -44,6 +44,9 @@ examples=(
   "g3_compound|1|G^3's Fig. 3.12: the same commands as a compound on two squares: within each square's scope only its middle cell has eight neighbours"
   "g3_flags|1 2|G^3's flags (Fig. 3.7): Create edge, then Create face with intersection testing: a flag that would cut another is not made"
   "g3_tree_box|1|G^3's tree in a box (Figs 3.6, 5.4): Create edge with intersection testing against the walls and the tree itself"
+  "g3_house|1|A house in the spirit of G^3's Fig. 5.1 (our own rules, of Table 5.1's size): windows and a door by compound commands, merging"
+  "g3_cupboard|1|A cupboard in the spirit of G^3's Fig. 5.2: one compound gives drawers on narrow panels and doors on wide ones"
+  "g3_sofa|1|A sofa in the spirit of G^3's Fig. 5.3: a maple-leaf compound on every tile, in any orientation"
   "g3_windmill|1|G^3's windmill compound (Figs 3.13, 3.14): Split face, Edit node, Create edge and Create face, sized by the face it starts from"
 )
 

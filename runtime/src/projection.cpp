@@ -34,6 +34,7 @@ void projectDrawing(std::vector<DrawItem>& items, const Graph& g, const ViewProj
             const vec3 centre = g.centroid3(it.id);
             it.a = it.b = view.project(centre);
             it.depth = view.depth(centre);
+            it.turnedAway = dot(g.vectorArea(it.id), view.toward) < 0;
         }
     }
 }

@@ -117,7 +117,10 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
         // Faces below edges below nodes.
         auto layer = [](ElemClass c) { return c == ElemClass::Face ? 0 : c == ElemClass::Edge ? 1 : 2; };
         if (a.cls != b.cls) return layer(a.cls) < layer(b.cls);
-        if (a.depth != b.depth) return a.depth > b.depth;   // 3D: farther first
+        // 3D: faces seen from the back first (on a closed surface they lie
+        // behind those seen from the front, however big), then farther first.
+        if (a.turnedAway != b.turnedAway) return a.turnedAway;
+        if (a.depth != b.depth) return a.depth > b.depth;
         return a.id < b.id;
     });
     Box box;

@@ -6,7 +6,10 @@
 // y is from × right, so world z stays up unless the view is straight down
 // or up (then world y is up on the page). Faces are drawn below edges and
 // edges below nodes, as in 2D; within each, farther first (the depth of a
-// face's corner mean, an edge's midpoint).
+// face's corner mean, an edge's midpoint), and faces seen from their back
+// (counter-clockwise corners seen from the other side) before every face
+// seen from its front: on a closed surface oriented outwards they lie
+// behind, however big.
 #include <vector>
 
 #include "g2d/graph.hpp"

@@ -30,6 +30,7 @@ struct DrawItem {
     std::vector<vec2> corners;             // a face's corners, in order
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
     double depth = 0;                      // 3D: the distance from the viewer (farther drawn first)
+    bool turnedAway = false;               // 3D: a face seen from its back (drawn before those seen from the front)
 };
 
 std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>& defs);
