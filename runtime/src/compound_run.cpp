@@ -58,7 +58,15 @@ void CompoundRun::scopedMatches(std::size_t rule, const std::vector<std::size_t>
         buffer_.reset(nn, ne, nf);
         g_.setScope(&scope);
         try {
-            rules_.findMatches(rule, g_, buffer_);
+            // Every node of a match in the scope is the scope's, its first
+            // one too: the search starts there, not from the whole graph.
+            if (nn == 0) {
+                rules_.findMatches(rule, g_, buffer_);
+            } else {
+                const int kind = rules_.info(rule).nodeKinds[0];
+                for (NodeId h : scope.nodes())
+                    if (g_.nodeAlive(h) && (kind < 0 || g_.nodeKind(h) == kind)) rules_.findAnchored(rule, g_, 0, h, buffer_);
+            }
         } catch (...) {
             g_.setScope(nullptr);
             throw;

@@ -30,6 +30,7 @@ public:
     // the edges along its sides.
     void addWithParts(const Graph& g, ElemClass c, std::uint32_t id);
     std::size_t size(ElemClass c) const { return ids(c).size(); }
+    const std::vector<std::uint32_t>& nodes() const { return nodes_; }   // sorted
 
     // The compound instance the scope is of: the compound, its lets' values,
     // and the scope of the instance it runs within (none at the top).
