@@ -308,7 +308,7 @@ struct LoopNodeRef {
     enum class Scope { Daughter, Var, Local, Prev, Next } scope = Scope::Daughter;
     int index = -1;
 };
-struct LoopNode {                      // a node each turn creates
+struct LoopNode {                      // a node each turn creates (or a split makes)
     std::string name;
     int kind = -1;
     Expr position;
@@ -352,15 +352,7 @@ struct FaceSplit {
     int motherFace = -1;
     int firstVar = -1;
     std::optional<Expr> cond;          // absent: every corner is chosen
-    struct Centre {
-        int kind = -1;
-        Expr position;
-        std::optional<Expr> radius;    // 3D
-        std::vector<AttrAssign> assigns;
-        std::vector<StyleAssign> styles;
-        Span span;
-    };
-    std::optional<Centre> centre;      // absent: only a chord (two chosen corners) cuts
+    std::optional<LoopNode> centre;    // the node it makes (no name); absent: only a chord (two chosen corners) cuts
     int edgeKind = -1;
     std::vector<AttrAssign> edgeAssigns;
     std::vector<StyleAssign> edgeStyles;

@@ -35,6 +35,17 @@ private:
         return Operand{reg, nullptr, value.type};
     }
 
+    // A node a loop's turn or a split makes, on node handle `handle` at the
+    // position in register posReg: its attributes, then radius, then styles.
+    template <class OperandOf>
+    static void createNode(const ir::LoopNode& n, int handle, int posReg, OperandOf& operand, std::vector<CommitOp>& out) {
+        CreateNode c{handle, n.kind, posReg, {}};
+        for (const auto& a : n.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
+        out.push_back(std::move(c));
+        if (n.radius) out.push_back(SetRadius{handle, operand(*n.radius)});
+        for (const auto& st : n.styles) out.push_back(SetNodeStyle{handle, &st, operand(st.value)});
+    }
+
     // A loop's turn, as its own little rewrite (LoopProgram): per turn, the
     // new nodes' positions, attributes and styles, then the edges', then
     // the faces', in order.
@@ -62,11 +73,7 @@ private:
             lp.registers.push_back(ir::positionType(prog_));
             const int pos = static_cast<int>(lp.registers.size() - 1);
             lp.prepare.push_back(EvalPosition{pos, &n.position, "position of `" + n.name + "` is not finite"});
-            CreateNode c{H + 2 + static_cast<int>(i), n.kind, pos, {}};
-            for (const auto& a : n.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
-            lp.create.push_back(std::move(c));
-            if (n.radius) lp.create.push_back(SetRadius{H + 2 + static_cast<int>(i), operand(*n.radius)});
-            for (const auto& st : n.styles) lp.create.push_back(SetNodeStyle{H + 2 + static_cast<int>(i), &st, operand(st.value)});
+            createNode(n, H + 2 + static_cast<int>(i), pos, operand, lp.create);
         }
         for (const auto& e : l.edges) {
             CreateEdge c{lp.edgeHandles, e.kind, handle(e.src), handle(e.dst), {}};
@@ -146,11 +153,8 @@ private:
         if (s.centre) {
             const int pos = newRegister(ir::positionType(prog_));
             p_.prepare.push_back(EvalPosition{pos, &s.centre->position, "position of the split's new node is not finite"});
-            CreateNode c{sp.to, s.centre->kind, pos, {}};
-            for (const auto& a : s.centre->assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
-            sp.makeCentre.push_back(std::move(c));
-            if (s.centre->radius) sp.makeCentre.push_back(SetRadius{sp.to, operand(*s.centre->radius)});
-            for (const auto& st : s.centre->styles) sp.makeCentre.push_back(SetNodeStyle{sp.to, &st, operand(st.value)});
+            auto operandOf = [&](const ir::Expr& v) { return operand(v); };
+            createNode(*s.centre, sp.to, pos, operandOf, sp.makeCentre);
         }
         CreateEdge e{sp.edgeHandle, s.edgeKind, sp.from, sp.to, {}};
         for (const auto& a : s.edgeAssigns) e.attrs.push_back(AttrWrite{a.attr, operand(a.value)});

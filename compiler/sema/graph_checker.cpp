@@ -1203,7 +1203,7 @@ private:
         if (split.edgeKind < 0) ok = false;
         else checkAssignments(g_, ec_, split.edgeKind, sp.edgeAssigns, env, split.edgeAssigns, split.edgeStyles);
         if (sp.centre) {
-            ir::FaceSplit::Centre c;
+            ir::LoopNode c;
             c.span = sp.centre->span;
             c.kind = resolveKind(g_, sp.centre->kind, ElemClass::Node);
             if (auto pos = ec_.checkAs(*sp.centre->position, ir::positionType(g_.prog), env, "a position")) c.position = std::move(*pos);
