@@ -10,6 +10,7 @@ packages=(
   antlr4 libantlr4-runtime-dev
   libglm-dev libcli11-dev catch2
   nlohmann-json3-dev
+  libeigen3-dev libxml2-dev
   libxml2-utils
   python3-networkx
   chromium

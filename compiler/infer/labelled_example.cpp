@@ -1,0 +1,202 @@
+#include "infer/labelled_example.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace g2d::infer {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double degrees(double radians) { return radians * 180.0 / kPi; }
+// Into [-180, 180).
+double wrap360(double a) {
+    a = std::fmod(a + 180.0, 360.0);
+    if (a < 0) a += 360.0;
+    return a - 180.0;
+}
+// Into [0, 180): the direction of an undirected line.
+double wrap180(double a) {
+    a = std::fmod(a, 180.0);
+    if (a < 0) a += 180.0;
+    return a >= 180.0 ? 0.0 : a;
+}
+double lineDistance(double a, double b) {   // between two line directions, [0, 90]
+    const double d = std::fabs(wrap180(a - b));
+    return std::min(d, 180.0 - d);
+}
+
+std::string at(const ExampleShape& s, int v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "(%g, %g)", s.vertices[static_cast<std::size_t>(v)].x, s.vertices[static_cast<std::size_t>(v)].y);
+    return buf;
+}
+
+double cross(Point a, Point b, Point c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+
+// Proper crossings, and a vertex touching another edge: a plane drawing has neither.
+void checkPlane(const ExampleShape& s) {
+    const auto& V = s.vertices;
+    for (std::size_t i = 0; i < s.edges.size(); ++i) {
+        const ExampleEdge& e = s.edges[i];
+        const Point a = V[static_cast<std::size_t>(e.from)], b = V[static_cast<std::size_t>(e.to)];
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
+        for (std::size_t v = 0; v < V.size(); ++v) {
+            if (static_cast<int>(v) == e.from || static_cast<int>(v) == e.to) continue;
+            const Point p = V[v];
+            const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (len * len);
+            if (t > 0 && t < 1 && std::fabs(cross(a, b, p)) / len < 1e-9 * std::max(1.0, len))
+                throw InputError{e.where + ": the edge passes through the vertex at " + at(s, static_cast<int>(v))};
+        }
+        for (std::size_t j = i + 1; j < s.edges.size(); ++j) {
+            const ExampleEdge& f = s.edges[j];
+            if (f.from == e.from || f.from == e.to || f.to == e.from || f.to == e.to) continue;
+            const Point c = V[static_cast<std::size_t>(f.from)], d = V[static_cast<std::size_t>(f.to)];
+            const double d1 = cross(a, b, c), d2 = cross(a, b, d), d3 = cross(c, d, a), d4 = cross(c, d, b);
+            if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+                throw InputError{e.where + ": the edge crosses " + f.where + "; an example must be a plane drawing"};
+        }
+    }
+}
+
+// Directions within the tolerance become one: each edge joins the first
+// group whose first edge is that close, and a group's direction is its edges'
+// mean (as lines, so 179° and 1° are 2° apart).
+std::vector<double> directionGroups(const ExampleShape& s, const std::vector<double>& line, double tolerance,
+                                    std::vector<int>& groupOf) {
+    std::vector<double> first;
+    std::vector<std::pair<double, double>> sum;   // of (cos 2a, sin 2a)
+    groupOf.assign(line.size(), -1);
+    for (std::size_t e = 0; e < line.size(); ++e) {
+        int g = -1;
+        for (std::size_t k = 0; k < first.size() && g < 0; ++k)
+            if (lineDistance(first[k], line[e]) < tolerance) g = static_cast<int>(k);
+        if (g < 0) {
+            g = static_cast<int>(first.size());
+            first.push_back(line[e]);
+            sum.emplace_back(0, 0);
+        }
+        groupOf[e] = g;
+        sum[static_cast<std::size_t>(g)].first += std::cos(2 * line[e] * kPi / 180);
+        sum[static_cast<std::size_t>(g)].second += std::sin(2 * line[e] * kPi / 180);
+    }
+    std::vector<double> mean;
+    for (std::size_t k = 0; k < first.size(); ++k) {
+        double m = wrap180(degrees(std::atan2(sum[k].second, sum[k].first)) / 2);
+        // A direction that is a whole number of degrees to within drawing noise is that number.
+        const double whole = std::round(m * 1e6) / 1e6;
+        mean.push_back(wrap180(whole));
+    }
+    (void)s;
+    return mean;
+}
+
+}  // namespace
+
+double LabelledExample::direction(int half) const {
+    const double theta = labels[static_cast<std::size_t>(edgeOfHalf(half))].theta;
+    return barred(half) ? theta - 180.0 : theta;
+}
+
+LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& options) {
+    LabelledExample out;
+    out.shape = shape;
+    const auto& V = shape.vertices;
+    std::vector<int> degree(V.size(), 0);
+    for (const ExampleEdge& e : shape.edges) {
+        ++degree[static_cast<std::size_t>(e.from)];
+        ++degree[static_cast<std::size_t>(e.to)];
+    }
+    for (std::size_t v = 0; v < V.size(); ++v)
+        if (degree[v] == 0)
+            throw InputError{shape.vertexWhere.empty() ? "a vertex has no edges" : shape.vertexWhere[v] + ": the vertex at " + at(shape, static_cast<int>(v)) + " has no edges"};
+    checkPlane(shape);
+
+    std::vector<double> oriented, line;   // per edge: from -> to direction, and as a line
+    std::vector<double> length;
+    for (const ExampleEdge& e : shape.edges) {
+        const Point a = V[static_cast<std::size_t>(e.from)], b = V[static_cast<std::size_t>(e.to)];
+        const double d = degrees(std::atan2(b.y - a.y, b.x - a.x));
+        oriented.push_back(wrap360(d));
+        line.push_back(wrap180(d));
+        length.push_back(std::hypot(b.x - a.x, b.y - a.y));
+    }
+    std::vector<int> groupOf;
+    const std::vector<double> groups = directionGroups(shape, line, options.angleTolerance, groupOf);
+
+    // Labels: (brush, left, right, direction[, length of a rigid edge]).
+    std::map<std::tuple<int, int, int, int, double>, int> labelOf;
+    out.edgeLabel.resize(shape.edges.size());
+    out.edgeFlipped.resize(shape.edges.size());
+    for (std::size_t i = 0; i < shape.edges.size(); ++i) {
+        const ExampleEdge& e = shape.edges[i];
+        const double theta = groups[static_cast<std::size_t>(groupOf[i])];
+        if (lineDistance(theta, line[i]) > 1e-9) ++out.snappedEdges;
+        const bool flipped = std::fabs(wrap360(oriented[i] - theta)) > 90;
+        const int left = flipped ? e.rightArea : e.leftArea, right = flipped ? e.leftArea : e.rightArea;
+        const EdgeBrush& brush = shape.brushes[static_cast<std::size_t>(e.brush)];
+        const double rigidLength = brush.rigid ? std::round(length[i] * 1e6) / 1e6 : 0;
+        const auto key = std::make_tuple(e.brush, left, right, groupOf[i], rigidLength);
+        auto [it, added] = labelOf.emplace(key, static_cast<int>(out.labels.size()));
+        if (added) {
+            EdgeLabel label;
+            label.brush = e.brush;
+            label.left = left;
+            label.right = right;
+            label.theta = theta;
+            out.labels.push_back(label);
+        }
+        out.labels[static_cast<std::size_t>(it->second)].edges.push_back(static_cast<int>(i));
+        out.edgeLabel[i] = it->second;
+        out.edgeFlipped[i] = flipped ? 1 : 0;
+    }
+    for (EdgeLabel& label : out.labels) {
+        const EdgeBrush& brush = shape.brushes[static_cast<std::size_t>(label.brush)];
+        double lo = 1e300, hi = 0;
+        for (int e : label.edges) {
+            lo = std::min(lo, length[static_cast<std::size_t>(e)]);
+            hi = std::max(hi, length[static_cast<std::size_t>(e)]);
+        }
+        if (brush.rigid) {
+            label.minLength = label.maxLength = std::round(lo * 1e6) / 1e6;
+        } else if (brush.maxLength > 0) {
+            label.minLength = brush.minLength;
+            label.maxLength = brush.maxLength;
+        } else {   // not given: from half the shortest to twice the longest in the example
+            label.minLength = std::round(lo / 2 * 1e6) / 1e6;
+            label.maxLength = std::round(hi * 2 * 1e6) / 1e6;
+        }
+    }
+
+    // Stars: each vertex's half-edges counter-clockwise; equal stars are one primitive.
+    std::vector<std::vector<int>> star(V.size());
+    for (std::size_t i = 0; i < shape.edges.size(); ++i) {
+        const ExampleEdge& e = shape.edges[i];
+        const int label = out.edgeLabel[i];
+        const bool flipped = out.edgeFlipped[i] != 0;
+        star[static_cast<std::size_t>(e.from)].push_back(halfLabel(label, flipped));   // `from` holds a unless flipped
+        star[static_cast<std::size_t>(e.to)].push_back(halfLabel(label, !flipped));
+    }
+    std::map<std::vector<int>, int> primitiveOf;
+    out.vertexType.resize(V.size());
+    for (std::size_t v = 0; v < V.size(); ++v) {
+        auto& halves = star[v];
+        std::stable_sort(halves.begin(), halves.end(), [&](int a, int b) { return out.direction(a) < out.direction(b); });
+        for (std::size_t k = 0; k < halves.size(); ++k) {
+            const int h = halves[k], g = halves[(k + 1) % halves.size()];
+            if (halves.size() > 1 && out.direction(h) == out.direction(g))
+                throw InputError{"the vertex at " + at(shape, static_cast<int>(v)) + " has two edges in one direction (" +
+                                 std::to_string(out.direction(h)) + "°)" +
+                                 (out.snappedEdges > 0 ? "; a smaller --angle-tolerance may keep them apart" : "")};
+        }
+        auto [it, added] = primitiveOf.emplace(halves, static_cast<int>(out.primitives.size()));
+        if (added) out.primitives.push_back({halves, {}});
+        out.primitives[static_cast<std::size_t>(it->second)].vertices.push_back(static_cast<int>(v));
+        out.vertexType[v] = it->second;
+    }
+    return out;
+}
+
+}  // namespace g2d::infer
