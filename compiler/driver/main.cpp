@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "driver/check_command.hpp"
+#include "driver/infer_command.hpp"
 #include "driver/big_stack.hpp"
 #include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
@@ -61,6 +62,23 @@ int runCommandLine(int argc, char** argv) {
     build->add_option("--keep-cpp", keepCpp, "Also write the generated C++ to this file");
     build->add_flag("-v,--verbose", buildOptions.verbose, "Print the compiler command");
 
+    auto* infer = app.add_subcommand("infer", "Infer a graph grammar from an example shape (Merrell 2023)");
+    g2d::InferCommandOptions inferOptions;
+    infer->add_option("EXAMPLE", inferOptions.example, "The example: the JSON of Merrell's app")->required();
+    infer->add_flag("--stats", inferOptions.stats, "Print the numbers (labels, primitives, graphs, rules, time) as JSON");
+    infer->add_option("--angle-tolerance", inferOptions.labels.angleTolerance, "Degrees within which edge directions are one")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 45.0));
+    infer->add_option("--max-graphs", inferOptions.limits.maxGraphs, "Stop growing the graph hierarchy at this size")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10'000'000));
+    infer->add_option("--max-generation", inferOptions.limits.maxGeneration, "Do not grow graphs of more glues (§5.7)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+    infer->add_option("--max-half-edges", inferOptions.limits.maxHalfEdges, "Do not grow graphs with more open half-edges (§5.7)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -93,6 +111,7 @@ int runCommandLine(int argc, char** argv) {
         return g2d::runBuild(buildOptions);
     }
     if (show->parsed()) return g2d::runShow(showOptions);
+    if (infer->parsed()) return g2d::runInfer(inferOptions);
     if (lsp->parsed()) {
         std::ios::sync_with_stdio(false);
         return g2d::lsp::runLanguageServer(std::cin, std::cout);

@@ -19,6 +19,7 @@ public:
         throw InputError{path_ + ": data[" + std::to_string(at) + "]: " + what};
     }
     std::size_t at() const { return i_; }
+    const std::string& path() const { return path_; }
     std::string where(std::size_t at) const { return "data[" + std::to_string(at) + "]"; }
     const json& next(const char* what) {
         if (i_ >= data_.size()) fail(i_, std::string("the array ends where ") + what + " should be");
@@ -95,6 +96,7 @@ std::string fieldString(const json& o, const char* key) {
 }
 
 struct Shape {
+    std::size_t verticesAt = 0;   // where the vertex list is in `data`
     std::vector<Point> vertices;
     std::vector<ExampleEdge> edges;
 };
@@ -175,6 +177,7 @@ std::vector<Point> readVertices(DataReader& r, int version) {
 
 Shape readShape(DataReader& r, int version, const ExampleShape& labels) {
     Shape s;
+    s.verticesAt = r.at();
     s.vertices = readVertices(r, version);
     r.string("a shape's control points");
     const std::size_t edgesAt = r.at();
@@ -240,14 +243,14 @@ void place(DataReader& r, int version, const std::vector<Shape>& shapes, double 
             if (found < 0) {
                 found = static_cast<int>(out.vertices.size());
                 out.vertices.push_back(p);
-                out.vertexWhere.push_back(r.where(at) + " (shape " + std::to_string(shape) + ", vertex " + std::to_string(v) + ")");
+                out.vertexWhere.push_back(r.where(s.verticesAt) + ", vertex " + std::to_string(v));
             }
             index.push_back(found);
         }
         for (ExampleEdge e : s.edges) {
             e.from = index[static_cast<std::size_t>(e.from)];
             e.to = index[static_cast<std::size_t>(e.to)];
-            if (e.from == e.to) r.fail(at, e.where + " is shorter than a pixel");
+            if (e.from == e.to) throw InputError{r.path() + ": " + e.where + " is shorter than a pixel"};
             const auto key = std::minmax(e.from, e.to);
             if (edgeOf.count(key)) continue;   // an instance drawn over another: its edges are there already
             edgeOf[key] = static_cast<int>(out.edges.size());
@@ -266,6 +269,7 @@ ExampleShape readExampleJson(const std::string& text, const std::string& path) {
         throw InputError{path + ": not valid JSON (at byte " + std::to_string(e.byte) + ")"};
     }
     ExampleShape out;
+    out.source = path;
     double unit = 40;   // the app's Major Grid Spacing: lengths and the canvas are in these cells
     const json* data = &doc;
     if (doc.is_object()) {

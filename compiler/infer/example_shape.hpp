@@ -29,11 +29,12 @@ struct ExampleEdge {
     int from = -1, to = -1;             // vertex indices
     int brush = 0;                      // index into ExampleShape::brushes
     int leftArea = -1, rightArea = -1;  // area label on each side of from -> to (y up); -1: none
-    std::string where;                  // where the input has it, for messages ("data[41]", "line 12")
+    std::string where;                  // where in the input, for messages ("data[41], edge 3", "line 12")
 };
 
 struct ExampleShape {
     std::string name;
+    std::string source;                     // the input's path, for messages
     std::vector<Point> vertices;
     std::vector<std::string> vertexWhere;   // per vertex, where the input has it
     std::vector<ExampleEdge> edges;

@@ -27,15 +27,17 @@ private:
     std::set<QueueKey> queue_;
     std::vector<int> active_;      // graphs that are Active and not edge graphs, in order
     std::vector<int> checkedRules_;   // per graph: rules it was tested against
+    std::vector<int> candidates_;     // edge graphs and graphs once active, in Algorithm 2's order
 
     HierarchyEntry& at(int g) { return out_.hierarchy[static_cast<std::size_t>(g)]; }
-    QueueKey key(int g) { return {at(g).graph.boundary.size(), at(g).graph.generation(), at(g).order}; }
+    QueueKey key(int g) { return {at(g).graph.boundary.size(), at(g).generation, at(g).order}; }
     bool simpler(int a, int b) { return key(a) < key(b); }
 
     int insert(HierarchyGraph graph);
     bool reducedByRules(int g);
     bool reduceByGroups(int g);
     void retryWith(int fresh);
+    void addCandidate(int g);
     void grow(int g);
     int addRule(int left, std::vector<RulePiece> right);
 };
@@ -94,15 +96,13 @@ bool Inference::reducedByRules(int g) {
 // a rule has as few pieces as it can), then the simplest.
 bool Inference::reduceByGroups(int g) {
     std::vector<int> index;
-    for (int e = 0; e < out_.edgeGraphs; ++e) index.push_back(e);
-    for (int a : active_)
-        if (a != g && simpler(a, g) && at(a).state == GraphState::Active) index.push_back(a);
-    std::stable_sort(index.begin(), index.end(), [&](int a, int b) {
-        return at(a).graph.boundary.size() != at(b).graph.boundary.size() ? at(a).graph.boundary.size() > at(b).graph.boundary.size()
-                                                                          : key(a) < key(b);
-    });
     std::vector<const HierarchyEntry*> candidates;
-    for (int i : index) candidates.push_back(&at(i));
+    for (int c : candidates_) {
+        const HierarchyEntry& R = at(c);
+        if (c == g || R.state != GraphState::Active || !simpler(c, g)) continue;
+        index.push_back(c);
+        candidates.push_back(&R);
+    }
     std::vector<GroupEntry> S;
     const auto& B = at(g).graph.boundary;
     for (std::size_t i = 0; i < B.size(); ++i) S.push_back({B[i].half, B[i].wind, static_cast<int>(i)});
@@ -112,6 +112,14 @@ bool Inference::reduceByGroups(int g) {
     return true;
 }
 
+// Candidates for Algorithm 2 stay sorted: the largest boundary first, then the simplest.
+void Inference::addCandidate(int g) {
+    const auto before = [&](int a, int b) {
+        return at(a).halves.size() != at(b).halves.size() ? at(a).halves.size() > at(b).halves.size() : key(a) < key(b);
+    };
+    candidates_.insert(std::upper_bound(candidates_.begin(), candidates_.end(), g, before), g);
+}
+
 int Inference::insert(HierarchyGraph graph) {
     std::string code = canonicalCode(graph);
     if (const auto it = byCode_.find(code); it != byCode_.end()) return it->second;
@@ -119,10 +127,19 @@ int Inference::insert(HierarchyGraph graph) {
     HierarchyEntry entry;
     entry.graph = std::move(graph);
     entry.order = g;
+    entry.generation = entry.graph.generation();
+    for (const BoundaryEntry& e : entry.graph.boundary) {
+        entry.halves.push_back(e.half);
+        entry.halfMask |= std::uint64_t{1} << (e.half % 64);
+    }
+    std::sort(entry.halves.begin(), entry.halves.end());
     out_.hierarchy.push_back(std::move(entry));
     checkedRules_.push_back(0);
     byCode_.emplace(std::move(code), g);
-    if (at(g).graph.isEdgeGraph()) return g;
+    if (at(g).graph.isEdgeGraph()) {
+        addCandidate(g);
+        return g;
+    }
     if (reducedByRules(g)) return g;
     if (at(g).graph.complete()) {   // §5.3.1: a starter rule, ∅ <-> the graph
         addRule(g, {});
@@ -134,6 +151,7 @@ int Inference::insert(HierarchyGraph graph) {
         return g;
     }
     active_.push_back(g);
+    addCandidate(g);
     queue_.insert(key(g));
     retryWith(g);
     return g;
@@ -143,16 +161,13 @@ int Inference::insert(HierarchyGraph graph) {
 // another graph" — every active graph with more half-edges, and at least
 // the new graph's half-edges, is matched again.
 void Inference::retryWith(int fresh) {
-    std::vector<int> halves;
-    for (const BoundaryEntry& e : at(fresh).graph.boundary) halves.push_back(e.half);
-    std::sort(halves.begin(), halves.end());
+    const HierarchyEntry& f = at(fresh);
     const std::vector<int> snapshot = active_;
     for (int x : snapshot) {
-        if (x == fresh || at(x).state != GraphState::Active || at(x).graph.boundary.size() <= halves.size()) continue;
-        std::vector<int> have;
-        for (const BoundaryEntry& e : at(x).graph.boundary) have.push_back(e.half);
-        std::sort(have.begin(), have.end());
-        if (!std::includes(have.begin(), have.end(), halves.begin(), halves.end())) continue;
+        const HierarchyEntry& X = at(x);
+        if (x == fresh || X.state != GraphState::Active || X.halves.size() <= f.halves.size()) continue;
+        if ((f.halfMask & ~X.halfMask) != 0 || !std::includes(X.halves.begin(), X.halves.end(), f.halves.begin(), f.halves.end()))
+            continue;
         if (reduceByGroups(x)) queue_.erase(key(x));
     }
     std::erase_if(active_, [&](int a) { return at(a).state != GraphState::Active; });
@@ -185,7 +200,7 @@ InferredGrammar Inference::run() {
         queue_.erase(queue_.begin());
         if (at(g).state != GraphState::Active) continue;
         if (reducedByRules(g)) continue;
-        if (at(g).graph.generation() >= options_.maxGeneration ||
+        if (at(g).generation >= options_.maxGeneration ||
             static_cast<int>(at(g).graph.boundary.size()) > options_.maxHalfEdges ||
             static_cast<int>(out_.hierarchy.size()) >= options_.maxGraphs) {
             at(g).state = GraphState::LeftOver;

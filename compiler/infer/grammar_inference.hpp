@@ -4,6 +4,7 @@
 // can simplify is reduced and not grown further; a complete graph no rule
 // reduces gets a starter rule (§5.3.1). Algorithm 2 (matching_groups.hpp)
 // finds a rule's right side by matching boundary strings.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace g2d::infer {
 struct InferOptions {
     int maxGeneration = 20;      // §5.7: graphs of more glues are left over (the author's app: 20)
     int maxHalfEdges = 16;       // §5.7: graphs with more open half-edges are left over
-    int maxGraphs = 20000;       // the hierarchy stops growing here; what is queued is left over
+    int maxGraphs = 3000;        // the hierarchy stops growing here; what is queued is left over
 };
 
 enum class GraphState {
@@ -41,6 +42,9 @@ struct HierarchyEntry {
     GraphState state = GraphState::Active;
     int order = 0;                   // insertion order: among equals, earlier is simpler
     int reducedBy = -1;              // the rule it is the left side of, or contains
+    int generation = 0;              // graph.generation(), kept
+    std::vector<int> halves;         // its boundary's half-edge labels, sorted (a multiset)
+    std::uint64_t halfMask = 0;      // bit (half % 64) for each: a quick subset test
 };
 
 struct InferredGrammar {

@@ -30,7 +30,8 @@ double lineDistance(double a, double b) {   // between two line directions, [0, 
 
 std::string at(const ExampleShape& s, int v) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "(%g, %g)", s.vertices[static_cast<std::size_t>(v)].x, s.vertices[static_cast<std::size_t>(v)].y);
+    // + 0.0: no "-0".
+    std::snprintf(buf, sizeof buf, "(%g, %g)", s.vertices[static_cast<std::size_t>(v)].x + 0.0, s.vertices[static_cast<std::size_t>(v)].y + 0.0);
     return buf;
 }
 
@@ -48,7 +49,7 @@ void checkPlane(const ExampleShape& s) {
             const Point p = V[v];
             const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (len * len);
             if (t > 0 && t < 1 && std::fabs(cross(a, b, p)) / len < 1e-9 * std::max(1.0, len))
-                throw InputError{e.where + ": the edge passes through the vertex at " + at(s, static_cast<int>(v))};
+                throw InputError{s.source + ": " + e.where + ": the edge passes through the vertex at " + at(s, static_cast<int>(v))};
         }
         for (std::size_t j = i + 1; j < s.edges.size(); ++j) {
             const ExampleEdge& f = s.edges[j];
@@ -56,7 +57,7 @@ void checkPlane(const ExampleShape& s) {
             const Point c = V[static_cast<std::size_t>(f.from)], d = V[static_cast<std::size_t>(f.to)];
             const double d1 = cross(a, b, c), d2 = cross(a, b, d), d3 = cross(c, d, a), d4 = cross(c, d, b);
             if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-                throw InputError{e.where + ": the edge crosses " + f.where + "; an example must be a plane drawing"};
+                throw InputError{s.source + ": " + e.where + ": the edge crosses " + f.where + "; an example must be a plane drawing"};
         }
     }
 }
@@ -111,7 +112,8 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
     }
     for (std::size_t v = 0; v < V.size(); ++v)
         if (degree[v] == 0)
-            throw InputError{shape.vertexWhere.empty() ? "a vertex has no edges" : shape.vertexWhere[v] + ": the vertex at " + at(shape, static_cast<int>(v)) + " has no edges"};
+            throw InputError{shape.source + ": " + (v < shape.vertexWhere.size() ? shape.vertexWhere[v] + ": " : std::string()) +
+                             "the vertex at " + at(shape, static_cast<int>(v)) + " has no edges"};
     checkPlane(shape);
 
     std::vector<double> oriented, line;   // per edge: from -> to direction, and as a line
@@ -187,7 +189,7 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
         for (std::size_t k = 0; k < halves.size(); ++k) {
             const int h = halves[k], g = halves[(k + 1) % halves.size()];
             if (halves.size() > 1 && out.direction(h) == out.direction(g))
-                throw InputError{"the vertex at " + at(shape, static_cast<int>(v)) + " has two edges in one direction (" +
+                throw InputError{shape.source + ": the vertex at " + at(shape, static_cast<int>(v)) + " has two edges in one direction (" +
                                  std::to_string(out.direction(h)) + "°)" +
                                  (out.snappedEdges > 0 ? "; a smaller --angle-tolerance may keep them apart" : "")};
         }

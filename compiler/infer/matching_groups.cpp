@@ -20,14 +20,20 @@ int windAt(const std::vector<GroupEntry>& S, int t) {
     return S[static_cast<std::size_t>(t % s)].wind + t / s;
 }
 
-bool containsHalves(const std::vector<GroupEntry>& S, const std::vector<BoundaryEntry>& R) {
-    std::vector<int> have, need;
-    for (const GroupEntry& e : S) have.push_back(e.half);
-    for (const BoundaryEntry& e : R) need.push_back(e.half);
-    std::sort(have.begin(), have.end());
-    std::sort(need.begin(), need.end());
-    return std::includes(have.begin(), have.end(), need.begin(), need.end());
-}
+struct HalfSet {
+    std::vector<int> halves;   // sorted
+    std::uint64_t mask = 0;
+    explicit HalfSet(const std::vector<GroupEntry>& S) {
+        for (const GroupEntry& e : S) {
+            halves.push_back(e.half);
+            mask |= std::uint64_t{1} << (e.half % 64);
+        }
+        std::sort(halves.begin(), halves.end());
+    }
+    bool contains(const HierarchyEntry& R) const {
+        return (R.halfMask & ~mask) == 0 && std::includes(halves.begin(), halves.end(), R.halves.begin(), R.halves.end());
+    }
+};
 
 bool Search::embed(const std::vector<GroupEntry>& S, const HierarchyEntry& R, int index) {
     const auto& RB = R.graph.boundary;
@@ -96,10 +102,11 @@ bool Search::embed(const std::vector<GroupEntry>& S, const HierarchyEntry& R, in
 }
 
 bool Search::groups(const std::vector<GroupEntry>& S) {
+    const HalfSet have(S);
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const HierarchyEntry& R = *candidates[c];
         if (R.graph.boundary.empty() || R.graph.boundary.size() > S.size()) continue;
-        if (!containsHalves(S, R.graph.boundary)) continue;
+        if (!have.contains(R)) continue;
         if (embed(S, R, candidateIndex[c])) return true;
     }
     return false;

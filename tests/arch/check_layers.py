@@ -26,7 +26,8 @@ ALLOWED = {
     "emit": {"diag", "ir", "lower", "g2d"},
     "lsp": {"ast", "diag", "front", "sema", "g2d", "antlr"},   # the lexer's keyword list
     "show": {"diag", "ir", "sema", "g2d"},
-    "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "g2d"},
+    "infer": set(),
+    "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "infer", "g2d"},
 }
 INTERNAL = set(os.listdir(os.path.join(root, "runtime", "internal", "g2d")))
 include = re.compile(r'^\s*#include "([^"]+)"', re.M)

@@ -1,0 +1,37 @@
+#include "driver/infer_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "infer/example_json.hpp"
+#include "infer/grammar_report.hpp"
+
+namespace g2d {
+
+int runInfer(const InferCommandOptions& options) {
+    std::ifstream in(options.example, std::ios::binary);
+    if (!in) {
+        std::fprintf(stderr, "g2d infer: error: cannot read %s\n", options.example.c_str());
+        return 1;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        const infer::LabelledExample ex =
+            infer::labelExample(infer::readExampleJson(text.str(), options.example), options.labels);
+        const infer::InferredGrammar grammar = infer::inferGrammar(ex, options.limits);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const std::string out = options.stats ? infer::inferenceStatsJson(infer::countInference(ex, grammar), ms)
+                                              : infer::describeGrammar(ex, grammar);
+        std::fwrite(out.data(), 1, out.size(), stdout);
+    } catch (const infer::InputError& e) {
+        std::fprintf(stderr, "g2d infer: error: %s\n", e.message.c_str());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace g2d

@@ -1,0 +1,342 @@
+// Parses the SVG attribute syntaxes the example reader needs (svg_syntax.hpp).
+#include "infer/svg_syntax.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+namespace g2d::infer::svg {
+namespace {
+
+bool isWsp(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isAlpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+// What is left of the text at `i`, short, for messages.
+std::string excerpt(std::string_view s, std::size_t i) {
+    if (i >= s.size()) return "the end";
+    const std::string_view rest = s.substr(i);
+    return "\"" + std::string(rest.substr(0, 16)) + (rest.size() > 16 ? "...\"" : "\"");
+}
+
+void skipWsp(std::string_view s, std::size_t& i) {
+    while (i < s.size() && isWsp(s[i])) ++i;
+}
+void skipCommaWsp(std::string_view s, std::size_t& i) {
+    skipWsp(s, i);
+    if (i < s.size() && s[i] == ',') ++i;
+    skipWsp(s, i);
+}
+
+// SVG's number grammar, which lets numbers run together ("1-2", ".5.5"), so
+// the extent is found by hand; from_chars then converts without the locale.
+std::optional<double> scanNumber(std::string_view s, std::size_t& i) {
+    std::size_t j = i;
+    if (j < s.size() && (s[j] == '+' || s[j] == '-')) ++j;
+    const std::size_t mantissa = j;
+    bool digits = false;
+    while (j < s.size() && isDigit(s[j])) ++j, digits = true;
+    if (j < s.size() && s[j] == '.') {
+        ++j;
+        while (j < s.size() && isDigit(s[j])) ++j, digits = true;
+    }
+    if (!digits) return std::nullopt;
+    if (j < s.size() && (s[j] == 'e' || s[j] == 'E')) {
+        std::size_t k = j + 1;
+        if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+        const std::size_t exponent = k;
+        while (k < s.size() && isDigit(s[k])) ++k;
+        if (k > exponent) j = k;   // "1em": the number ends before the unit
+    }
+    double v = 0;
+    const char* first = s.data() + mantissa;
+    const char* last = s.data() + j;
+    const auto [end, ec] = std::from_chars(first, last, v);
+    if (ec != std::errc() || end != last || !std::isfinite(v)) return std::nullopt;
+    if (s[i] == '-') v = -v;
+    i = j;
+    return v;
+}
+
+double needNumber(std::string_view s, std::size_t& i) {
+    if (const auto v = scanNumber(s, i)) return *v;
+    throw SyntaxError{"expected a number at " + excerpt(s, i)};
+}
+
+// Exact for multiples of 90 degrees, so that drawings turned by right angles
+// keep exact coordinates (vertex merging and the tests compare them).
+void cosSin(double degrees, double& c, double& s) {
+    const double r = std::fmod(std::fmod(degrees, 360.0) + 360.0, 360.0);
+    constexpr std::array<std::array<double, 2>, 4> right{{{1, 0}, {0, 1}, {-1, 0}, {0, -1}}};
+    for (int k = 0; k < 4; ++k)
+        if (r == 90.0 * k) {
+            c = right[k][0], s = right[k][1];
+            return;
+        }
+    const double rad = degrees * std::numbers::pi / 180;
+    c = std::cos(rad), s = std::sin(rad);
+}
+
+double tangent(const std::string& name, double degrees) {
+    const double r = std::fmod(std::fmod(degrees, 180.0) + 180.0, 180.0);
+    if (r == 0) return 0;
+    if (r == 45) return 1;
+    if (r == 135) return -1;
+    if (r == 90) throw SyntaxError{name + "(" + std::to_string(static_cast<int>(degrees)) + ") has no finite matrix"};
+    return std::tan(degrees * std::numbers::pi / 180);
+}
+
+Matrix transformFunction(const std::string& name, const std::vector<double>& v) {
+    const std::size_t n = v.size();
+    auto takes = [&](std::size_t a, std::size_t b, const char* what) {
+        if (n != a && n != b) throw SyntaxError{name + " takes " + what + " numbers, not " + std::to_string(n)};
+    };
+    if (name == "matrix") {
+        takes(6, 6, "6");
+        return {v[0], v[1], v[2], v[3], v[4], v[5]};
+    }
+    if (name == "translate") {
+        takes(1, 2, "1 or 2");
+        return {1, 0, 0, 1, v[0], n == 2 ? v[1] : 0};
+    }
+    if (name == "scale") {
+        takes(1, 2, "1 or 2");
+        return {v[0], 0, 0, n == 2 ? v[1] : v[0], 0, 0};
+    }
+    if (name == "rotate") {
+        takes(1, 3, "1 or 3");
+        double c = 1, s = 0;
+        cosSin(v[0], c, s);
+        const Matrix turn{c, s, -s, c, 0, 0};
+        if (n == 1) return turn;
+        return Matrix{1, 0, 0, 1, v[1], v[2]} * turn * Matrix{1, 0, 0, 1, -v[1], -v[2]};
+    }
+    if (name == "skewX") {
+        takes(1, 1, "1");
+        return {1, 0, tangent(name, v[0]), 1, 0, 0};
+    }
+    if (name == "skewY") {
+        takes(1, 1, "1");
+        return {1, tangent(name, v[0]), 0, 1, 0, 0};
+    }
+    throw SyntaxError{"\"" + name + "\" is not a transform"};
+}
+
+// The CSS named colours (the 147 of SVG 1.1 and rebeccapurple), sorted.
+struct NamedColor {
+    std::string_view name, hex;
+};
+constexpr NamedColor kNamedColors[] = {
+    {"aliceblue", "f0f8ff"}, {"antiquewhite", "faebd7"}, {"aqua", "00ffff"}, {"aquamarine", "7fffd4"},
+    {"azure", "f0ffff"}, {"beige", "f5f5dc"}, {"bisque", "ffe4c4"}, {"black", "000000"},
+    {"blanchedalmond", "ffebcd"}, {"blue", "0000ff"}, {"blueviolet", "8a2be2"}, {"brown", "a52a2a"},
+    {"burlywood", "deb887"}, {"cadetblue", "5f9ea0"}, {"chartreuse", "7fff00"}, {"chocolate", "d2691e"},
+    {"coral", "ff7f50"}, {"cornflowerblue", "6495ed"}, {"cornsilk", "fff8dc"}, {"crimson", "dc143c"},
+    {"cyan", "00ffff"}, {"darkblue", "00008b"}, {"darkcyan", "008b8b"}, {"darkgoldenrod", "b8860b"},
+    {"darkgray", "a9a9a9"}, {"darkgreen", "006400"}, {"darkgrey", "a9a9a9"}, {"darkkhaki", "bdb76b"},
+    {"darkmagenta", "8b008b"}, {"darkolivegreen", "556b2f"}, {"darkorange", "ff8c00"}, {"darkorchid", "9932cc"},
+    {"darkred", "8b0000"}, {"darksalmon", "e9967a"}, {"darkseagreen", "8fbc8f"}, {"darkslateblue", "483d8b"},
+    {"darkslategray", "2f4f4f"}, {"darkslategrey", "2f4f4f"}, {"darkturquoise", "00ced1"}, {"darkviolet", "9400d3"},
+    {"deeppink", "ff1493"}, {"deepskyblue", "00bfff"}, {"dimgray", "696969"}, {"dimgrey", "696969"},
+    {"dodgerblue", "1e90ff"}, {"firebrick", "b22222"}, {"floralwhite", "fffaf0"}, {"forestgreen", "228b22"},
+    {"fuchsia", "ff00ff"}, {"gainsboro", "dcdcdc"}, {"ghostwhite", "f8f8ff"}, {"gold", "ffd700"},
+    {"goldenrod", "daa520"}, {"gray", "808080"}, {"green", "008000"}, {"greenyellow", "adff2f"},
+    {"grey", "808080"}, {"honeydew", "f0fff0"}, {"hotpink", "ff69b4"}, {"indianred", "cd5c5c"},
+    {"indigo", "4b0082"}, {"ivory", "fffff0"}, {"khaki", "f0e68c"}, {"lavender", "e6e6fa"},
+    {"lavenderblush", "fff0f5"}, {"lawngreen", "7cfc00"}, {"lemonchiffon", "fffacd"}, {"lightblue", "add8e6"},
+    {"lightcoral", "f08080"}, {"lightcyan", "e0ffff"}, {"lightgoldenrodyellow", "fafad2"}, {"lightgray", "d3d3d3"},
+    {"lightgreen", "90ee90"}, {"lightgrey", "d3d3d3"}, {"lightpink", "ffb6c1"}, {"lightsalmon", "ffa07a"},
+    {"lightseagreen", "20b2aa"}, {"lightskyblue", "87cefa"}, {"lightslategray", "778899"}, {"lightslategrey", "778899"},
+    {"lightsteelblue", "b0c4de"}, {"lightyellow", "ffffe0"}, {"lime", "00ff00"}, {"limegreen", "32cd32"},
+    {"linen", "faf0e6"}, {"magenta", "ff00ff"}, {"maroon", "800000"}, {"mediumaquamarine", "66cdaa"},
+    {"mediumblue", "0000cd"}, {"mediumorchid", "ba55d3"}, {"mediumpurple", "9370db"}, {"mediumseagreen", "3cb371"},
+    {"mediumslateblue", "7b68ee"}, {"mediumspringgreen", "00fa9a"}, {"mediumturquoise", "48d1cc"},
+    {"mediumvioletred", "c71585"}, {"midnightblue", "191970"}, {"mintcream", "f5fffa"}, {"mistyrose", "ffe4e1"},
+    {"moccasin", "ffe4b5"}, {"navajowhite", "ffdead"}, {"navy", "000080"}, {"oldlace", "fdf5e6"},
+    {"olive", "808000"}, {"olivedrab", "6b8e23"}, {"orange", "ffa500"}, {"orangered", "ff4500"},
+    {"orchid", "da70d6"}, {"palegoldenrod", "eee8aa"}, {"palegreen", "98fb98"}, {"paleturquoise", "afeeee"},
+    {"palevioletred", "db7093"}, {"papayawhip", "ffefd5"}, {"peachpuff", "ffdab9"}, {"peru", "cd853f"},
+    {"pink", "ffc0cb"}, {"plum", "dda0dd"}, {"powderblue", "b0e0e6"}, {"purple", "800080"},
+    {"rebeccapurple", "663399"}, {"red", "ff0000"}, {"rosybrown", "bc8f8f"}, {"royalblue", "4169e1"},
+    {"saddlebrown", "8b4513"}, {"salmon", "fa8072"}, {"sandybrown", "f4a460"}, {"seagreen", "2e8b57"},
+    {"seashell", "fff5ee"}, {"sienna", "a0522d"}, {"silver", "c0c0c0"}, {"skyblue", "87ceeb"},
+    {"slateblue", "6a5acd"}, {"slategray", "708090"}, {"slategrey", "708090"}, {"snow", "fffafa"},
+    {"springgreen", "00ff7f"}, {"steelblue", "4682b4"}, {"tan", "d2b48c"}, {"teal", "008080"},
+    {"thistle", "d8bfd8"}, {"tomato", "ff6347"}, {"turquoise", "40e0d0"}, {"violet", "ee82ee"},
+    {"wheat", "f5deb3"}, {"white", "ffffff"}, {"whitesmoke", "f5f5f5"}, {"yellow", "ffff00"},
+    {"yellowgreen", "9acd32"},
+};
+
+std::optional<std::string> rgbFunction(std::string_view inner) {
+    std::string hex = "#";
+    std::size_t i = 0;
+    skipWsp(inner, i);
+    for (int k = 0; k < 3; ++k) {
+        if (k > 0) skipCommaWsp(inner, i);
+        const auto v = scanNumber(inner, i);
+        if (!v) return std::nullopt;
+        double byte = *v;
+        if (i < inner.size() && inner[i] == '%') ++i, byte = byte * 255 / 100;
+        const int b = static_cast<int>(std::lround(std::clamp(byte, 0.0, 255.0)));   // CSS clamps
+        constexpr char digits[] = "0123456789abcdef";
+        hex += digits[b / 16];
+        hex += digits[b % 16];
+    }
+    skipWsp(inner, i);
+    if (i != inner.size()) return std::nullopt;
+    return hex;
+}
+
+}  // namespace
+
+Matrix operator*(const Matrix& m, const Matrix& n) {
+    return {m.a * n.a + m.c * n.b, m.b * n.a + m.d * n.b,
+            m.a * n.c + m.c * n.d, m.b * n.c + m.d * n.d,
+            m.a * n.e + m.c * n.f + m.e, m.b * n.e + m.d * n.f + m.f};
+}
+
+std::string_view trim(std::string_view text) {
+    while (!text.empty() && isWsp(text.front())) text.remove_prefix(1);
+    while (!text.empty() && isWsp(text.back())) text.remove_suffix(1);
+    return text;
+}
+
+std::optional<double> parseLength(std::string_view text) {
+    const std::string_view t = trim(text);
+    std::size_t i = 0;
+    const auto v = scanNumber(t, i);
+    if (!v) return std::nullopt;
+    const std::string_view unit = t.substr(i);
+    if (!unit.empty() && unit != "px") return std::nullopt;
+    return v;
+}
+
+std::vector<double> parseNumberList(std::string_view text) {
+    std::vector<double> out;
+    std::size_t i = 0;
+    skipWsp(text, i);
+    while (i < text.size()) {
+        out.push_back(needNumber(text, i));
+        skipCommaWsp(text, i);
+    }
+    return out;
+}
+
+Matrix parseTransform(std::string_view text) {
+    Matrix m;
+    std::size_t i = 0;
+    skipWsp(text, i);
+    while (i < text.size()) {
+        const std::size_t start = i;
+        while (i < text.size() && isAlpha(text[i])) ++i;
+        if (i == start) throw SyntaxError{"expected a transform at " + excerpt(text, start)};
+        const std::string name(text.substr(start, i - start));
+        skipWsp(text, i);
+        if (i >= text.size() || text[i] != '(') throw SyntaxError{"expected \"(\" after " + name};
+        ++i;
+        skipWsp(text, i);
+        std::vector<double> args;
+        while (i < text.size() && text[i] != ')') {
+            args.push_back(needNumber(text, i));
+            skipCommaWsp(text, i);
+        }
+        if (i >= text.size()) throw SyntaxError{"missing \")\" after " + name};
+        ++i;
+        m = m * transformFunction(name, args);
+        skipCommaWsp(text, i);
+    }
+    return m;
+}
+
+std::vector<Subpath> parsePathData(std::string_view s) {
+    std::vector<Subpath> out;
+    Subpath cur;
+    UserPoint pos, start;
+    char cmd = 0;
+    auto flush = [&] {
+        if (cur.points.size() > 1 || cur.closed) out.push_back(cur);
+        cur = {};
+    };
+    std::size_t i = 0;
+    skipWsp(s, i);
+    while (i < s.size()) {
+        const char c = s[i];
+        if (isAlpha(c)) {
+            ++i;
+            switch (c) {
+            case 'M': case 'm': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v': case 'Z': case 'z':
+                if (cmd == 0 && c != 'M' && c != 'm') throw SyntaxError{"path data must start with M or m"};
+                cmd = c;
+                break;
+            case 'C': case 'c': case 'S': case 's': case 'Q': case 'q': case 'T': case 't': case 'A': case 'a':
+                throw SyntaxError{std::string("the command '") + c +
+                                  "' draws a curve: only straight segments (M, L, H, V, Z) are supported"};
+            default:
+                throw SyntaxError{std::string("'") + c + "' is not a path command"};
+            }
+            if (lower(cmd) == 'z') {
+                if (!cur.points.empty()) cur.closed = true;
+                flush();
+                pos = start;
+                skipWsp(s, i);
+                continue;
+            }
+            skipWsp(s, i);
+        } else if (cmd == 0) {
+            throw SyntaxError{"path data must start with M or m"};
+        } else if (lower(cmd) == 'z') {
+            throw SyntaxError{"expected a command at " + excerpt(s, i)};
+        }
+        const bool relative = cmd >= 'a';
+        const char op = lower(cmd);
+        UserPoint next = pos;
+        if (op == 'm' || op == 'l') {
+            const double x = needNumber(s, i);
+            skipCommaWsp(s, i);
+            const double y = needNumber(s, i);
+            next = relative ? UserPoint{pos.x + x, pos.y + y} : UserPoint{x, y};
+        } else if (op == 'h') {
+            const double x = needNumber(s, i);
+            next.x = relative ? pos.x + x : x;
+        } else {
+            const double y = needNumber(s, i);
+            next.y = relative ? pos.y + y : y;
+        }
+        if (op == 'm') {
+            flush();
+            start = next;
+            cmd = relative ? 'l' : 'L';   // further pairs are linetos
+        } else if (cur.points.empty()) {
+            cur.points.push_back(pos);     // a subpath after Z starts where the last one did
+        }
+        cur.points.push_back(next);
+        pos = next;
+        skipCommaWsp(s, i);
+    }
+    flush();
+    return out;
+}
+
+std::optional<std::string> parseColor(std::string_view text) {
+    std::string t(trim(text));
+    std::transform(t.begin(), t.end(), t.begin(), lower);
+    if (!t.empty() && t[0] == '#') {
+        const std::string digits = t.substr(1);
+        if (!std::all_of(digits.begin(), digits.end(), [](char c) { return isDigit(c) || (c >= 'a' && c <= 'f'); }))
+            return std::nullopt;
+        if (digits.size() == 6) return t;
+        if (digits.size() == 3) return std::string{'#', digits[0], digits[0], digits[1], digits[1], digits[2], digits[2]};
+        return std::nullopt;
+    }
+    if (t.size() > 5 && t.compare(0, 4, "rgb(") == 0 && t.back() == ')')
+        return rgbFunction(std::string_view(t).substr(4, t.size() - 5));
+    const auto it = std::lower_bound(std::begin(kNamedColors), std::end(kNamedColors), t,
+                                     [](const NamedColor& c, const std::string& name) { return c.name < name; });
+    if (it != std::end(kNamedColors) && it->name == t) return "#" + std::string(it->hex);
+    return std::nullopt;
+}
+
+}  // namespace g2d::infer::svg

@@ -1,0 +1,230 @@
+// The drawing step's planarity test (drawingIsPlanar, angle_drawing.hpp):
+// which edges cross, overlap or pass too close to a vertex. A few tested
+// edges are compared with every edge by one linear scan behind a bounding
+// box; many (a whole drawing) go through a uniform grid built for the call.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "g2d/angle_drawing.hpp"
+
+namespace g2d::rt {
+
+namespace {
+
+// An item is an edge (a != b) or an isolated vertex (a == b): only a vertex
+// without edges needs its own tests, every other one is an end of an edge and
+// the edge pair tests measure ends against segments.
+struct Item {
+    int a, b;
+};
+
+struct Box {
+    double lox, loy, hix, hiy;
+};
+
+bool overlaps(const Box& p, const Box& q) {
+    return p.lox <= q.hix && q.lox <= p.hix && p.loy <= q.hiy && q.loy <= p.hiy;
+}
+
+Box boxOf(vec2 p, vec2 q, double margin) {
+    return {std::min(p.x, q.x) - margin, std::min(p.y, q.y) - margin, std::max(p.x, q.x) + margin,
+            std::max(p.y, q.y) + margin};
+}
+
+double orient(vec2 a, vec2 b, vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+
+// c, collinear with a and b: does it lie on the closed segment?
+bool within(vec2 a, vec2 b, vec2 c) {
+    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+           c.y <= std::max(a.y, b.y);
+}
+
+// Closed segments: touching, or collinear and overlapping, counts.
+bool segmentsMeet(vec2 a, vec2 b, vec2 c, vec2 d) {
+    const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+    return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) || (d3 == 0 && within(a, b, c)) ||
+           (d4 == 0 && within(a, b, d));
+}
+
+double distance2(vec2 p, vec2 a, vec2 b) {
+    const vec2 ab = b - a, ap = p - a;
+    const double len2 = ab.x * ab.x + ab.y * ab.y;
+    const double t = len2 > 0 ? std::clamp((ap.x * ab.x + ap.y * ab.y) / len2, 0.0, 1.0) : 0.0;
+    const vec2 r = ap - t * ab;
+    return r.x * r.x + r.y * r.y;
+}
+
+class Checker {
+public:
+    Checker(const std::vector<vec2>& position, const std::vector<Item>& items, double separation)
+        : p_(position), items_(items), sep_(separation), sep2_(separation * separation) {}
+
+    // Does the pair conflict? Items are distinct.
+    bool conflict(const Item& e, const Item& f) const {
+        if (e.a == e.b || f.a == f.b) {
+            if (e.a == e.b && f.a == f.b) return near2(p_[e.a], p_[f.a]);
+            const Item& pt = e.a == e.b ? e : f;
+            const Item& seg = e.a == e.b ? f : e;
+            return distance2(p_[pt.a], p_[seg.a], p_[seg.b]) <= sep2_;
+        }
+        const int shared = (e.a == f.a) + (e.a == f.b) + (e.b == f.a) + (e.b == f.b);
+        if (shared >= 2) return true;   // the same two ends: the segments coincide
+        if (shared == 1) {
+            const int v = (e.a == f.a || e.a == f.b) ? e.a : e.b;
+            const int x = e.a == v ? e.b : e.a, y = f.a == v ? f.b : f.a;
+            if (distance2(p_[x], p_[f.a], p_[f.b]) <= sep2_ || distance2(p_[y], p_[e.a], p_[e.b]) <= sep2_)
+                return true;
+            // Same direction from the shared end: they overlap however small the separation.
+            const vec2 dx = p_[x] - p_[v], dy = p_[y] - p_[v];
+            const double c = dx.x * dy.y - dx.y * dy.x, d = dx.x * dy.x + dx.y * dy.y;
+            return d > 0 && std::abs(c) <= 1e-12 * std::sqrt((dx.x * dx.x + dx.y * dx.y) * (dy.x * dy.x + dy.y * dy.y));
+        }
+        const vec2 a = p_[e.a], b = p_[e.b], c = p_[f.a], d = p_[f.b];
+        return segmentsMeet(a, b, c, d) || distance2(a, c, d) <= sep2_ || distance2(b, c, d) <= sep2_ ||
+               distance2(c, a, b) <= sep2_ || distance2(d, a, b) <= sep2_;
+    }
+    // An edge not longer than the separation is a degenerate drawing.
+    bool tooShort(const Item& e) const { return e.a != e.b && near2(p_[e.a], p_[e.b]); }
+
+    Box box(int i, double margin) const { return boxOf(p_[items_[i].a], p_[items_[i].b], margin); }
+    double separation() const { return sep_; }
+
+private:
+    bool near2(vec2 p, vec2 q) const { return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) <= sep2_; }
+    const std::vector<vec2>& p_;
+    const std::vector<Item>& items_;
+    double sep_, sep2_;
+};
+
+// Each pair is tested once, from its tested item of lower index.
+bool pairWanted(int t, int j, const std::vector<char>& tested) { return j != t && (!tested[j] || j > t); }
+
+bool planarByScan(const Checker& ck, const std::vector<Item>& items, const std::vector<int>& tests,
+                  const std::vector<char>& tested) {
+    std::vector<Box> boxes;
+    Box all{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (int t : tests) {
+        boxes.push_back(ck.box(t, ck.separation()));
+        all = {std::min(all.lox, boxes.back().lox), std::min(all.loy, boxes.back().loy),
+               std::max(all.hix, boxes.back().hix), std::max(all.hiy, boxes.back().hiy)};
+    }
+    for (int j = 0; j < static_cast<int>(items.size()); ++j) {
+        const Box bj = ck.box(j, 0);
+        if (!overlaps(all, bj)) continue;
+        for (std::size_t k = 0; k < tests.size(); ++k)
+            if (pairWanted(tests[k], j, tested) && overlaps(boxes[k], bj) && ck.conflict(items[tests[k]], items[j]))
+                return false;
+    }
+    return true;
+}
+
+bool planarByGrid(const Checker& ck, const std::vector<Item>& items, const std::vector<int>& tests,
+                  const std::vector<char>& tested) {
+    const int n = static_cast<int>(items.size());
+    std::vector<Box> boxes(items.size());
+    Box all{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (int i = 0; i < n; ++i) {
+        boxes[i] = ck.box(i, 0);
+        all = {std::min(all.lox, boxes[i].lox), std::min(all.loy, boxes[i].loy), std::max(all.hix, boxes[i].hix),
+               std::max(all.hiy, boxes[i].hiy)};
+    }
+    // About one cell per item; an item over more than kBig cells (a long
+    // diagonal edge) is kept aside and compared with everything instead.
+    constexpr long kBig = 64;
+    const double span = std::max(all.hix - all.lox, all.hiy - all.loy);
+    const double side = std::ceil(std::sqrt(static_cast<double>(n)));
+    double cell = span / side;
+    if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
+    const long nx = static_cast<long>(std::min((all.hix - all.lox) / cell, side)) + 1;
+    const long ny = static_cast<long>(std::min((all.hiy - all.loy) / cell, side)) + 1;
+    auto cx = [&](double x) {
+        return static_cast<long>(std::clamp(std::floor((x - all.lox) / cell), 0.0, double(nx - 1)));
+    };
+    auto cy = [&](double y) {
+        return static_cast<long>(std::clamp(std::floor((y - all.loy) / cell), 0.0, double(ny - 1)));
+    };
+    auto cellCount = [&](const Box& b) { return (cx(b.hix) - cx(b.lox) + 1) * (cy(b.hiy) - cy(b.loy) + 1); };
+
+    // Counting sort of items into cells (compressed rows).
+    std::vector<int> start(static_cast<std::size_t>(nx * ny + 1), 0), big;
+    std::vector<char> isBig(items.size(), 0);
+    for (int i = 0; i < n; ++i) {
+        if (cellCount(boxes[i]) > kBig) {
+            isBig[i] = 1;
+            big.push_back(i);
+            continue;
+        }
+        for (long y = cy(boxes[i].loy); y <= cy(boxes[i].hiy); ++y)
+            for (long x = cx(boxes[i].lox); x <= cx(boxes[i].hix); ++x) ++start[y * nx + x + 1];
+    }
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    std::vector<int> fill(start.begin(), start.end() - 1), slot(static_cast<std::size_t>(start.back()));
+    for (int i = 0; i < n; ++i) {
+        if (isBig[i]) continue;
+        for (long y = cy(boxes[i].loy); y <= cy(boxes[i].hiy); ++y)
+            for (long x = cx(boxes[i].lox); x <= cx(boxes[i].hix); ++x) slot[fill[y * nx + x]++] = i;
+    }
+
+    std::vector<int> seen(items.size(), -1);
+    for (int t : tests) {
+        const Box q = ck.box(t, ck.separation());
+        auto test = [&](int j) {
+            return pairWanted(t, j, tested) && overlaps(q, boxes[j]) && ck.conflict(items[t], items[j]);
+        };
+        if (isBig[t]) {
+            for (int j = 0; j < n; ++j)
+                if (test(j)) return false;
+            continue;
+        }
+        for (int j : big)
+            if (test(j)) return false;
+        for (long y = cy(q.loy); y <= cy(q.hiy); ++y)
+            for (long x = cx(q.lox); x <= cx(q.hix); ++x)
+                for (int s = start[y * nx + x]; s < start[y * nx + x + 1]; ++s) {
+                    const int j = slot[s];
+                    if (seen[j] == t) continue;
+                    seen[j] = t;
+                    if (test(j)) return false;
+                }
+    }
+    return true;
+}
+
+}  // namespace
+
+bool drawingIsPlanar(const std::vector<vec2>& position, const std::vector<AngleEdge>& edges, double separation,
+                     const std::vector<char>& moved) {
+    const int nv = static_cast<int>(position.size());
+    const double sep = separation > 0 && std::isfinite(separation) ? separation : 0.0;
+    for (const vec2& p : position)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
+    std::vector<char> hasEdge(position.size(), 0);
+    std::vector<Item> items;
+    items.reserve(edges.size());
+    for (const AngleEdge& e : edges) {
+        // A bad index or a loop is no drawing.
+        if (e.from < 0 || e.to < 0 || e.from >= nv || e.to >= nv || e.from == e.to) return false;
+        hasEdge[e.from] = hasEdge[e.to] = 1;
+        items.push_back({e.from, e.to});
+    }
+    for (int v = 0; v < nv; ++v)
+        if (!hasEdge[v]) items.push_back({v, v});
+
+    auto isMoved = [&](int v) { return moved.empty() || (v < static_cast<int>(moved.size()) && moved[v]); };
+    std::vector<char> tested(items.size(), 0);
+    std::vector<int> tests;
+    const Checker ck(position, items, sep);
+    for (int i = 0; i < static_cast<int>(items.size()); ++i)
+        if (isMoved(items[i].a) || isMoved(items[i].b)) {
+            if (ck.tooShort(items[i])) return false;
+            tested[i] = 1;
+            tests.push_back(i);
+        }
+    if (tests.empty()) return true;
+    constexpr std::size_t kScanMax = 32;   // beyond this many, a grid is cheaper than scans
+    return tests.size() <= kScanMax ? planarByScan(ck, items, tests, tested) : planarByGrid(ck, items, tests, tested);
+}
+
+}  // namespace g2d::rt
