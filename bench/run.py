@@ -20,6 +20,9 @@ Benchmarks:
   g3           G^3's models beside its Table 5.1 (Laganeckiene 2012: Core2 Duo seconds),
                and G^3's Split edge / Split face over a model growing to a million elements
                (bench/grammars/g3_quads.g2d)
+  infer        `g2d infer` on the author's 45 examples (examples/infer/merrell):
+               the grammar's numbers and the inference time, beside Merrell 2023's Table 1
+               (grammar time 0.04-2.4 s per shape)
 
 usage: bench/run.py [--g2d build/release/bin/g2d] [--quick] [--repeat N] [--only NAME...]
 """
@@ -322,6 +325,26 @@ def thesis(s, quick):
             break
 
 
+MERRELL_EXAMPLES = os.path.join(ROOT, "examples", "infer", "merrell")
+
+
+def infer_table(g2d, repeat):
+    """`g2d infer --stats` on every example: the fastest of `repeat` runs (its own time of inference)."""
+    print()
+    print("| example | labels | primitives | hierarchy graphs | left over | rules | starter rules | inference ms |")
+    print("|---|---|---|---|---|---|---|---|")
+    worst = 0.0
+    for category in sorted(os.listdir(MERRELL_EXAMPLES)):
+        folder = os.path.join(MERRELL_EXAMPLES, category)
+        for name in sorted(os.listdir(folder)):
+            runs = [run_once([g2d, "infer", "--stats", os.path.join(folder, name)]) for _ in range(repeat)]
+            best = min(runs, key=lambda r: r["milliseconds"])
+            worst = max(worst, best["milliseconds"])
+            print(f"| {category[3:]} / {name[:-5]} | {best['labels']} | {best['primitives']} | {best['graphs']:,} | "
+                  f"{best['left_over']:,} | {best['rules']} | {best['starters']} | {best['milliseconds']:.1f} |")
+    print(f"\nslowest inference: {worst:.1f} ms (the paper: 40-2,400 ms per shape, Table 1)")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--g2d", default=os.path.join(ROOT, "build/release/bin/g2d"))
@@ -329,7 +352,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
     ap.add_argument("--short-repeat", type=int, default=21,
                     help="runs per case when its runs take under 10 ms (default 21)")
-    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "g3", "instructions"])
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "g3", "infer", "instructions"])
     args = ap.parse_args()
     if args.quick:
         args.repeat = args.short_repeat = 1
@@ -345,6 +368,8 @@ def main():
     for _, fn in timed:
         fn(s, args.quick)
     s.flatness()
+    if not args.only or "infer" in args.only:
+        infer_table(args.g2d, args.repeat)
     # Instruction counts: in the full suite, or when asked (--quick skips them:
     # it also runs sanitized builds, which valgrind cannot run).
     asked = bool(args.only and "instructions" in args.only)

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "infer/example_json.hpp"
+#include "infer/example_svg.hpp"
 #include "infer/grammar_report.hpp"
 
 namespace g2d {
@@ -20,8 +21,9 @@ int runInfer(const InferCommandOptions& options) {
     text << in.rdbuf();
     try {
         const auto start = std::chrono::steady_clock::now();
-        const infer::LabelledExample ex =
-            infer::labelExample(infer::readExampleJson(text.str(), options.example), options.labels);
+        const bool svg = options.example.size() >= 4 && options.example.compare(options.example.size() - 4, 4, ".svg") == 0;
+        const infer::LabelledExample ex = infer::labelExample(
+            svg ? infer::readExampleSvg(text.str(), options.example) : infer::readExampleJson(text.str(), options.example), options.labels);
         const infer::InferredGrammar grammar = infer::inferGrammar(ex, options.limits);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const std::string out = options.stats ? infer::inferenceStatsJson(infer::countInference(ex, grammar), ms)

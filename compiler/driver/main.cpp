@@ -64,7 +64,7 @@ int runCommandLine(int argc, char** argv) {
 
     auto* infer = app.add_subcommand("infer", "Infer a graph grammar from an example shape (Merrell 2023)");
     g2d::InferCommandOptions inferOptions;
-    infer->add_option("EXAMPLE", inferOptions.example, "The example: the JSON of Merrell's app")->required();
+    infer->add_option("EXAMPLE", inferOptions.example, "The example: the JSON of Merrell's app, or an SVG drawing (.svg)")->required();
     infer->add_flag("--stats", inferOptions.stats, "Print the numbers (labels, primitives, graphs, rules, time) as JSON");
     infer->add_option("--angle-tolerance", inferOptions.labels.angleTolerance, "Degrees within which edge directions are one")
         ->capture_default_str()

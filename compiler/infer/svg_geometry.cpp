@@ -132,7 +132,7 @@ private:
         std::iota(order.begin(), order.end(), 0);
         auto minX = [&](std::size_t s) { return std::min(vertices_[segments_[s].a].x, vertices_[segments_[s].b].x); };
         auto maxX = [&](std::size_t s) { return std::max(vertices_[segments_[s].a].x, vertices_[segments_[s].b].x); };
-        std::sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) { return minX(l) < minX(r); });
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) { return minX(l) < minX(r); });
         const double tol2 = in_.tolerance * in_.tolerance;
         for (std::size_t i = 0; i < order.size(); ++i) {
             const Segment s = segments_[order[i]];

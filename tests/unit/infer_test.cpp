@@ -16,7 +16,7 @@ using namespace g2d::infer;
 
 namespace {
 
-const std::string kExamples = G2D_SOURCE_DIR "/../shared/reference/merrell/examples";
+const std::string kExamples = G2D_SOURCE_DIR "/examples/infer/merrell";
 
 std::string readFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# `g2d infer EXAMPLE`: the grammar inferred from an example shape (Merrell
+# 2023) as the paper writes it, --stats as JSON, and bad examples refused
+# with the place of the fault.
+# Usage: infer_command_test.sh G2D SOURCE_DIR
+set -u
+g2d="$1"; src="$2"
+source "$(dirname "$0")/test_lib.sh"
+examples="$src/examples/infer/merrell"
+has() { grep -qF -- "$2" "$1" || fail "$1 lacks: $2"; }
+
+expect_code 0 "$g2d" infer "$examples/2D Basic Shapes/triangle.json"
+has out.txt 'example: Triangle (3 vertices, 3 edges)'
+has out.txt 'primitives: 3'
+has out.txt 'rules: 0, starter rules: 1'
+has out.txt '  0: ^ (3 vertices) <-> nothing'
+
+# The L: a step of the wall <-> a straight edge, in two directions; a rectangle starts it.
+expect_code 0 "$g2d" infer "$examples/2D Basic Shapes/L.json"
+has out.txt 'edge labels: 4 (3 edges snapped onto a shared direction)'
+has out.txt 'rules: 2, starter rules: 1'
+has out.txt '<-> edge 2 ^ 2'"'"
+has out.txt '  2: ^ (4 vertices) <-> nothing'
+
+expect_code 0 "$g2d" infer --stats "$examples/2D Branches/T.json"
+python3 - out.txt <<'PY' || fail "T --stats"
+import json, sys
+s = json.load(open(sys.argv[1]))
+want = {"vertices": 4, "edges": 3, "labels": 2, "primitives": 4, "left_over": 0, "starters": 1}
+assert all(s[k] == v for k, v in want.items()), s
+assert s["milliseconds"] >= 0
+PY
+
+# An SVG drawing: stroke colours are edge labels, fill colours areas.
+expect_code 0 "$g2d" infer "$src/examples/infer/house.svg"
+has out.txt 'example: House (9 vertices, 11 edges)'
+has out.txt 'primitives: 8'
+printf '<svg xmlns="http://www.w3.org/2000/svg">\n<circle r="3"/>\n</svg>\n' > round.svg
+expect_code 1 "$g2d" infer round.svg
+grep -q 'round.svg:2:' err.txt || fail "round.svg: no line in: $(cat err.txt)"
+
+# A hierarchy cut short says so.
+expect_code 0 "$g2d" infer --max-graphs 50 "$examples/2D Regions/hexagons.json"
+has out.txt 'warning: the grammar may be incomplete:'
+
+printf '[1, 1, "0,0,80,0,40,-40,40,40", "", "0,1,-1,-1,2,3,-1,-1", 1, 0, 0, 0, false]' > crossing.json
+expect_code 1 "$g2d" infer crossing.json
+has err.txt 'g2d infer: error: crossing.json: data[4], edge 0: the edge crosses data[4], edge 1; an example must be a plane drawing'
+expect_code 1 "$g2d" infer missing.json
+has err.txt 'g2d infer: error: cannot read missing.json'
+printf '{"data": [1, 1, "0,0", ' > cut.json
+expect_code 1 "$g2d" infer cut.json
+has err.txt 'g2d infer: error: cut.json: not valid JSON'
+expect_code 2 "$g2d" infer --angle-tolerance 90 "$examples/2D Branches/T.json"
+
+finish
