@@ -170,7 +170,7 @@ TEST_CASE("svg: colours from attributes, style and ancestors, normalised", "[inf
     CHECK(labels(g) == "Line0=#800080 Area0=#ffa500 ");
 }
 
-TEST_CASE("svg: the innermost filled shape labels a side; holes by fill-rule do not count", "[infer][svg]") {
+TEST_CASE("svg: the innermost filled shape labels a side, and holes by fill-rule do not count", "[infer][svg]") {
     // A small square drawn on a big one (either order): its inside is its own.
     const ExampleShape s = read(R"svg(<rect x="40" y="40" width="40" height="40" fill="red" stroke="black"/>
 <rect x="0" y="0" width="120" height="120" fill="blue"/>)svg");
