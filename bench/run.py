@@ -336,7 +336,9 @@ def infer_table(g2d, repeat):
     worst = 0.0
     for category in sorted(os.listdir(MERRELL_EXAMPLES)):
         folder = os.path.join(MERRELL_EXAMPLES, category)
-        for name in sorted(os.listdir(folder)):
+        if not os.path.isdir(folder):
+            continue   # the licence and the README
+        for name in sorted(n for n in os.listdir(folder) if n.endswith(".json")):
             runs = [run_once([g2d, "infer", "--stats", os.path.join(folder, name)]) for _ in range(repeat)]
             best = min(runs, key=lambda r: r["milliseconds"])
             worst = max(worst, best["milliseconds"])
