@@ -330,3 +330,30 @@ TEST_CASE("bad examples are refused with the place of the fault", "[infer][error
     CHECK(error("[1, 1, \"0,0,80,0\", \"\", \"0,1,-1,-1\", 1, 0, 0, 0, false, 3]") ==
           "x.json: data[10]: unexpected data after the last instance");
 }
+
+TEST_CASE("§5.6: spirals of rectangle corners are pruned, and a rectangle's grammar has one starter rule", "[infer]") {
+    const LabelledExample ex = rectangle();
+    const InferredGrammar g = inferGrammar(ex);
+    CHECK(g.leftOver() == 0);
+    // Every complete graph of rectangle corners is a rectangle: one starter rule,
+    // and the rules that make the corners' graphs of equal boundaries one.
+    CHECK(g.starters() == 1);
+    std::vector<std::string> pruned;
+    for (const HierarchyEntry& h : g.hierarchy)
+        if (h.state == GraphState::Pruned) pruned.push_back(boundaryString(ex, h.graph.boundary));
+    const auto found = [&](const std::string& s) {
+        return std::any_of(pruned.begin(), pruned.end(), [&](const std::string& p) { return sameCycle(p, s); });
+    };
+    // The spiral family starts where a boundary path first turns more than 360°
+    // (y^(n+1) y' v^n needs n >= 2; the paper's y^4 y' v^3 lies further on):
+    // x^^y'v (450°), and its mirror images and clockwise twins, are pruned,
+    // and nothing grows from them.
+    INFO([&] { std::string all; for (const auto& p : pruned) all += p + " | "; return all; }());
+    CHECK(pruned.size() == 4);
+    CHECK(found("0 ^ ^ 1' v"));
+    CHECK(found("1 ^ ^ 0 v"));
+    CHECK(found("1 0' ^"));
+    CHECK(found("0' v 1' ^ ^"));
+    for (const HierarchyEntry& h : g.hierarchy)
+        if (h.state == GraphState::Active) CHECK_FALSE(h.graph.boundary.size() > 4);
+}
