@@ -193,6 +193,20 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
                                  std::to_string(out.direction(h)) + "°)" +
                                  (out.snappedEdges > 0 ? "; a smaller --angle-tolerance may keep them apart" : "")};
         }
+        // The wedge between two consecutive half-edges is one area: left of the first, right of the next.
+        for (std::size_t k = 0; k < halves.size(); ++k) {
+            const int h = halves[k], g = halves[(k + 1) % halves.size()];
+            const EdgeLabel& lh = out.labels[static_cast<std::size_t>(edgeOfHalf(h))];
+            const EdgeLabel& lg = out.labels[static_cast<std::size_t>(edgeOfHalf(g))];
+            const int leftOfH = barred(h) ? lh.right : lh.left, rightOfG = barred(g) ? lg.left : lg.right;
+            if (leftOfH != rightOfG) {
+                const auto name = [&](int a) { return a < 0 ? std::string("no area") : shape.areas[static_cast<std::size_t>(a)].name; };
+                throw InputError{shape.source + ": the areas around the vertex at " + at(shape, static_cast<int>(v)) +
+                                 " disagree: between its edges at " + std::to_string(std::lround(out.direction(h))) + "° and " +
+                                 std::to_string(std::lround(out.direction(g))) + "° one says " + name(leftOfH) + ", the other " +
+                                 name(rightOfG)};
+            }
+        }
         auto [it, added] = primitiveOf.emplace(halves, static_cast<int>(out.primitives.size()));
         if (added) out.primitives.push_back({halves, {}});
         out.primitives[static_cast<std::size_t>(it->second)].vertices.push_back(static_cast<int>(v));

@@ -327,6 +327,12 @@ TEST_CASE("bad examples are refused with the place of the fault", "[infer][error
           "x.json: data[4], edge 0: the edge crosses data[4], edge 1; an example must be a plane drawing");
     CHECK(error("[1, 1, \"0,0,80,0,40,0\", \"\", \"0,1,-1,-1\", 1, 0, 0, 0, false]") ==
           "x.json: data[2], vertex 2: the vertex at (1, 0) has no edges");
+    // Version 3: one brush, one area; the triangle's first edge has the area on its
+    // left, the others on their right: at two corners the wedge is both.
+    CHECK(error("[3, 1, false, true, true, true, 10, \"#000\", \"#000\", 1, \"#fff\", \"#000\", 1, "
+                "\"0,0,80,0,40,-40\", \"\", \"0,1,-1,-1,1,2,-1,-1,2,0,-1,-1\", \"0,0,0\", \"0,-1,-1,0,-1,0\", "
+                "1, 0, 0, 0, 0, false]") ==
+          "x.json: the areas around the vertex at (0, 0) disagree: between its edges at 0° and 45° one says Area0, the other no area");
     CHECK(error("[1, 1, \"0,0,80,0\", \"\", \"0,1,-1,-1\", 1, 0, 0, 0, false, 3]") ==
           "x.json: data[10]: unexpected data after the last instance");
 }
