@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "infer/matching_groups.hpp"
+#include "infer/rule_application.hpp"
 
 namespace g2d::infer {
 namespace {
@@ -38,6 +39,8 @@ private:
     bool reduceByGroups(int g);
     void retryWith(int fresh);
     void addCandidate(int g);
+    void startExample();
+    void addStarter(HierarchyGraph g, const std::string& code);
     void grow(int g);
     int addRule(int left, std::vector<RulePiece> right);
 };
@@ -210,7 +213,7 @@ void Inference::retryWith(int fresh) {
     const std::vector<int> snapshot = active_;
     for (int x : snapshot) {
         const HierarchyEntry& X = at(x);
-        if (x == fresh || X.state != GraphState::Active || X.halves.size() <= f.halves.size()) continue;
+        if (x == fresh || X.state != GraphState::Active || X.halves.size() < f.halves.size() || !simpler(fresh, x)) continue;
         if ((f.halfMask & ~X.halfMask) != 0 || !std::includes(X.halves.begin(), X.halves.end(), f.halves.begin(), f.halves.end()))
             continue;
         if (reduceByGroups(x)) queue_.erase(key(x));
@@ -245,7 +248,7 @@ InferredGrammar Inference::run() {
         queue_.erase(queue_.begin());
         if (at(g).state != GraphState::Active) continue;
         if (reducedByRules(g)) continue;
-        if (at(g).generation >= options_.maxGeneration ||
+        if (at(g).generation > options_.maxGeneration ||
             static_cast<int>(at(g).graph.boundary.size()) > options_.maxHalfEdges ||
             static_cast<int>(out_.hierarchy.size()) >= options_.maxGraphs) {
             at(g).state = GraphState::LeftOver;
@@ -254,12 +257,63 @@ InferredGrammar Inference::run() {
         grow(g);
     }
     std::erase_if(active_, [&](int a) { return at(a).state != GraphState::Active; });
-    // The example's own components are complete graphs of the hierarchy;
-    // the limits may stop the growth before it reaches them. Inserted now,
-    // each is reduced by the rules or gets a starter rule, so the grammar
-    // makes at least the example.
-    for (const HierarchyGraph& component : exampleComponents(ex_)) insert(component);
+    startExample();
     return std::move(out_);
+}
+
+// The example's own components are complete graphs; the limits may stop the
+// growth before it reaches them, and two restructuring rules (§5.4) can each
+// leave to the other a complete graph that neither reduces. So the example
+// is followed down: each complete graph is simplified by the first rule that
+// applies and leads nowhere it has been; one that no rule takes further gets
+// a starter rule. Then the grammar reduces the example to nothing, and makes it.
+void Inference::startExample() {
+    std::vector<HierarchyGraph> todo = exampleComponents(ex_);
+    std::size_t limit = 0;
+    for (const HierarchyGraph& c : todo) limit += c.type.size();
+    limit *= 4;   // restructuring may grow a graph; not past this
+    std::set<std::string> seen;
+    for (std::size_t visits = 0; !todo.empty() && visits < 100000; ++visits) {
+        HierarchyGraph g = std::move(todo.back());
+        todo.pop_back();
+        const std::string code = canonicalCode(g);
+        if (!seen.insert(code).second) continue;
+        bool simplified = false;
+        for (std::size_t r = 0; r < out_.rules.size() && !simplified && g.type.size() <= limit; ++r) {
+            const InferredRule& rule = out_.rules[r];
+            if (rule.starter()) continue;
+            const std::vector<int> image = findOccurrence(at(rule.left).graph, g);
+            if (image.empty()) continue;
+            std::vector<HierarchyGraph> parts = applyDestructively(ex_, out_, rule, g, image);
+            const bool fresh = std::none_of(parts.begin(), parts.end(), [&](const HierarchyGraph& p) { return seen.count(canonicalCode(p)) > 0; });
+            if (!fresh) continue;
+            for (HierarchyGraph& p : parts) todo.push_back(std::move(p));
+            simplified = true;
+        }
+        if (!simplified) addStarter(std::move(g), code);
+    }
+}
+
+void Inference::addStarter(HierarchyGraph g, const std::string& code) {
+    int index;
+    if (const auto it = byCode_.find(code); it != byCode_.end()) {
+        index = it->second;
+    } else {
+        index = static_cast<int>(out_.hierarchy.size());
+        HierarchyEntry entry;
+        entry.graph = std::move(g);
+        entry.order = index;
+        entry.generation = entry.graph.generation();
+        out_.hierarchy.push_back(std::move(entry));
+        checkedRules_.push_back(0);
+        byCode_.emplace(code, index);
+    }
+    for (const InferredRule& r : out_.rules)
+        if (r.starter() && r.left == index) return;
+    const GraphState state = at(index).state;
+    const int reducedBy = at(index).reducedBy;
+    addRule(index, {});
+    if (state == GraphState::Reduced) at(index).reducedBy = reducedBy;   // a rule reduces it too: keep that one
 }
 
 }  // namespace

@@ -69,6 +69,10 @@ std::string describeGrammar(const LabelledExample& ex, const InferredGrammar& g)
         for (std::size_t k = 0; k < rule.right.size(); ++k) out += (k ? " | " : " ") + graphText(ex, g, rule.right[k].graph);
         out += rule.restructures ? "  (restructures, §5.4)\n" : "\n";
     }
+    if (c.pruned > 0)
+        out += "note: " + std::to_string(c.pruned) +
+               " graphs turning more than 360° between two half-edges were not grown (§5.7); the grammar lacks rules only "
+               "if one of them has a complete descendant\n";
     if (c.leftOver > 0)
         out += "warning: the grammar may be incomplete: " + std::to_string(c.leftOver) +
                " graphs were left over at the hierarchy's limits (§5.7)\n";

@@ -156,8 +156,10 @@ std::string canonicalCode(const HierarchyGraph& g) {
     return key;
 }
 
-bool occursIn(const HierarchyGraph& pattern, const HierarchyGraph& host) {
-    if (pattern.isEdgeGraph() || host.isEdgeGraph() || pattern.vertexCount() > host.vertexCount()) return false;
+bool occursIn(const HierarchyGraph& pattern, const HierarchyGraph& host) { return !findOccurrence(pattern, host).empty(); }
+
+std::vector<int> findOccurrence(const HierarchyGraph& pattern, const HierarchyGraph& host) {
+    if (pattern.isEdgeGraph() || host.isEdgeGraph() || pattern.vertexCount() > host.vertexCount() || pattern.type.empty()) return {};
     const std::size_t n = pattern.type.size();
     std::vector<int> image(n), preimage(host.type.size());
     for (int anchor = 0; anchor < host.vertexCount(); ++anchor) {
@@ -200,9 +202,9 @@ bool occursIn(const HierarchyGraph& pattern, const HierarchyGraph& host) {
             for (std::size_t s = 0; s < ps.size() && ok; ++s)
                 if (ps[s].vertex < 0 && hs[s].vertex >= 0 && preimage[static_cast<std::size_t>(hs[s].vertex)] >= 0) ok = false;
         }
-        if (ok) return true;
+        if (ok) return image;
     }
-    return false;
+    return {};
 }
 
 std::string boundaryString(const LabelledExample&, const std::vector<BoundaryEntry>& boundary) {

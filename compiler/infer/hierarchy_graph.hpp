@@ -67,6 +67,9 @@ std::string canonicalCode(const HierarchyGraph& g);
 // leads to a vertex outside the image (the interface, never one of the
 // pattern's own vertices).
 bool occursIn(const HierarchyGraph& pattern, const HierarchyGraph& host);
+// The first such match (per pattern vertex, its host vertex), or empty.
+// Patterns are connected (every hierarchy graph is).
+std::vector<int> findOccurrence(const HierarchyGraph& pattern, const HierarchyGraph& host);
 
 // The boundary as the paper writes it (a, ā, ∧, ∨), for messages and tests.
 std::string boundaryString(const LabelledExample& ex, const std::vector<BoundaryEntry>& boundary);

@@ -73,7 +73,7 @@ std::vector<double> directionGroups(const ExampleShape& s, const std::vector<dou
     for (std::size_t e = 0; e < line.size(); ++e) {
         int g = -1;
         for (std::size_t k = 0; k < first.size() && g < 0; ++k)
-            if (lineDistance(first[k], line[e]) < tolerance) g = static_cast<int>(k);
+            if (lineDistance(first[k], line[e]) <= tolerance) g = static_cast<int>(k);
         if (g < 0) {
             g = static_cast<int>(first.size());
             first.push_back(line[e]);

@@ -39,8 +39,11 @@ bool Search::embed(const std::vector<GroupEntry>& S, const HierarchyEntry& R, in
     const auto& RB = R.graph.boundary;
     const int r = static_cast<int>(RB.size()), s = static_cast<int>(S.size());
     std::vector<int> pos(static_cast<std::size_t>(r) + 1);
-    auto windR = [&](int ro, int k) { return RB[static_cast<std::size_t>((ro + k) % r)].wind + (ro + k) / r; };
-    for (int ro = 0; ro < r; ++ro) {
+    // R's first entry goes to every position p0 of S in turn: that finds
+    // every cyclic embedding once (another rotation of R only repeats them).
+    constexpr int ro = 0;
+    auto windR = [&](int, int k) { return RB[static_cast<std::size_t>(k)].wind; };
+    {
         for (int p0 = 0; p0 < s; ++p0) {
             if (S[static_cast<std::size_t>(p0)].half != RB[static_cast<std::size_t>(ro)].half) continue;
             pos[0] = p0;

@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "infer/example_json.hpp"
 #include "infer/grammar_report.hpp"
 #include "infer/matching_groups.hpp"
+#include "infer/rule_application.hpp"
 
 using namespace g2d::infer;
 
@@ -282,6 +284,61 @@ TEST_CASE("every example's grammar starts, and every rule joins sides with one b
                 CHECK((R.graph.boundary.size() < L.graph.boundary.size() ||
                        (R.graph.boundary.size() == L.graph.boundary.size() && R.order < L.order)));
             }
+        }
+    }
+}
+
+// Whether the grammar takes graph g to nothing: a starter deletes it, or some
+// rule, applied destructively at its first match, leaves parts it takes to
+// nothing (depth-first over every rule; a graph met again on the way is a loop).
+bool reducesToNothing(const LabelledExample& ex, const InferredGrammar& g, const HierarchyGraph& graph, std::set<std::string>& path,
+                      int depth = 0) {
+    const std::string code = canonicalCode(graph);
+    for (const InferredRule& r : g.rules)
+        if (r.starter() && canonicalCode(g.hierarchy[static_cast<std::size_t>(r.left)].graph) == code) return true;
+    if (depth > 60 || !path.insert(code).second) return false;
+    bool done = false;
+    for (std::size_t i = 0; i < g.rules.size() && !done; ++i) {
+        const InferredRule& rule = g.rules[i];
+        if (rule.starter()) continue;
+        const std::vector<int> image = findOccurrence(g.hierarchy[static_cast<std::size_t>(rule.left)].graph, graph);
+        if (image.empty()) continue;
+        done = true;
+        for (const HierarchyGraph& part : applyDestructively(ex, g, rule, graph, image))
+            done = done && reducesToNothing(ex, g, part, path, depth + 1);
+    }
+    path.erase(code);
+    return done;
+}
+
+TEST_CASE("every example's grammar takes the example to nothing (so it can make it)", "[infer][examples]") {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples)) {
+        if (entry.path().extension() != ".json") continue;
+        INFO(entry.path().string());
+        const LabelledExample ex = labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string()));
+        InferOptions small;
+        small.maxGraphs = 600;
+        const InferredGrammar g = inferGrammar(ex, small);
+        // The example as one hierarchy graph per component: a grammar run on the example's own vertices.
+        HierarchyGraph whole;
+        for (std::size_t v = 0; v < ex.vertexType.size(); ++v) {
+            whole.type.push_back(ex.vertexType[v]);
+            whole.links.emplace_back(ex.primitives[static_cast<std::size_t>(ex.vertexType[v])].halves.size());
+        }
+        for (std::size_t e = 0; e < ex.shape.edges.size(); ++e) {
+            const ExampleEdge& edge = ex.shape.edges[e];
+            const bool flipped = ex.edgeFlipped[e] != 0;
+            const auto slot = [&](int v, int half) {
+                const auto& h = ex.primitives[static_cast<std::size_t>(ex.vertexType[static_cast<std::size_t>(v)])].halves;
+                return static_cast<int>(std::find(h.begin(), h.end(), half) - h.begin());
+            };
+            const int a = slot(edge.from, halfLabel(ex.edgeLabel[e], flipped)), b = slot(edge.to, halfLabel(ex.edgeLabel[e], !flipped));
+            whole.links[static_cast<std::size_t>(edge.from)][static_cast<std::size_t>(a)] = {edge.to, b};
+            whole.links[static_cast<std::size_t>(edge.to)][static_cast<std::size_t>(b)] = {edge.from, a};
+        }
+        for (const HierarchyGraph& component : components(ex, whole)) {
+            std::set<std::string> path;
+            CHECK(reducesToNothing(ex, g, component, path));
         }
     }
 }
