@@ -27,6 +27,23 @@ std::string readFile(const std::string& path) {
     return s.str();
 }
 
+// Every example of the folder, labelled, by path.
+std::vector<std::pair<std::string, LabelledExample>> allExamples() {
+    std::vector<std::pair<std::string, LabelledExample>> out;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples))
+        if (entry.path().extension() == ".json")
+            out.emplace_back(entry.path().string(), labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string())));
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    return out;
+}
+
+// A hierarchy small enough for tests over every example.
+InferOptions small() {
+    InferOptions o;
+    o.maxGraphs = 600;
+    return o;
+}
+
 LabelledExample example(const std::string& relative) {
     const std::string path = kExamples + "/" + relative;
     return labelExample(readExampleJson(readFile(path), path));
@@ -266,13 +283,9 @@ TEST_CASE("the triangle needs one starter rule and nothing else, as the author's
 }
 
 TEST_CASE("every example's grammar starts, and every rule joins sides with one boundary string", "[infer][examples]") {
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples)) {
-        if (entry.path().extension() != ".json") continue;
-        INFO(entry.path().string());
-        const LabelledExample ex = labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string()));
-        InferOptions small;
-        small.maxGraphs = 600;
-        const InferredGrammar g = inferGrammar(ex, small);
+    for (const auto& [path, ex] : allExamples()) {
+        INFO(path);
+        const InferredGrammar g = inferGrammar(ex, small());
         // Whatever the limits, the example itself is reducible: the grammar can start.
         CHECK(g.starters() >= 1);
         for (const InferredRule& rule : g.rules) {
@@ -312,13 +325,9 @@ bool reducesToNothing(const LabelledExample& ex, const InferredGrammar& g, const
 }
 
 TEST_CASE("every example's grammar takes the example to nothing (so it can make it)", "[infer][examples]") {
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples)) {
-        if (entry.path().extension() != ".json") continue;
-        INFO(entry.path().string());
-        const LabelledExample ex = labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string()));
-        InferOptions small;
-        small.maxGraphs = 600;
-        const InferredGrammar g = inferGrammar(ex, small);
+    for (const auto& [path, ex] : allExamples()) {
+        INFO(path);
+        const InferredGrammar g = inferGrammar(ex, small());
         // The example as one hierarchy graph per component: a grammar run on the example's own vertices.
         HierarchyGraph whole;
         for (std::size_t v = 0; v < ex.vertexType.size(); ++v) {
