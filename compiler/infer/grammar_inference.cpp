@@ -62,47 +62,23 @@ bool turnsTooFar(const LabelledExample& ex, const HierarchyGraph& g) {
 
 // Each connected component of the example as a hierarchy graph.
 std::vector<HierarchyGraph> exampleComponents(const LabelledExample& ex) {
-    const std::size_t n = ex.vertexType.size();
-    std::vector<std::vector<std::pair<int, int>>> around(n);   // (edge, other end)
-    for (std::size_t e = 0; e < ex.shape.edges.size(); ++e) {
-        const ExampleEdge& edge = ex.shape.edges[e];
-        around[static_cast<std::size_t>(edge.from)].emplace_back(static_cast<int>(e), edge.to);
-        around[static_cast<std::size_t>(edge.to)].emplace_back(static_cast<int>(e), edge.from);
+    HierarchyGraph whole;
+    for (int type : ex.vertexType) {
+        whole.type.push_back(type);
+        whole.links.emplace_back(ex.primitives[static_cast<std::size_t>(type)].halves.size());
     }
     auto slotOf = [&](int vertex, int half) {
         const auto& halves = ex.primitives[static_cast<std::size_t>(ex.vertexType[static_cast<std::size_t>(vertex)])].halves;
         return static_cast<int>(std::find(halves.begin(), halves.end(), half) - halves.begin());
     };
-    std::vector<int> local(n, -1);
-    std::vector<HierarchyGraph> out;
-    for (std::size_t start = 0; start < n; ++start) {
-        if (local[start] >= 0) continue;
-        HierarchyGraph g;
-        std::vector<int> members{static_cast<int>(start)};
-        local[start] = 0;
-        for (std::size_t k = 0; k < members.size(); ++k)
-            for (const auto& [e, other] : around[static_cast<std::size_t>(members[k])])
-                if (local[static_cast<std::size_t>(other)] < 0) {
-                    local[static_cast<std::size_t>(other)] = static_cast<int>(members.size());
-                    members.push_back(other);
-                }
-        for (int v : members) {
-            g.type.push_back(ex.vertexType[static_cast<std::size_t>(v)]);
-            g.links.emplace_back(ex.primitives[static_cast<std::size_t>(g.type.back())].halves.size());
-        }
-        for (int v : members)
-            for (const auto& [e, other] : around[static_cast<std::size_t>(v)]) {
-                const bool isFrom = ex.shape.edges[static_cast<std::size_t>(e)].from == v;
-                const bool bar = isFrom == (ex.edgeFlipped[static_cast<std::size_t>(e)] != 0);   // `from` holds a unless flipped
-                const int here = slotOf(v, halfLabel(ex.edgeLabel[static_cast<std::size_t>(e)], bar));
-                const int there = slotOf(other, halfLabel(ex.edgeLabel[static_cast<std::size_t>(e)], !bar));
-                g.links[static_cast<std::size_t>(local[static_cast<std::size_t>(v)])][static_cast<std::size_t>(here)] = {
-                    local[static_cast<std::size_t>(other)], there};
-            }
-        g.boundary.clear();
-        out.push_back(std::move(g));
+    for (std::size_t e = 0; e < ex.shape.edges.size(); ++e) {
+        const ExampleEdge& edge = ex.shape.edges[e];
+        const bool flipped = ex.edgeFlipped[e] != 0;   // `from` holds a unless flipped
+        const int a = slotOf(edge.from, halfLabel(ex.edgeLabel[e], flipped)), b = slotOf(edge.to, halfLabel(ex.edgeLabel[e], !flipped));
+        whole.links[static_cast<std::size_t>(edge.from)][static_cast<std::size_t>(a)] = {edge.to, b};
+        whole.links[static_cast<std::size_t>(edge.to)][static_cast<std::size_t>(b)] = {edge.from, a};
     }
-    return out;
+    return components(ex, whole);
 }
 
 int Inference::addRule(int left, std::vector<RulePiece> right) {
