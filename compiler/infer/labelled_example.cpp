@@ -65,7 +65,7 @@ void checkPlane(const ExampleShape& s) {
 // Directions within the tolerance become one: each edge joins the first
 // group whose first edge is that close, and a group's direction is its edges'
 // mean (as lines, so 179° and 1° are 2° apart).
-std::vector<double> directionGroups(const ExampleShape& s, const std::vector<double>& line, double tolerance,
+std::vector<double> directionGroups(const std::vector<double>& line, double tolerance,
                                     std::vector<int>& groupOf) {
     std::vector<double> first;
     std::vector<std::pair<double, double>> sum;   // of (cos 2a, sin 2a)
@@ -90,7 +90,6 @@ std::vector<double> directionGroups(const ExampleShape& s, const std::vector<dou
         const double whole = std::round(m * 1e6) / 1e6;
         mean.push_back(wrap180(whole));
     }
-    (void)s;
     return mean;
 }
 
@@ -126,7 +125,7 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
         length.push_back(std::hypot(b.x - a.x, b.y - a.y));
     }
     std::vector<int> groupOf;
-    const std::vector<double> groups = directionGroups(shape, line, options.angleTolerance, groupOf);
+    const std::vector<double> groups = directionGroups(line, options.angleTolerance, groupOf);
 
     // Labels: (brush, left, right, direction[, length of a rigid edge]).
     std::map<std::tuple<int, int, int, int, double>, int> labelOf;

@@ -36,8 +36,6 @@ std::vector<HierarchyGraph> applyDestructively(const LabelledExample& ex, const 
                                                const HierarchyGraph& host, const std::vector<int>& image) {
     const HierarchyGraph& left = grammar.hierarchy[static_cast<std::size_t>(rule.left)].graph;
     // The host without the match: kept vertices renumbered.
-    std::vector<int> keep(host.type.size(), 0);
-    for (std::size_t v = 0; v < host.type.size(); ++v) keep[v] = static_cast<int>(v);
     std::vector<char> cut(host.type.size(), 0);
     for (int v : image) cut[static_cast<std::size_t>(v)] = 1;
     HierarchyGraph out;
