@@ -19,6 +19,7 @@ topDecl
     | mergeDecl
     | sequenceDecl
     | compoundDecl
+    | layoutDecl
     | ruleDecl
     ;
 
@@ -47,6 +48,10 @@ sequenceDecl: 'sequence' '{' (ID ';')* '}' ;
 // its lets are values of each match that its commands' rules read as C.name
 compoundDecl: 'compound' ID '{' matchBlock letStmt* sequenceDecl '}' ;
 
+// layout angles { canvas_min = (0, 0); canvas_max = (40, 30); }   new nodes
+// are placed by Merrell 2023's drawing step (edges keep their kinds' angles)
+layoutDecl  : 'layout' ID '{' styleProp* '}' ;
+
 typeRef     : ID ;
 
 // ---- kinds -----------------------------------------------------------------
@@ -59,6 +64,7 @@ kindBody    : '{' kindMember* '}' | ';' ;
 kindMember
     : ID ':' typeRef ('=' expr)? ';'                      # attrDecl
     | 'style' '{' styleProp* '}'                          # styleBlock
+    | 'layout' '{' styleProp* '}'                         # layoutBlock
     ;
 styleProp   : ID '=' expr ';' ;
 
@@ -108,7 +114,7 @@ ruleOption
     | 'pick' ID                     # rulePick
     | 'ordered'                     # ruleOrdered
     | 'parallel'                    # ruleParallel
-    | word=('merge' | 'intersect')  # ruleWordOption
+    | word=('merge' | 'intersect' | 'dpo')  # ruleWordOption
     ;
 matchBlock  : 'match' '{' matchStmt* '}' ;
 matchStmt

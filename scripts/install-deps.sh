@@ -16,6 +16,12 @@ packages=(
   chromium
 )
 
+# `install-deps.sh gallery`: also librsvg's rsvg-convert, which renders the
+# gallery's SVGs to PNG (scripts/infer_gallery.sh).
+if [ "${1:-}" = gallery ]; then
+  packages+=(librsvg2-bin)
+fi
+
 # The editor tests, the VS Code package and the --view page's script use Node.js packages from npm.
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
   packages+=(nodejs npm)

@@ -192,6 +192,8 @@ struct KindDecl {
     Ident name;
     std::vector<AttrDecl> attrs;
     std::vector<StyleProp> style;
+    std::vector<StyleProp> layout;  // edges: `layout { angle = …; … }` (the drawing step's)
+    bool hasLayout = false;
     Span span;
 };
 
@@ -213,10 +215,12 @@ struct SequenceDecl { std::vector<Ident> rules; Span span; };
 // C, with the compound's lets, whose one daughter is empty (it is never
 // applied: its matches are the compound's initial primitives).
 struct CompoundDecl { RuleDecl match; SequenceDecl body; Span span; };
+// `layout angles { canvas_min = …; … }`
+struct LayoutDecl { Ident name; std::vector<StyleProp> props; Span span; };
 
 struct Decl {
     std::variant<SpaceDecl, ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
-                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, CompoundDecl, RuleDecl> decl;
+                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, CompoundDecl, LayoutDecl, RuleDecl> decl;
 };
 
 // One parsed file.

@@ -7,7 +7,9 @@
 
 #include "infer/example_json.hpp"
 #include "infer/example_svg.hpp"
+#include "g2d/atomic_file.hpp"
 #include "infer/grammar_report.hpp"
+#include "infer/grammar_writer.hpp"
 
 namespace g2d {
 
@@ -28,7 +30,17 @@ int runInfer(const InferCommandOptions& options) {
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const std::string out = options.stats ? infer::inferenceStatsJson(infer::countInference(ex, grammar), ms)
                                               : infer::describeGrammar(ex, grammar);
+        if (!options.output.empty()) {
+            infer::WriterOptions writer;
+            writer.source = options.example;
+            writer.iterations = options.iterations;
+            rt::AtomicFile file(options.output);
+            file.commit(infer::writeGrammar(ex, grammar, writer));
+        }
         std::fwrite(out.data(), 1, out.size(), stdout);
+    } catch (const rt::OutputError& e) {
+        std::fprintf(stderr, "g2d infer: error: %s\n", e.what());
+        return 1;
     } catch (const infer::InputError& e) {
         std::fprintf(stderr, "g2d infer: error: %s\n", e.message.c_str());
         return 1;

@@ -9,6 +9,8 @@ namespace g2d {
 struct InferCommandOptions {
     std::string example;          // the author's JSON format
     bool stats = false;           // print the numbers as one JSON object instead of the grammar
+    std::string output;           // -o: write the grammar as .g2d here (whole or not at all)
+    int iterations = 1000;        // the written grammar's default step limit (Algorithm 3's N)
     infer::LabelOptions labels;
     infer::InferOptions limits;
 };

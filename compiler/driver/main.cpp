@@ -66,6 +66,9 @@ int runCommandLine(int argc, char** argv) {
     g2d::InferCommandOptions inferOptions;
     infer->add_option("EXAMPLE", inferOptions.example, "The example: the JSON of Merrell's app, or an SVG drawing (.svg)")->required();
     infer->add_flag("--stats", inferOptions.stats, "Print the numbers (labels, primitives, graphs, rules, time) as JSON");
+    infer->add_option("-o,--output", inferOptions.output, "Write the grammar as .g2d source to this file");
+    infer->add_option("--iterations", inferOptions.iterations, "The written grammar's step limit (the parameter `iterations`)")
+        ->check(CLI::Range(1, 1000000000));
     infer->add_option("--angle-tolerance", inferOptions.labels.angleTolerance, "Degrees within which edge directions are one")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 45.0));

@@ -2,6 +2,7 @@
 
 #include <functional>
 
+#include "emit/cpp_angle_layout.hpp"
 #include "emit/cpp_expr.hpp"
 #include "emit/cpp_rewrite.hpp"
 #include "emit/cpp_rules.hpp"
@@ -81,6 +82,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     if (i.mergeTolerance > 0) out += in + "info.mergeTolerance = " + cppLiteral(ir::Value{i.mergeTolerance}, ir::kFloatType) + ";\n";
     if (!i.globalMatches) out += in + "info.globalMatches = false;\n";
     if (i.intersect) out += in + "info.intersect = true;\n";
+    out += daughterShapesText(i.shapes, in);
     return out;
 }
 
@@ -388,6 +390,8 @@ private:
                     clears += "        turns_" + rd + "_" + str(static_cast<long long>(l)) + "_.clear();\n";
             }
         out += "            default: break;\n            }\n            if (onApplied) onApplied();\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
+        out += "    void discard() override { clearPending(); }\n\n";
+        out += angleLayoutOverride(prog_);
         out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";
         out += emitPrefetchData(perRule);
         return out;
@@ -441,10 +445,25 @@ private:
             const std::string sk = str(static_cast<long long>(k));
             cases += "        case " + sk + ": G.setFaceSlot(to, store_" + sk + ".add(store_" + sk + "[G.faceSlot(from)])); break;\n";
         }
+        out += addFaceWithDefaults();
         if (cases.empty()) return out;   // no face has attributes: nothing to copy
         out += "    void copyFaceAttributes(Graph& G, FaceId from, FaceId to) override {\n        switch (G.faceKind(from)) {\n" + cases +
                "        default: break;\n        }\n    }\n\n";
         return out;
+    }
+
+    // Faces the run adds itself (`layout angles`), with their kinds' default records.
+    std::string addFaceWithDefaults() {
+        std::string cases;
+        for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
+            if (prog_.kinds[k].cls != ir::ElemClass::Face || prog_.kinds[k].attrs.empty()) continue;
+            const std::string sk = str(static_cast<long long>(k));
+            cases += "        case " + sk + ": G.setFaceSlot(f, store_" + sk + ".add(default_" + sk + ")); break;\n";
+        }
+        if (cases.empty() || !prog_.angleLayout) return "";
+        return "    FaceId addFaceWithDefaults(Graph& G, int kind, std::span<const NodeId> corners, long long age) override {\n"
+               "        const FaceId f = G.addFace(kind, corners, age);\n        switch (kind) {\n" + cases +
+               "        default: break;\n        }\n        return f;\n    }\n\n";
     }
 
     // Each compound's lets, on the match of its match rule (RuleSet::compoundValues).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lower/angle_layout.hpp"
 #include "lower/command_lists.hpp"
 #include "lower/rule_facts.hpp"
 
@@ -15,6 +16,7 @@ using rt::NodeId;
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     sequence_ = lower::sequenceOf(*st.prog);
     compounds_ = lower::compoundsOf(*st.prog);
+    angleLayout_ = lower::angleLayoutSpec(*st.prog);
     std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
     for (const auto& r : st.prog->rules) {
         lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);

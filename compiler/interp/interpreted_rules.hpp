@@ -29,6 +29,8 @@ public:
     void prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g, rt::Rng& rng,
                  long long step) override;
     void commit(rt::Graph& g, long long step) override;
+    void discard() override { pendingCount_ = 0; }
+    const rt::AngleLayoutSpec* angleLayout() const override { return angleLayout_ ? &*angleLayout_ : nullptr; }
 
     // The rule being applied when an EvalError escapes (for messages).
     const ir::Rule* currentRule() const { return current_; }
@@ -76,6 +78,7 @@ private:
     rt::EdgeId newEdgesFrom_ = rt::kNoId;
     std::vector<rt::Value> locals_;
     const ir::Rule* current_ = nullptr;
+    std::optional<rt::AngleLayoutSpec> angleLayout_;
 };
 
 }  // namespace g2d::interp

@@ -139,12 +139,29 @@ struct StyleProp {
     Span span;
 };
 
+// An edge kind's `layout { … }`: what Merrell 2023's drawing step (`layout
+// angles`) needs of its edges, constants known at compile time.
+struct EdgeLayout {
+    double angle = 0;                  // radians: the direction from source to target
+    double minLength = 0, maxLength = 0;
+    int left = -1, right = -1;         // face kinds on either side, traced after the run (-1: none)
+    Span span;
+};
+
+// `layout angles { … }`: new nodes are placed by the drawing step.
+struct AngleLayout {
+    double canvasMin[2] = {0, 0}, canvasMax[2] = {0, 0};
+    int proposals = 5, samples = 10;   // Merrell's I and J
+    Span span;
+};
+
 struct Kind {
     std::string name;
     ElemClass cls = ElemClass::Node;
     bool directed = false;             // edges
     std::vector<Attribute> attrs;
     std::vector<StyleProp> style;      // defaults for how elements of this kind are drawn
+    std::optional<EdgeLayout> layout;  // edges: `layout { … }`
     Span span;
 };
 
@@ -388,6 +405,7 @@ struct Rule {
     bool ordered = false;              // the match keeps the x and y order of the sketch
     bool merge = false;                // `merge`: coinciding nodes merge after each step
     bool intersect = false;            // `intersect`: an application that would intersect the model is undone
+    bool dpo = false;                  // `dpo`: no dangling edges; kept wildcards may share a host node
     bool parallel = false;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
@@ -444,6 +462,7 @@ struct Program {
     // merge with it too, or with rt::kDefaultMergeTolerance without one.
     std::optional<Expr> mergeTolerance;
     bool mergeAll = false;
+    std::optional<AngleLayout> angleLayout;   // `layout angles { … }`
     std::vector<SequenceEntry> sequence;   // `sequence { … }`, in order
     std::vector<Compound> compounds;
     std::vector<Enum> enums;

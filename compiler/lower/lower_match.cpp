@@ -71,11 +71,21 @@ private:
 
     // The bound node slots a newly bound node must differ from: a face's
     // hidden anchor is no pattern node (any host may be a face's first corner).
-    std::vector<int> distinct(const std::vector<int>& bound, const ir::NegativeCondition* nac) const {
+    // In a `dpo` rule, two wildcards every daughter keeps may share a host
+    // node (the identification condition: only preserved nodes may be identified).
+    std::vector<int> distinct(int node, const std::vector<int>& bound, const ir::NegativeCondition* nac) const {
         std::vector<int> out;
         for (int n : bound)
-            if (ir::slotNode(r_, nac, n).anchorOf < 0) out.push_back(n);
+            if (ir::slotNode(r_, nac, n).anchorOf < 0 && !(!nac && identifiable(node) && identifiable(n))) out.push_back(n);
         return out;
+    }
+    bool identifiable(int node) const {
+        if (!r_.dpo || node < 0 || node >= static_cast<int>(r_.nodes.size())) return false;
+        const ir::PatternNode& p = r_.nodes[static_cast<std::size_t>(node)];
+        if (p.kind >= 0 || p.anchorOf >= 0) return false;
+        for (const auto& d : r_.daughters)
+            if (std::find(d.deletedNodes.begin(), d.deletedNodes.end(), node) != d.deletedNodes.end()) return false;
+        return true;
     }
 
     MatchList list(const std::vector<PlanStep>& plan, const ir::NegativeCondition* nac, std::vector<int> boundNodes,
@@ -95,14 +105,14 @@ private:
                 break;
             }
             case PlanStep::Op::ScanNodes:
-                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(boundNodes, nac),
+                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(s.node, boundNodes, nac),
                                         ordered(s.node, boundNodes)});
                 boundNodes.push_back(s.node);
                 break;
             case PlanStep::Op::ExtendEdge: {
                 const auto& pe = edgeOf(s.edge, nac);
                 out.push_back(ExtendEdge{s.edge, s.from, s.node, pe.kind, prog_.kinds[pe.kind].directed, s.fromIsSource,
-                                         nodeKind(s.node, nac), boundEdges, distinct(boundNodes, nac), ordered(s.node, boundNodes), lastEdge});
+                                         nodeKind(s.node, nac), boundEdges, distinct(s.node, boundNodes, nac), ordered(s.node, boundNodes), lastEdge});
                 boundNodes.push_back(s.node);
                 boundEdges.push_back(s.edge);
                 break;
@@ -110,7 +120,7 @@ private:
             case PlanStep::Op::BindFace: {
                 const ir::PatternFace& pf = ir::slotFace(r_, nac, s.face);
                 MatchFace o{s.face, pf.kind, s.from, s.fromCorner, faceSlots(pf), pf.corners.empty(), {}, {},
-                            pf.corners.empty() ? std::vector<int>{} : distinct(boundNodes, nac), boundFaces};
+                            pf.corners.empty() ? std::vector<int>{} : distinct(-1, boundNodes, nac), boundFaces};
                 for (int c : o.corners) {
                     const bool bound = std::find(boundNodes.begin(), boundNodes.end(), c) != boundNodes.end();
                     o.cornerBound.push_back(bound ? 1 : 0);

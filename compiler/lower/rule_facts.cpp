@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "lower/angle_layout.hpp"
 #include "lower/kind_effects.hpp"
 #include "lower/search_plan.hpp"
 #include "g2d/node_merge.hpp"
@@ -52,6 +53,8 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
         else if (prog.mergeTolerance->op == ir::ExprOp::Literal) info.mergeTolerance = std::get<double>(prog.mergeTolerance->value);
         else out.mergeExpr = &*prog.mergeTolerance;
     }
+    if (prog.angleLayout)
+        for (std::size_t d = 0; d < r.daughters.size(); ++d) info.shapes.push_back(daughterShape(r, d));
     // Removing a node removes its edges and faces, of any kind.
     for (const auto& d : r.daughters) info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
     return out;

@@ -154,6 +154,11 @@ public:
         if (auto* c = ctx->defsDecl()) return Decl{DefsDecl{unescape(c->STRING()->getText()), span(c)}};
         if (auto* c = ctx->mergeDecl()) return Decl{MergeDecl{expr(c->expr()), span(c)}};
         if (auto* c = ctx->sequenceDecl()) return Decl{sequence(c)};
+        if (auto* c = ctx->layoutDecl()) {
+            LayoutDecl d{ident(c->ID()), {}, span(c)};
+            for (auto* p : c->styleProp()) d.props.push_back(StyleProp{ident(p->ID()), expr(p->expr()), span(p)});
+            return Decl{std::move(d)};
+        }
         if (auto* c = ctx->compoundDecl()) {
             CompoundDecl d;
             d.span = span(c);
@@ -218,6 +223,10 @@ public:
                 AttrDecl d{ident(a->ID()), typeRef(a->typeRef()), nullptr, span(a)};
                 if (a->expr()) d.value = expr(a->expr());
                 k.attrs.push_back(std::move(d));
+            } else if (auto* l = dynamic_cast<P::LayoutBlockContext*>(m)) {
+                k.hasLayout = true;
+                for (auto* p : l->styleProp())
+                    k.layout.push_back(StyleProp{ident(p->ID()), expr(p->expr()), span(p)});
             } else {
                 auto* s = static_cast<P::StyleBlockContext*>(m);
                 for (auto* p : s->styleProp())

@@ -8,6 +8,7 @@
 #include "sema/builtins.hpp"
 #include "sema/const_fold.hpp"
 #include "sema/decl_checker.hpp"
+#include "sema/dpo_conditions.hpp"
 
 namespace g2d::sema {
 
@@ -269,6 +270,7 @@ public:
         items();
         warnUnusedLets();
         if (rule_.intersect) checkOnlyAdds();
+        if (rule_.dpo) addDanglingConditions(rule_);
         // Advice about a rule is noise while the rule has errors.
         if (g_.diags.errorCount() == errorsBefore)
             for (auto& w : pendingWarnings_) g_.diags.warning(w.span, w.message).notes = w.notes;
@@ -293,8 +295,9 @@ private:
             case ast::RuleOption::Kind::Word:
                 if (o.word.name == "merge") rule_.merge = true;
                 else if (o.word.name == "intersect") rule_.intersect = true;
+                else if (o.word.name == "dpo") rule_.dpo = true;
                 else g_.diags.error(o.word.span, "unknown rule option `" + o.word.name + "`" +
-                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect"}));
+                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect", "dpo"}));
                 break;
             case ast::RuleOption::Kind::Pick:
                 if (o.pick.name == "random") rule_.pick = ir::Pick::Random;
@@ -546,12 +549,6 @@ private:
         if (rule_.ordered && !rule_.faces.empty())
             g_.diags.error(rule_.faces.front().span, "an `ordered` rule cannot match faces: a face's corners are bound in "
                                                      "cyclic order, whatever their positions");
-        const bool anyNodeStmt = std::any_of(d_.match.begin(), d_.match.end(), [](const ast::MatchStmt& m) {
-            const auto* gs = std::get_if<ast::GraphStmt>(&m.stmt);
-            return gs && (asNode(*gs) || asFace(*gs));
-        });
-        if (!anyNodeStmt)
-            g_.diags.error(d_.matchSpan, "the match of rule `" + rule_.name + "` has no nodes");
         for (std::size_t i = 0; i < rule_.nodes.size(); ++i) {
             if (rule_.nodes[i].kind >= 0 || rule_.nodes[i].anchorOf >= 0) continue;
             const int node = static_cast<int>(i);
@@ -805,11 +802,22 @@ private:
                 }
                 dn.kind = resolveKind(g_, *n->kind, ElemClass::Node);
                 if (dn.kind < 0) continue;
-                if (!n->position && !n->sketch) {
+                if (!n->position && !n->sketch && !g_.prog.angleLayout) {
                     g_.diags.error(n->name.span, "new node `" + dn.name + "` needs a position: `at EXPR`, or a sketch "
                                                                           "position `@ (x, y)` for automatic placement");
                 }
                 if (!n->position && n->sketch) dg.autoPlacement = true;
+                if ((n->position || n->sketch) && g_.prog.angleLayout)
+                    g_.diags.error(n->name.span, "node `" + dn.name + "` is placed by the drawing step (`layout angles`): "
+                                                 "remove its `at` and `@`");
+                if (!n->position && !n->sketch && g_.prog.angleLayout) {
+                    // Made at the origin; the drawing step places it before the step is committed.
+                    ir::Expr origin;
+                    origin.type = ir::positionType(g_.prog);
+                    origin.span = n->name.span;
+                    origin.value = ir::Vec2{0, 0};
+                    dn.position = std::move(origin);
+                }
                 newNodes[dn.name] = static_cast<int>(dg.nodes.size());
                 elems.push_back(newNodeBinding(n->name, dn.kind, "this production", "the matched elements (their values before the step)"));
             }

@@ -2,6 +2,7 @@
 
 #include "sema/decl_checker.hpp"
 #include "sema/graph_checker.hpp"
+#include "sema/layout_checker.hpp"
 #include "sema/lint.hpp"
 #include "sema/sequence_checker.hpp"
 
@@ -55,9 +56,14 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
     });
     g.constsDeclared = static_cast<int>(prog.consts.size());
     g.functionsDeclared = static_cast<int>(prog.functions.size());
+    std::vector<const ast::KindDecl*> kindDecls;
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
-        if constexpr (std::is_same_v<T, ast::KindDecl>) checkKindBody(g, ec, d);
+        if constexpr (std::is_same_v<T, ast::KindDecl>) {
+            checkKindBody(g, ec, d);
+            checkEdgeLayout(g, ec, d);
+            kindDecls.push_back(&d);
+        }
     });
     // Compound names, so that `C.name` outside a rule gets a clear message (their lets come later).
     each([&](const auto& d) {
@@ -72,6 +78,8 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
             checkLimit(g, ec, d, limitSeen);
         } else if constexpr (std::is_same_v<T, ast::MergeDecl>) {
             checkMerge(g, ec, d);
+        } else if constexpr (std::is_same_v<T, ast::LayoutDecl>) {
+            checkLayoutDecl(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::PriorityDecl>) {
             checkPriority(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::DefsDecl>) {
@@ -121,6 +129,7 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
         if constexpr (std::is_same_v<T, ast::SequenceDecl>) checkSequence(g, d, ruleIndex);
     });
     checkCompoundBodies(g, compounds, ruleIndex);
+    checkAngleLayoutUse(g, kindDecls);
     if (diags.errorCount() == errorsBefore) checkCommandListsReach(g);
     if (diags.errorCount() > errorsBefore) return std::nullopt;
     lintProgram(g);

@@ -53,6 +53,7 @@ struct System {
     VectorXd xhat;                       // minimum-norm least-squares solution
     MatrixXd kernel;                     // K_A, orthonormal columns
     Eigen::CompleteOrthogonalDecomposition<MatrixXd> lengthFit;   // of K_A's length rows
+    bool lengthsMove = false;            // some sampled length varies in x̂ + K_A Λ
 };
 
 int find(std::vector<int>& parent, int i) {
@@ -131,8 +132,14 @@ void build(const AngleGraph& g, const std::vector<char>& isFree, System& s) {
     if (!s.consistent || s.kernel.cols() == 0) return;
 
     if (!s.sampled.empty()) {
+        // K_A's columns are orthonormal, so a length the system fixes (a side
+        // tied to a rigid one) has rounding noise there, not zero: clear it,
+        // or the fit's relative rank test would take the noise for freedom.
+        MatrixXd lengths = s.kernel.bottomRows(static_cast<Index>(s.sampled.size()));
+        lengths = lengths.unaryExpr([](double x) { return std::abs(x) <= kRankTolerance ? 0.0 : x; });
+        s.lengthsMove = lengths.cwiseAbs().maxCoeff() > 0;
         s.lengthFit.setThreshold(kRankTolerance);
-        s.lengthFit.compute(s.kernel.bottomRows(static_cast<Index>(s.sampled.size())));
+        if (s.lengthsMove) s.lengthFit.compute(lengths);
     }
     // Components of free vertices; one with an edge to a fixed vertex is anchored.
     const int nf = static_cast<int>(s.freeVertices.size());
@@ -164,6 +171,7 @@ void build(const AngleGraph& g, const std::vector<char>& isFree, System& s) {
 void sample(const AngleGraph& g, const DrawingSettings& st, const System& s, Rng& rng, std::vector<vec2>& pos) {
     VectorXd x = s.xhat;
     if (s.kernel.cols() > 0 && !s.sampled.empty()) {
+        // Targets are drawn even when no length can move: the draws per sample stay as documented.
         const Index p = static_cast<Index>(s.sampled.size());
         VectorXd target(p);
         for (Index k = 0; k < p; ++k) {
@@ -172,7 +180,7 @@ void sample(const AngleGraph& g, const DrawingSettings& st, const System& s, Rng
         }
         // The least-squares Λ of least norm: lengths the system ties (a
         // rectangle's opposite sides) get the mean of their targets.
-        x += s.kernel * s.lengthFit.solve(target - s.xhat.tail(p));
+        if (s.lengthsMove) x += s.kernel * s.lengthFit.solve(target - s.xhat.tail(p));
     }
     for (int v : s.freeVertices) pos[v] = {x(s.column[v]), x(s.column[v] + 1)};
     for (const std::vector<int>& comp : s.loose) {

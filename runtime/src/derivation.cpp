@@ -103,6 +103,8 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
 
     std::vector<std::size_t> order;
     ParallelStep parallel;
+    const AngleLayoutSpec* angles = rules.angleLayout();
+    AngleStep drawing;
     PickLookahead lookahead;
     std::optional<IncrementalMatches> found;   // before the summary, which reads it as it goes
     ResultSummary summary(result, lookahead);
@@ -257,9 +259,25 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                         const std::size_t d = pickDaughter(info.weights, rng);
                         daughter = d;
                         lookahead.ahead(r, info, set, m, rng, sets, rules, g);
-                        if (tracer) tracer->applying(r, d, m, g);
-                        rules.prepare(r, d, m, g, rng, step);
-                        rules.commit(g, step);
+                        if (!angles) {
+                            if (tracer) tracer->applying(r, d, m, g);
+                            rules.prepare(r, d, m, g, rng, step);
+                            rules.commit(g, step);
+                        } else {
+                            rules.prepare(r, d, m, g, rng, step);
+                            if (!drawing.propose(g, info.shapes[d], m, *angles, rng)) {
+                                // Nothing changes, and the step counts (Algorithm 3's N).
+                                rules.discard();
+                                ++result.rejectedDrawings;
+                                ++grp.applied;
+                                retireIfSpent(grp);
+                                applied = true;
+                                break;
+                            }
+                            if (tracer) tracer->applying(r, d, m, g);
+                            rules.commit(g, step);
+                            drawing.place(g, newNodesFrom);
+                        }
                         ++result.applications;
                     }
                 } catch (const DeadlinePassed&) {

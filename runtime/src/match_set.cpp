@@ -11,7 +11,7 @@ namespace g2d::rt {
 MatchSet::MatchSet(int nodes, int edges, int faces, bool byAge, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
     : nn_(nodes), ne_(edges), nf_(faces), width_(static_cast<std::size_t>(nodes + edges + faces)),
       stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 3 : 0)), byAge_(byAge) {
-    if (nodes <= 0) throw std::logic_error("a pattern without nodes");
+    if (nodes < 0) throw std::logic_error("a pattern with a negative node count");
     const IncidenceShape shape = incidenceShape(nodes, reads, directions);
     for (Incidence r : shape.reads) reads_.push_back(static_cast<std::uint8_t>(r));
     directions_ = shape.directions;
@@ -121,15 +121,19 @@ void MatchSet::unlinkAll(std::size_t head) {
 void MatchSet::unlinkBroken(NodeId n, const Graph& g) {
     std::uint32_t link = heads_[2 * std::size_t{n}];
     while (link != kNoId) {
-        // Read before a removal unlinks it: the next entry belongs to another
-        // match (a match binds a host node once: matching is injective).
-        const std::uint32_t next = rec_[link];
+        // Read before a removal unlinks it. A match binds a host node once,
+        // except where `dpo` wildcards share one: its links to that node were
+        // added one after the other, so they are neighbours here, skipped with it.
+        std::uint32_t next = rec_[link];
         const Id id = static_cast<Id>(link / stride_);
         const int position = static_cast<int>((link - id * stride_ - width_ - 1) / 2);
         bool broken = reads_[static_cast<std::size_t>(position)] == kAll;
         const std::uint32_t* edges = data(id) + nn_;
         for (int i = 0; i < ne_ && !broken; ++i) broken = !g.edgeAlive(edges[i]);
-        if (broken) remove(id);
+        if (broken) {
+            while (next != kNoId && next / stride_ == id) next = rec_[next];
+            remove(id);
+        }
         link = next;
     }
 }

@@ -1,5 +1,6 @@
 #include "g2d/run_driver.hpp"
 
+#include "g2d/drawn_faces.hpp"
 #include "g2d/projection.hpp"
 
 #include <chrono>
@@ -119,6 +120,8 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
             if (observer) observer(s, g);
         },
         trace);
+    if (const AngleLayoutSpec* layout = grammar.rules().angleLayout())
+        addDrawnFaces(grammar.graph(), grammar.rules(), *layout, out.result.steps);
     out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !settings.steps && !grammarLimit;
 }
 
@@ -244,10 +247,11 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
-                        "\"repairs\": %lld, \"repairs_skipped\": %lld}\n",
+                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
-                        result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped);
+                        result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
+                        result.rejectedDrawings);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;

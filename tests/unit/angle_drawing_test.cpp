@@ -570,3 +570,21 @@ TEST_CASE("degenerate input gives no NaN and no crash", "[angle-drawing]") {
         CHECK_FALSE(run(b.g, st).accepted);   // they coincide
     }
 }
+
+TEST_CASE("a sampled length that a rigid edge fixes is drawn at that length", "[angle-drawing]") {
+    // Merrell's framed box: the left side may be 1 to 5 long, the right one
+    // is rigid at 1, so the left one is 1 too: no length is free, and the
+    // kernel's rounding noise must not be fitted as if it were.
+    Builder b;
+    for (int i = 0; i < 4; ++i) b.vertex(0, 0, true);
+    b.edge(1, 0, kPi / 2, 1, 5);
+    b.edge(0, 2, 0, 1, 1);
+    b.edge(1, 3, 0, 1, 1);
+    b.edge(3, 2, kPi / 2, 1, 1);
+    Rng rng(1);
+    const DrawingResult r = drawAngleGraph(b.g, canvas(10, -16, 22, -4), rng);
+    REQUIRE(r.accepted);
+    CHECK(r.samples == 1);
+    const auto p = drawn(b.g, r);
+    for (const AngleEdge& e : b.g.edges) CHECK(std::abs(std::hypot(along(p, e).x, along(p, e).y) - 1) < 1e-9);
+}

@@ -467,6 +467,7 @@ public:
         inner_.prepare(rule, daughter, m, g, rng, step);
     }
     void commit(rt::Graph& g, long long step) override { inner_.commit(g, step); }
+    void discard() override { inner_.discard(); }
 
 private:
     rt::RuleSet& inner_;

@@ -20,7 +20,9 @@
 //   2. the match: below(n) over the rule's match set in its order (random), or
 //      over the tied oldest matches (oldest); no draw when there is one;
 //   3. the daughter: one unit() draw when the rule has several daughters;
-//   4. whatever the daughter's expressions draw, in source order.
+//   4. whatever the daughter's expressions draw, in source order;
+//   5. with `layout angles`, the drawing step's (angle_drawing.cpp), whether
+//      it accepts the application or not.
 // A parallel step shuffles the matches (random) or sorts them oldest first,
 // then takes each match that does not overlap those already taken, drawing
 // its daughter (3) in that order; then it evaluates the taken matches'
@@ -35,6 +37,7 @@
 #include <span>
 #include <vector>
 
+#include "g2d/angle_step.hpp"
 #include "g2d/command_list.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/match_set.hpp"
@@ -97,6 +100,9 @@ struct RuleInfo {
     // G^3's intersection tests (intersection_guard.hpp): an application
     // whose additions would intersect the model is undone.
     bool intersect = false;
+    // With `layout angles` (RuleSet::angleLayout): per daughter, what it
+    // does to the graph, for the drawing step (angle_step.hpp).
+    std::vector<DaughterShape> shapes;
 };
 
 // What repair needs of one pattern node, from RuleInfo (repairAnchors):
@@ -215,6 +221,12 @@ public:
                          long long step) = 0;
     // Applies every prepared application, in order, and forgets them.
     virtual void commit(Graph& g, long long step) = 0;
+    // Forgets the prepared applications without applying them (a drawing
+    // the `layout angles` step rejected).
+    virtual void discard() = 0;
+    // `layout angles` (angle_step.hpp): each application is drawn before it
+    // is committed. Null: positions come from the rules.
+    virtual const AngleLayoutSpec* angleLayout() const { return nullptr; }
     // Asks for the cache lines a rewrite of `m` reads beyond the graph's
     // records (generated code: the matched elements' attribute records), for
     // a likely later pick (PickLookahead). Reads the elements' records, which
@@ -225,6 +237,11 @@ public:
     // Gives a face that merging split off (node_merge.hpp) the attributes of
     // the face it came from (the graph's own pools by default).
     virtual void copyFaceAttributes(Graph& g, FaceId from, FaceId to) { g.copyFaceAttrs(from, to); }
+    // A face the run adds itself (drawn_faces.hpp), with its kind's default
+    // attributes (the graph's own pools by default).
+    virtual FaceId addFaceWithDefaults(Graph& g, int kind, std::span<const NodeId> corners, long long age) {
+        return g.addFace(kind, corners, age);
+    }
     // A G^3 command list (`sequence { … }`): these entries in this order,
     // a rule applied once to all its matches at once (a parallel step,
     // whatever the rule says), a compound as compound_run.hpp says; then the
@@ -269,6 +286,7 @@ struct DerivationOptions {
 struct DerivationResult {
     long long steps = 0;
     long long applications = 0;   // rewrites applied (a parallel step applies many)
+    long long rejectedDrawings = 0;   // `layout angles`: steps whose drawing was rejected (nothing applied)
     StopReason stopped = StopReason::Terminal;
     double seconds = 0;
     // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.

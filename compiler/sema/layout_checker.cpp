@@ -1,0 +1,188 @@
+#include "sema/layout_checker.hpp"
+
+#include <cmath>
+#include <map>
+
+#include "diag/suggest.hpp"
+#include "sema/const_fold.hpp"
+
+namespace g2d::sema {
+
+namespace {
+
+ExprEnv layoutEnv() {
+    ExprEnv env;
+    env.context = "a layout";
+    env.allowRandom = false;
+    env.allowElements = false;
+    env.allowLocals = false;
+    return env;
+}
+
+// The folded value of a layout property of `type`, or nothing (reported).
+std::optional<ir::Value> constant(Globals& g, ExprChecker& ec, const ast::StyleProp& p, ir::Type type) {
+    auto v = ec.checkAs(*p.value, type, layoutEnv(), "`" + p.name.name + "`");
+    if (!v) return std::nullopt;
+    std::string error;
+    auto f = fold(*v, g.prog, &error);
+    if (!f) {
+        g.diags.error(p.value->span, error.empty() ? "`" + p.name.name + "` must be known when the grammar is compiled "
+                                                     "(literals, constants and built-ins; no parameters)"
+                                                   : error);
+        return std::nullopt;
+    }
+    return f;
+}
+
+bool finite(double x) { return std::isfinite(x); }
+
+}  // namespace
+
+void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
+    if (d.name.name != "angles") {
+        g.diags.error(d.name.span, "unknown layout `" + d.name.name + "`: the one layout is `angles` (Merrell 2023's drawing step)");
+        return;
+    }
+    if (g.prog.angleLayout) {
+        auto& diag = g.diags.error(d.span, "`layout angles` is declared twice");
+        diag.notes.push_back({g.prog.angleLayout->span, "the first declaration is here"});
+        return;
+    }
+    if (g.prog.space3d) g.diags.error(d.span, "`layout angles` draws 2D grammars only");
+    ir::AngleLayout out;
+    out.span = d.span;
+    std::map<std::string, Span> seen;
+    bool haveMin = false, haveMax = false;
+    for (const auto& p : d.props) {
+        if (auto [it, fresh] = seen.emplace(p.name.name, p.span); !fresh) {
+            g.diags.error(p.name.span, "`" + p.name.name + "` is set twice");
+            continue;
+        }
+        const std::string& n = p.name.name;
+        if (n == "canvas_min" || n == "canvas_max") {
+            auto v = constant(g, ec, p, ir::kVec2Type);
+            if (!v) continue;
+            const auto& xy = std::get<ir::Vec2>(*v);
+            double* to = n == "canvas_min" ? out.canvasMin : out.canvasMax;
+            to[0] = xy.x, to[1] = xy.y;
+            (n == "canvas_min" ? haveMin : haveMax) = true;
+            if (!finite(xy.x) || !finite(xy.y)) g.diags.error(p.value->span, "`" + n + "` must be finite");
+        } else if (n == "proposals" || n == "samples") {
+            auto v = constant(g, ec, p, ir::Type::of(ir::TypeKind::Int));
+            if (!v) continue;
+            const long long k = std::get<long long>(*v);
+            if (k < 1 || k > 1000) {
+                g.diags.error(p.value->span, "`" + n + "` must be between 1 and 1000");
+                continue;
+            }
+            (n == "proposals" ? out.proposals : out.samples) = static_cast<int>(k);
+        } else {
+            g.diags.error(p.name.span, "unknown property `" + n + "` of `layout angles`" +
+                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples"}));
+        }
+    }
+    if (!haveMin || !haveMax) {
+        g.diags.error(d.span, "`layout angles` needs its canvas: `canvas_min = (x, y);` and `canvas_max = (x, y);`");
+        return;
+    }
+    if (!(out.canvasMin[0] < out.canvasMax[0] && out.canvasMin[1] < out.canvasMax[1]))
+        g.diags.error(d.span, "the canvas is empty: `canvas_min` must lie below and left of `canvas_max`");
+    g.prog.angleLayout = out;
+}
+
+void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
+    if (!d.hasLayout) return;
+    auto it = g.kinds.find(d.name.name);
+    if (it == g.kinds.end()) return;
+    ir::Kind& kind = g.prog.kinds[static_cast<std::size_t>(it->second)];
+    if (d.cls != ast::KindDecl::Class::Edge) {
+        g.diags.error(d.name.span, "only edge kinds have a `layout { … }` (an edge's angle and lengths)");
+        return;
+    }
+    if (!d.directed.value_or(false)) {
+        g.diags.error(d.name.span, "edge kind `" + d.name.name + "` has a layout, so it must be `directed`: its angle "
+                                   "points from source to target");
+        return;
+    }
+    ir::EdgeLayout out;
+    out.span = d.span;
+    std::map<std::string, Span> seen;
+    bool angle = false, minL = false, maxL = false;
+    for (const auto& p : d.layout) {
+        const std::string& n = p.name.name;
+        if (auto [i, fresh] = seen.emplace(n, p.span); !fresh) {
+            g.diags.error(p.name.span, "`" + n + "` is set twice");
+            continue;
+        }
+        if (n == "left" || n == "right") {
+            const auto* name = std::get_if<ast::Name>(&p.value->node);
+            auto k = name ? g.kinds.find(name->name) : g.kinds.end();
+            if (k == g.kinds.end() || g.prog.kinds[static_cast<std::size_t>(k->second)].cls != ir::ElemClass::Face) {
+                g.diags.error(p.value->span, "`" + n + "` names the face kind on that side of the edge");
+                continue;
+            }
+            (n == "left" ? out.left : out.right) = k->second;
+            continue;
+        }
+        if (n != "angle" && n != "length" && n != "min_length" && n != "max_length") {
+            g.diags.error(p.name.span, "unknown layout property `" + n + "`" +
+                                           suggest(n, {"angle", "length", "min_length", "max_length", "left", "right"}));
+            continue;
+        }
+        auto v = constant(g, ec, p, ir::kFloatType);
+        if (!v) continue;
+        const double x = asNumber(*v);
+        if (!finite(x)) {
+            g.diags.error(p.value->span, "`" + n + "` must be finite");
+            continue;
+        }
+        if (n == "angle") out.angle = x, angle = true;
+        else if (n == "length") out.minLength = out.maxLength = x, minL = maxL = true;
+        else if (n == "min_length") out.minLength = x, minL = true;
+        else out.maxLength = x, maxL = true;
+    }
+    if (seen.count("length") && (seen.count("min_length") || seen.count("max_length")))
+        g.diags.error(d.name.span, "give `length` (a rigid edge) or `min_length` and `max_length`, not both");
+    if (!angle || !minL || !maxL) {
+        g.diags.error(d.name.span, "the layout of `" + d.name.name + "` needs `angle` (radians) and its lengths: `length` or "
+                                   "`min_length` and `max_length`");
+        return;
+    }
+    if (!(out.maxLength > 0) || out.minLength < 0 || out.minLength > out.maxLength) {
+        g.diags.error(d.name.span, "the lengths of `" + d.name.name + "` must satisfy 0 <= min_length <= max_length, max_length > 0");
+        return;
+    }
+    kind.layout = out;
+}
+
+void checkAngleLayoutUse(Globals& g, const std::vector<const ast::KindDecl*>& kinds) {
+    if (!g.prog.angleLayout) {
+        for (const auto* d : kinds)
+            if (d->hasLayout && d->cls == ast::KindDecl::Class::Edge)
+                g.diags.warning(d->name.span, "edge kind `" + d->name.name + "` has a layout, but the grammar has no "
+                                              "`layout angles { … }` that uses it");
+        return;
+    }
+    for (const auto& k : g.prog.kinds)
+        if (k.cls == ir::ElemClass::Edge && !k.layout)
+            g.diags.error(k.span, "with `layout angles`, edge kind `" + k.name + "` needs a `layout { angle = …; length = …; }`");
+    if (!g.prog.sequence.empty()) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with a `sequence`");
+    if (g.prog.mergeAll) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with `merge within`");
+    for (const auto& r : g.prog.rules) {
+        if (r.parallel || (g.prog.priorities.count(r.priority) && g.prog.priorities.at(r.priority).parallel))
+            g.diags.error(r.span, "rule `" + r.name + "` is parallel, but with `layout angles` each application is drawn on "
+                                  "its own");
+        if (r.merge || r.intersect) g.diags.error(r.span, "rule `" + r.name + "`: `merge` and `intersect` do not combine with `layout angles`");
+        for (const auto& d : r.daughters) {
+            for (const auto& n : d.nodes)
+                if (n.motherNode >= 0 && n.position)
+                    g.diags.error(n.span, "node `" + n.name + "` keeps the place the drawing step gave it (`layout angles`): "
+                                          "remove its `at`");
+            if (!d.loops.empty() || !d.splits.empty() || !d.inserts.empty())
+                g.diags.error(d.span, "with `layout angles`, a daughter makes its nodes and edges one by one (no `for`, "
+                                      "`split` or `insert`)");
+        }
+    }
+}
+
+}  // namespace g2d::sema

@@ -1,0 +1,186 @@
+// g2d infer's grammar writer: the two sides of every inferred rule as plain
+// graphs (one interface, the same half-edge at each interface node before
+// and after, every vertex with its primitive's star), and the `.g2d` text.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "infer/example_json.hpp"
+#include "infer/grammar_writer.hpp"
+#include "infer/rule_sides.hpp"
+
+using namespace g2d::infer;
+
+namespace {
+
+const std::string kExamples = G2D_SOURCE_DIR "/examples/infer/merrell";
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::pair<std::string, LabelledExample>> allExamples() {
+    std::vector<std::pair<std::string, LabelledExample>> out;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples))
+        if (entry.path().extension() == ".json")
+            out.emplace_back(entry.path().string(), labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string())));
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    return out;
+}
+
+// A hierarchy small enough for tests over every example (as infer_test.cpp).
+InferOptions small() {
+    InferOptions o;
+    o.maxGraphs = 600;
+    return o;
+}
+
+// Per interface node: its edge ends on one side, as (label, 1 if the node is the source).
+std::map<int, std::vector<std::pair<int, int>>> interfaceEnds(const RuleSide& side) {
+    std::map<int, std::vector<std::pair<int, int>>> ends;
+    for (const SideEdge& e : side.edges) {
+        if (e.from < 0) ends[-1 - e.from].push_back({e.label, 1});
+        if (e.to < 0) ends[-1 - e.to].push_back({e.label, 0});
+    }
+    return ends;
+}
+
+// Every vertex of the side holds exactly its primitive's half-edges.
+bool starsMatch(const LabelledExample& ex, const RuleSide& side) {
+    std::vector<std::vector<int>> halves(side.primitive.size());
+    for (const SideEdge& e : side.edges) {
+        if (e.from >= static_cast<int>(halves.size()) || e.to >= static_cast<int>(halves.size())) return false;
+        if (e.from >= 0) halves[static_cast<std::size_t>(e.from)].push_back(halfLabel(e.label, false));
+        if (e.to >= 0) halves[static_cast<std::size_t>(e.to)].push_back(halfLabel(e.label, true));
+    }
+    for (std::size_t v = 0; v < halves.size(); ++v) {
+        std::vector<int> want = ex.primitives[static_cast<std::size_t>(side.primitive[v])].halves;
+        std::sort(want.begin(), want.end());
+        std::sort(halves[v].begin(), halves[v].end());
+        if (halves[v] != want) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("every rule's sides share one interface, each node with the same half-edge on both", "[infer][writer]") {
+    int rules = 0, edgePieces = 0;
+    for (const auto& [path, ex] : allExamples()) {
+        const InferredGrammar g = inferGrammar(ex, small());
+        for (std::size_t r = 0; r < g.rules.size(); ++r) {
+            INFO(path << ", rule " << r);
+            const InferredRule& rule = g.rules[r];
+            const RuleSides s = ruleSides(ex, g, rule);
+            ++rules;
+            for (const RulePiece& p : rule.right) edgePieces += g.hierarchy[static_cast<std::size_t>(p.graph)].graph.isEdgeGraph() ? 1 : 0;
+            CHECK(s.interface == static_cast<int>(g.hierarchy[static_cast<std::size_t>(rule.left)].graph.boundary.size()));
+            CHECK((s.interface == 0) == rule.starter());
+            if (rule.starter()) CHECK((s.right.primitive.empty() && s.right.edges.empty()));
+            const auto left = interfaceEnds(s.left), right = interfaceEnds(s.right);
+            CHECK(static_cast<int>(left.size()) == s.interface);
+            CHECK(static_cast<int>(right.size()) == s.interface);
+            for (int k = 0; k < s.interface; ++k) {
+                INFO("interface node " << k);
+                REQUIRE(left.count(k) == 1);
+                REQUIRE(right.count(k) == 1);
+                CHECK(left.at(k).size() == 1);
+                CHECK(left.at(k) == right.at(k));
+            }
+            CHECK(starsMatch(ex, s.left));
+            CHECK(starsMatch(ex, s.right));
+        }
+    }
+    CHECK(rules > 1000);
+    CHECK(edgePieces > 0);   // the edge-graph case (two interface nodes joined) is exercised
+}
+
+TEST_CASE("the triangle's grammar text", "[infer][writer]") {
+    const std::string path = kExamples + "/2D Basic Shapes/triangle.json";
+    const LabelledExample ex = labelExample(readExampleJson(readFile(path), path));
+    // Vertices (2.5, -5), (5, -2.5), (7.5, -5): a box 5 x 2.5 grown by half on each side;
+    // edges 3.54, 3.54 and 5 long: half the shortest to twice the longest, strokes 0.05 x 3.54.
+    const std::string golden = R"(// Inferred by `g2d infer` from triangle.json (Merrell 2023, example-based graph grammars).
+// 3 edge labels, 3 primitives, 0 rules, 1 starters. Run: g2d run <file> -o out.svg --seed 1
+layout angles {
+    canvas_min = (0, -6.25);
+    canvas_max = (10, -1.25);
+}
+param iterations: int = 1000;
+limit iterations;
+
+// Edge labels: brush, the areas left and right, the direction.
+edge E0 directed {
+    label: int = 0;
+    layout { angle = radians(45); min_length = 1.76777; max_length = 7.07107; }
+    style { stroke = "#202020"; stroke_width = 0.18; }
+}
+edge E1 directed {
+    label: int = 1;
+    layout { angle = radians(135); min_length = 1.76777; max_length = 7.07107; }
+    style { stroke = "#202020"; stroke_width = 0.18; }
+}
+edge E2 directed {
+    label: int = 2;
+    layout { angle = radians(0); min_length = 2.5; max_length = 10; }
+    style { stroke = "#202020"; stroke_width = 0.18; }
+}
+
+// Primitives (vertex stars): the half-edges counter-clockwise.
+node P0 { style { tag = "none"; } }   // E2 out 0°, E0 out 45°
+node P1 { style { tag = "none"; } }   // E0 in 225°, E1 in 315°
+node P2 { style { tag = "none"; } }   // E1 out 135°, E2 in 180°
+
+axiom { }
+
+// Starter 0: a complete graph from nothing, and back to nothing.
+rule Start0 dpo {
+    match { }
+    produce {
+        v0: P0;
+        v1: P2;
+        v2: P1;
+        v0 -[E2]-> v1;
+        v0 -[E0]-> v2;
+        v1 -[E1]-> v2;
+    }
+}
+rule Stop0 dpo {
+    match {
+        v0: P0;
+        v1: P2;
+        v2: P1;
+        v0 -[E2]-> v1;
+        v0 -[E0]-> v2;
+        v1 -[E1]-> v2;
+    }
+    produce { }
+}
+)";
+    WriterOptions o;
+    o.source = "triangle.json";
+    CHECK(writeGrammar(ex, inferGrammar(ex), o) == golden);
+}
+
+TEST_CASE("the grammar text is deterministic, with two rules per inferred rule", "[infer][writer]") {
+    for (const auto& [path, ex] : allExamples()) {
+        INFO(path);
+        WriterOptions o;
+        o.source = path;
+        o.iterations = 500;
+        const InferredGrammar g = inferGrammar(ex, small());
+        const std::string text = writeGrammar(ex, g, o);
+        CHECK(text == writeGrammar(ex, inferGrammar(ex, small()), o));
+        CHECK(text.find("param iterations: int = 500;\n") != std::string::npos);
+        std::size_t rules = 0;
+        for (std::size_t at = text.find("\nrule "); at != std::string::npos; at = text.find("\nrule ", at + 1)) ++rules;
+        CHECK(rules == 2 * g.rules.size());
+    }
+}

@@ -1,0 +1,168 @@
+// g2d infer's grammars run (Merrell 2023 §6, issue #30): for every example,
+// the written grammar compiles without a diagnostic, and its outputs for
+// several seeds are planar drawings whose every vertex is a vertex of the
+// example — the same labelled edges in the same directions, so the same
+// areas between them — with faces on the right sides, and new shapes.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "front/compile.hpp"
+#include "g2d/angle_drawing.hpp"
+#include "infer/example_json.hpp"
+#include "infer/grammar_writer.hpp"
+#include "interp/run_program.hpp"
+#include "test_helpers.hpp"
+
+using namespace g2d;
+
+namespace {
+
+const std::string kExamples = G2D_SOURCE_DIR "/examples/infer/merrell";
+constexpr long long kSteps = 300;
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> examplePaths() {
+    std::vector<std::string> out;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples))
+        if (entry.path().extension() == ".json") out.push_back(entry.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// The number after a kind's letter: P3 -> 3 (the writer's names).
+int indexOf(const std::string& kindName) { return std::stoi(kindName.substr(1)); }
+
+double degreesOf(rt::vec2 v) { return std::atan2(v.y, v.x) * 180 / M_PI; }
+
+// [-180, 180)
+double wrap(double d) {
+    while (d >= 180) d -= 360;
+    while (d < -180) d += 360;
+    return d;
+}
+
+struct Output {
+    std::size_t nodes = 0, faces = 0;
+    std::vector<std::pair<double, double>> positions;   // sorted
+};
+
+// Checks one output against the example; returns its summary.
+Output checkOutput(const infer::LabelledExample& ex, const ir::Program& prog, const rt::Graph& g) {
+    Output out;
+    std::vector<rt::vec2> position;
+    std::vector<int> vertex(g.nodeCapacity(), -1);
+    for (rt::NodeId n = 0; n < g.nodeCapacity(); ++n) {
+        if (!g.nodeAlive(n)) continue;
+        vertex[n] = static_cast<int>(position.size());
+        position.push_back(g.pos(n));
+        out.positions.emplace_back(g.pos(n).x, g.pos(n).y);
+    }
+    std::sort(out.positions.begin(), out.positions.end());
+    out.nodes = position.size();
+    // Every edge points along its label's direction, with a length in range.
+    std::vector<rt::AngleEdge> edges;
+    for (rt::EdgeId e = 0; e < g.edgeCapacity(); ++e) {
+        if (!g.edgeAlive(e)) continue;
+        const int label = indexOf(prog.kinds[static_cast<std::size_t>(g.edgeKind(e))].name);
+        const infer::EdgeLabel& l = ex.labels[static_cast<std::size_t>(label)];
+        const rt::vec2 d = g.pos(g.target(e)) - g.pos(g.source(e));
+        const double length = std::hypot(d.x, d.y);
+        INFO("edge label " << label << " length " << length << " direction " << degreesOf(d) << " expected " << l.theta);
+        CHECK(length > 1e-9);
+        CHECK(length >= l.minLength * (1 - 1e-9));
+        CHECK(length <= l.maxLength * (1 + 1e-9));
+        CHECK(std::abs(wrap(degreesOf(d) - l.theta)) < 1e-6);
+        edges.push_back(rt::AngleEdge{vertex[g.source(e)], vertex[g.target(e)], l.theta * M_PI / 180, l.minLength, l.maxLength});
+    }
+    CHECK(rt::drawingIsPlanar(position, edges, 1e-9));
+    // Every vertex star is its primitive's: the half-edges by direction.
+    for (rt::NodeId n = 0; n < g.nodeCapacity(); ++n) {
+        if (!g.nodeAlive(n)) continue;
+        const int primitive = indexOf(prog.kinds[static_cast<std::size_t>(g.nodeKind(n))].name);
+        std::vector<std::pair<double, int>> star;
+        for (rt::EdgeId e : g.incident(n)) {
+            const int label = indexOf(prog.kinds[static_cast<std::size_t>(g.edgeKind(e))].name);
+            const bool source = g.source(e) == n;
+            const double theta = ex.labels[static_cast<std::size_t>(label)].theta;
+            star.emplace_back(wrap(source ? theta : theta - 180), infer::halfLabel(label, !source));
+        }
+        std::sort(star.begin(), star.end());
+        std::vector<int> halves;
+        for (const auto& s : star) halves.push_back(s.second);
+        INFO("node " << n << " of primitive " << primitive);
+        CHECK(halves == ex.primitives[static_cast<std::size_t>(primitive)].halves);
+    }
+    // Faces: counter-clockwise, each side an edge with the face's area on that side.
+    for (rt::FaceId f = 0; f < g.faceCapacity(); ++f) {
+        if (!g.faceAlive(f)) continue;
+        ++out.faces;
+        const int area = indexOf(prog.kinds[static_cast<std::size_t>(g.faceKind(f))].name);
+        double twiceArea = 0;
+        const rt::CornerId first = g.firstCorner(f);
+        rt::CornerId c = first;
+        do {
+            const rt::NodeId u = g.cornerNode(c), v = g.cornerNode(g.nextCorner(c));
+            twiceArea += g.pos(u).x * g.pos(v).y - g.pos(v).x * g.pos(u).y;
+            int side = -2;
+            for (rt::EdgeId e : g.incident(u)) {
+                const int label = indexOf(prog.kinds[static_cast<std::size_t>(g.edgeKind(e))].name);
+                if (g.source(e) == u && g.target(e) == v) side = ex.labels[static_cast<std::size_t>(label)].left;
+                if (g.source(e) == v && g.target(e) == u) side = ex.labels[static_cast<std::size_t>(label)].right;
+            }
+            INFO("face " << f << " of area " << area);
+            CHECK(side == area);
+            c = g.nextCorner(c);
+        } while (c != first);
+        CHECK(twiceArea > 0);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("every inferred grammar compiles cleanly and generates locally similar planar drawings", "[infer][generation]") {
+    int nonEmpty = 0;
+    for (const std::string& path : examplePaths()) {
+        INFO(path);
+        const infer::LabelledExample ex = infer::labelExample(infer::readExampleJson(readFile(path), path));
+        const infer::InferredGrammar grammar = infer::inferGrammar(ex);
+        infer::WriterOptions writer;
+        writer.source = std::filesystem::path(path).filename().string();
+        writer.iterations = static_cast<int>(kSteps);
+        const std::string text = infer::writeGrammar(ex, grammar, writer);
+        const CompileResult compiled = test::compile(text, "inferred.g2d");
+        INFO(test::firstError(compiled));
+        REQUIRE(compiled.program);
+        CHECK(test::diagnosticLines(compiled).empty());   // g2d check --werror
+        std::vector<Output> outputs;
+        for (std::uint64_t seed : {1, 2, 3}) {
+            INFO("seed " << seed);
+            rt::RunSettings settings;
+            const interp::RunResult run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), seed, settings);
+            CHECK(run.derivation.steps == kSteps);
+            outputs.push_back(checkOutput(ex, *compiled.program, run.graph()));
+        }
+        // New shapes: the seeds' outputs differ, and none is the example.
+        std::vector<std::pair<double, double>> example;
+        for (const auto& v : ex.shape.vertices) example.emplace_back(v.x, v.y);
+        std::sort(example.begin(), example.end());
+        for (const Output& o : outputs) {
+            if (o.nodes > 0) ++nonEmpty;
+            CHECK(o.positions != example);
+        }
+        CHECK((outputs[0].positions != outputs[1].positions || outputs[1].positions != outputs[2].positions));
+    }
+    CHECK(nonEmpty > 0);
+}
