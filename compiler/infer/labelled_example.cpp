@@ -5,6 +5,8 @@
 #include <map>
 #include <tuple>
 
+#include "infer/straighten.hpp"
+
 namespace g2d::infer {
 namespace {
 
@@ -85,10 +87,10 @@ std::vector<double> directionGroups(const std::vector<double>& line, double tole
     }
     std::vector<double> mean;
     for (std::size_t k = 0; k < first.size(); ++k) {
-        double m = wrap180(degrees(std::atan2(sum[k].second, sum[k].first)) / 2);
-        // A direction that is a whole number of degrees to within drawing noise is that number.
-        const double whole = std::round(m * 1e6) / 1e6;
-        mean.push_back(wrap180(whole));
+        const double m = wrap180(degrees(std::atan2(sum[k].second, sum[k].first)) / 2);
+        // A direction that is a whole number of degrees to within rounding is that number.
+        const double whole = std::round(m);
+        mean.push_back(wrap180(std::abs(m - whole) < 1e-6 ? whole : m));
     }
     return mean;
 }
@@ -125,7 +127,8 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
         length.push_back(std::hypot(b.x - a.x, b.y - a.y));
     }
     std::vector<int> groupOf;
-    const std::vector<double> groups = directionGroups(line, options.angleTolerance, groupOf);
+    std::vector<double> groups = directionGroups(line, options.angleTolerance, groupOf);
+    straightenSingletons(shape, groupOf, groups);
 
     // Labels: (brush, left, right, direction[, length of a rigid edge]).
     std::map<std::tuple<int, int, int, int, double>, int> labelOf;

@@ -205,7 +205,9 @@ bool InterpretedRules::bindFace(const rt::Graph& g, const lower::MatchFace& o, c
 
 // The edges at `from` that may bind a pattern edge: a directed one among
 // `from`'s outgoing (or incoming) edges only, an undirected one among both
-// (outgoing first, self-loops once). Stops when `each` returns true.
+// (outgoing first, self-loops once: they are on both lists). A directed
+// self-loop can bind an incoming pattern edge too (its ends may be `dpo`
+// wildcards sharing the node). Stops when `each` returns true.
 template <class Each>
 bool InterpretedRules::eachEdgeAt(const rt::Graph& g, NodeId from, bool directed, bool outgoing, Each& each) {
     if (!directed || outgoing)
@@ -213,7 +215,7 @@ bool InterpretedRules::eachEdgeAt(const rt::Graph& g, NodeId from, bool directed
             if (each(e)) return true;
     if (!directed || !outgoing)
         for (EdgeId e = g.firstIn(from); e != kNoId; e = g.nextIn(e))
-            if (g.source(e) != g.target(e) && each(e)) return true;
+            if ((directed || g.source(e) != g.target(e)) && each(e)) return true;
     return false;
 }
 

@@ -33,6 +33,7 @@ struct Globals {
     std::map<std::string, Span> laterValues, laterFunctions;
     std::string definingConst;                  // the constant whose value is being checked
     std::map<std::string, int> compounds;       // compound name -> index (its lets are readable as C.name)
+    bool layoutDeclared = false;                // a `layout …` declaration, even a bad one
     // Per rule (by index), the compounds whose lets it reads, with a place (it must run within them).
     std::map<int, std::map<int, Span>> compoundReads;
 

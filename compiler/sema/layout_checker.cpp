@@ -39,6 +39,7 @@ bool finite(double x) { return std::isfinite(x); }
 }  // namespace
 
 void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
+    g.layoutDeclared = true;
     if (d.name.name != "angles") {
         g.diags.error(d.name.span, "unknown layout `" + d.name.name + "`: the one layout is `angles` (Merrell 2023's drawing step)");
         return;
@@ -53,6 +54,7 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
     out.span = d.span;
     std::map<std::string, Span> seen;
     bool haveMin = false, haveMax = false;
+    const std::size_t errorsBefore = g.diags.errorCount();
     for (const auto& p : d.props) {
         if (auto [it, fresh] = seen.emplace(p.name.name, p.span); !fresh) {
             g.diags.error(p.name.span, "`" + p.name.name + "` is set twice");
@@ -82,6 +84,7 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
         }
     }
     if (!haveMin || !haveMax) {
+        if (g.diags.errorCount() > errorsBefore) return;   // a misspelt or bad canvas property, reported
         g.diags.error(d.span, "`layout angles` needs its canvas: `canvas_min = (x, y);` and `canvas_max = (x, y);`");
         return;
     }
@@ -108,6 +111,7 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     out.span = d.span;
     std::map<std::string, Span> seen;
     bool angle = false, minL = false, maxL = false;
+    const std::size_t errorsBefore = g.diags.errorCount();
     for (const auto& p : d.layout) {
         const std::string& n = p.name.name;
         if (auto [i, fresh] = seen.emplace(n, p.span); !fresh) {
@@ -143,6 +147,7 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     }
     if (seen.count("length") && (seen.count("min_length") || seen.count("max_length")))
         g.diags.error(d.name.span, "give `length` (a rigid edge) or `min_length` and `max_length`, not both");
+    if (g.diags.errorCount() > errorsBefore) return;   // the property's own error says it
     if (!angle || !minL || !maxL) {
         g.diags.error(d.name.span, "the layout of `" + d.name.name + "` needs `angle` (radians) and its lengths: `length` or "
                                    "`min_length` and `max_length`");
@@ -157,15 +162,16 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
 
 void checkAngleLayoutUse(Globals& g, const std::vector<const ast::KindDecl*>& kinds) {
     if (!g.prog.angleLayout) {
+        if (g.layoutDeclared) return;   // its error is reported
         for (const auto* d : kinds)
             if (d->hasLayout && d->cls == ast::KindDecl::Class::Edge)
                 g.diags.warning(d->name.span, "edge kind `" + d->name.name + "` has a layout, but the grammar has no "
                                               "`layout angles { … }` that uses it");
         return;
     }
-    for (const auto& k : g.prog.kinds)
-        if (k.cls == ir::ElemClass::Edge && !k.layout)
-            g.diags.error(k.span, "with `layout angles`, edge kind `" + k.name + "` needs a `layout { angle = …; length = …; }`");
+    for (const auto* d : kinds)   // a layout block with an error has been reported already
+        if (d->cls == ast::KindDecl::Class::Edge && !d->hasLayout)
+            g.diags.error(d->span, "with `layout angles`, edge kind `" + d->name.name + "` needs a `layout { angle = …; length = …; }`");
     if (!g.prog.sequence.empty()) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with a `sequence`");
     if (g.prog.mergeAll) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with `merge within`");
     for (const auto& r : g.prog.rules) {

@@ -119,12 +119,12 @@ limit iterations;
 // Edge labels: brush, the areas left and right, the direction.
 edge E0 directed {
     label: int = 0;
-    layout { angle = radians(45); min_length = 1.76777; max_length = 7.07107; }
+    layout { angle = radians(45); min_length = 1.767767; max_length = 7.071068; }
     style { stroke = "#202020"; stroke_width = 0.18; }
 }
 edge E1 directed {
     label: int = 1;
-    layout { angle = radians(135); min_length = 1.76777; max_length = 7.07107; }
+    layout { angle = radians(135); min_length = 1.767767; max_length = 7.071068; }
     style { stroke = "#202020"; stroke_width = 0.18; }
 }
 edge E2 directed {

@@ -130,39 +130,71 @@ Output checkOutput(const infer::LabelledExample& ex, const ir::Program& prog, co
     return out;
 }
 
+// Infers, writes and compiles the grammar of `ex` (no diagnostic: g2d check
+// --werror), runs it for seeds 1-3 and checks each output.
+std::vector<Output> generate(const infer::LabelledExample& ex, const std::string& source) {
+    const infer::InferredGrammar grammar = infer::inferGrammar(ex);
+    infer::WriterOptions writer;
+    writer.source = source;
+    writer.iterations = static_cast<int>(kSteps);
+    const std::string text = infer::writeGrammar(ex, grammar, writer);
+    const CompileResult compiled = test::compile(text, "inferred.g2d");
+    INFO(test::firstError(compiled));
+    REQUIRE(compiled.program);
+    CHECK(test::diagnosticLines(compiled).empty());
+    std::vector<Output> outputs;
+    for (std::uint64_t seed : {1, 2, 3}) {
+        INFO("seed " << seed);
+        rt::RunSettings settings;
+        const interp::RunResult run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), seed, settings);
+        CHECK(run.derivation.steps == kSteps);
+        outputs.push_back(checkOutput(ex, *compiled.program, run.graph()));
+    }
+    return outputs;
+}
+
+bool anyDrawn(const std::vector<Output>& outputs) {
+    return std::any_of(outputs.begin(), outputs.end(), [](const Output& o) { return o.nodes > 0; });
+}
+
 }  // namespace
 
 TEST_CASE("every inferred grammar compiles cleanly and generates locally similar planar drawings", "[infer][generation]") {
-    int nonEmpty = 0;
+    int drawn = 0;
     for (const std::string& path : examplePaths()) {
         INFO(path);
         const infer::LabelledExample ex = infer::labelExample(infer::readExampleJson(readFile(path), path));
-        const infer::InferredGrammar grammar = infer::inferGrammar(ex);
-        infer::WriterOptions writer;
-        writer.source = std::filesystem::path(path).filename().string();
-        writer.iterations = static_cast<int>(kSteps);
-        const std::string text = infer::writeGrammar(ex, grammar, writer);
-        const CompileResult compiled = test::compile(text, "inferred.g2d");
-        INFO(test::firstError(compiled));
-        REQUIRE(compiled.program);
-        CHECK(test::diagnosticLines(compiled).empty());   // g2d check --werror
-        std::vector<Output> outputs;
-        for (std::uint64_t seed : {1, 2, 3}) {
-            INFO("seed " << seed);
-            rt::RunSettings settings;
-            const interp::RunResult run = interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), seed, settings);
-            CHECK(run.derivation.steps == kSteps);
-            outputs.push_back(checkOutput(ex, *compiled.program, run.graph()));
-        }
+        const std::vector<Output> outputs = generate(ex, std::filesystem::path(path).filename().string());
         // New shapes: the seeds' outputs differ, and none is the example.
         std::vector<std::pair<double, double>> example;
         for (const auto& v : ex.shape.vertices) example.emplace_back(v.x, v.y);
         std::sort(example.begin(), example.end());
-        for (const Output& o : outputs) {
-            if (o.nodes > 0) ++nonEmpty;
-            CHECK(o.positions != example);
-        }
+        for (const Output& o : outputs) CHECK(o.positions != example);
+        if (!anyDrawn(outputs)) continue;   // listed below
+        ++drawn;
         CHECK((outputs[0].positions != outputs[1].positions || outputs[1].positions != outputs[2].positions));
     }
-    CHECK(nonEmpty > 0);
+    // The drawing step cannot draw every example's starter (docs/infer.md,
+    // "Generation"): two examples' directions do not close their loops as
+    // drawn, and one needs lengths that rejection sampling rarely finds.
+    CHECK(drawn == 42);
+}
+
+TEST_CASE("a drawn example a pixel off is straightened so that its loops close", "[infer][generation]") {
+    // A triangle with a centre vertex is rigid but for its size; a segment
+    // from its apex, half a degree off the horizontal, joins the triangle's
+    // base in one direction group. The group's direction tilts the base a quarter
+    // degree, so the spokes and sides measured between the drawn vertices
+    // would no longer close: no drawing of the triangle would exist.
+    infer::ExampleShape shape;
+    shape.source = "triangle.json";
+    shape.brushes.push_back({"Line", "", false, 0, 0});
+    shape.vertices = {{0, 0}, {4, 0}, {2, 3}, {2, 1}, {5, 3 + 3 * std::tan(0.5 * M_PI / 180)}};
+    for (auto [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}, {2, 4}})
+        shape.edges.push_back({a, b, 0, -1, -1, "edge"});
+    shape.canvasWidth = 20;
+    shape.canvasHeight = 12;
+    const infer::LabelledExample ex = infer::labelExample(shape);
+    CHECK(ex.snappedEdges > 0);
+    CHECK(anyDrawn(generate(ex, "triangle.json")));
 }

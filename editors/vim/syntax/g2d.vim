@@ -20,14 +20,14 @@ syn match g2dSketch "@"
 
 " ---- keywords
 " declarations
-syn keyword g2dDeclKeyword import param const limit priority defs axiom style space sequence compound
+syn keyword g2dDeclKeyword import param const limit priority defs axiom style space sequence compound layout
 syn keyword g2dDeclKeyword node edge face enum nextgroup=g2dTypeName skipwhite skipnl
 syn keyword g2dDeclKeyword fn rule nextgroup=g2dFuncName skipwhite skipnl
 syn match g2dTypeName "\h\w*" contained
 syn match g2dFuncName "\h\w*" contained
 " rules
 syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with
-syn keyword g2dModifier ordered parallel directed undirected merge intersect
+syn keyword g2dModifier ordered parallel directed undirected merge intersect dpo
 syn keyword g2dModifier pick nextgroup=g2dPickPolicy skipwhite
 syn match g2dPickPolicy "\h\w*" contained
 " booleans and logic; `not {` is a negative condition
