@@ -1,5 +1,7 @@
 #include "g2d/angle_step.hpp"
 
+#include <algorithm>
+
 namespace g2d::rt {
 
 bool AngleStep::propose(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, Rng& rng) {
@@ -38,7 +40,7 @@ bool AngleStep::propose(const Graph& g, const DaughterShape& shape, Match m, con
     }
     auto edgeOf = [&](int kind, int from, int to) {
         const EdgeGeometry& e = spec.kinds[static_cast<std::size_t>(kind)];
-        return AngleEdge{from, to, e.angle, e.minLength, e.maxLength};
+        return AngleEdge{from, to, e.angle, e.minLength, e.maxLength, e.left, e.right};
     };
     for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
         if (!g.edgeAlive(e) || deletedEdge_[e]) continue;
@@ -52,7 +54,10 @@ bool AngleStep::propose(const Graph& g, const DaughterShape& shape, Match m, con
         ag.edges.push_back(edgeOf(e.kind, vertex(e.src), vertex(e.dst)));
         ag.created.push_back(1);
     }
-    result_ = drawAngleGraph(ag, spec.settings, rng);
+    DrawingSettings settings = spec.settings;
+    settings.consistentAreas = std::any_of(spec.kinds.begin(), spec.kinds.end(),
+                                           [](const EdgeGeometry& k) { return k.left >= 0 || k.right >= 0; });
+    result_ = drawAngleGraph(ag, settings, rng);
     if (!result_.accepted) ++rejected_;
     return result_.accepted;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `g2d infer EXAMPLE`: the grammar inferred from an example shape (Merrell
-# 2023) as the paper writes it, --stats as JSON, and bad examples refused
-# with the place of the fault.
+# 2023) as the paper writes it, --stats as JSON, -o as g2d source that runs
+# alike interpreted and compiled, and bad examples refused with the place of
+# the fault.
 # Usage: infer_command_test.sh G2D SOURCE_DIR
 set -u
 g2d="$1"; src="$2"
@@ -52,5 +53,28 @@ printf '{"data": [1, 1, "0,0", ' > cut.json
 expect_code 1 "$g2d" infer cut.json
 has err.txt 'g2d infer: error: cut.json: not valid JSON'
 expect_code 2 "$g2d" infer --angle-tolerance 90 "$examples/2D Branches/T.json"
+
+# -o: the grammar as g2d source, clean for `g2d check --werror`; interpreted
+# and compiled runs of it are byte-identical, with faces and labels.
+expect_code 0 "$g2d" infer "$examples/2D Branches/T.json" -o t.g2d --iterations 200
+has t.g2d 'layout angles {'
+has t.g2d 'param iterations: int = 200;'
+has t.g2d 'rule Start'
+expect_code 0 "$g2d" check --werror t.g2d
+expect_code 0 "$g2d" infer "$examples/2D Basic Shapes/square filled.json" -o sq.g2d --iterations 200
+expect_code 0 "$g2d" run sq.g2d --seed 2 --json sq_run.json --no-svg
+expect_code 0 "$g2d" build sq.g2d -o sq_bin
+expect_code 0 ./sq_bin --seed 2 --json sq_built.json --no-svg
+cmp -s sq_run.json sq_built.json || fail "square filled: interpreted and compiled JSON differ"
+python3 - sq_run.json <<'PY' || fail "square filled: no faces or labels"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["nodes"] and d["faces"], "an empty output"
+assert all(isinstance(l["label"], int) for l in d["links"])
+assert all(isinstance(f["label"], int) for f in d["faces"])
+PY
+# An output that cannot be written leaves nothing behind.
+expect_code 1 "$g2d" infer "$examples/2D Branches/T.json" -o /nonexistent/dir/t.g2d
+has err.txt 'g2d infer: error:'
 
 finish

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "g2d/angle_drawing.hpp"
 
@@ -587,4 +588,41 @@ TEST_CASE("a sampled length that a rigid edge fixes is drawn at that length", "[
     CHECK(r.samples == 1);
     const auto p = drawn(b.g, r);
     for (const AngleEdge& e : b.g.edges) CHECK(std::abs(std::hypot(along(p, e).x, along(p, e).y) - 1) < 1e-9);
+}
+
+TEST_CASE("a component is not drawn inside a region of another area than its outside", "[angle-drawing]") {
+    // A fixed 10 x 10 square of area 1 inside; the canvas is its inside, so
+    // every place for a new triangle is within area 1.
+    auto build = [](int triangleOutside) {
+        Builder b;
+        const int s0 = b.vertex(0, 0, false), s1 = b.vertex(10, 0, false), s2 = b.vertex(10, 10, false), s3 = b.vertex(0, 10, false);
+        for (auto [from, to, angle] : std::vector<std::tuple<int, int, double>>{{s0, s1, 0}, {s1, s2, kPi / 2}, {s2, s3, kPi}, {s3, s0, -kPi / 2}}) {
+            const int e = b.edge(from, to, angle, 10, 10, false);
+            b.g.edges[e].left = 1;   // counter-clockwise: the inside is on the left
+        }
+        // A triangle whose outside (right of its counter-clockwise edges) is `triangleOutside`.
+        const int t0 = b.vertex(0, 0, true), t1 = b.vertex(0, 0, true), t2 = b.vertex(0, 0, true);
+        for (auto [from, to, angle] : std::vector<std::tuple<int, int, double>>{{t0, t1, 0}, {t1, t2, 3 * kPi / 4}, {t2, t0, -3 * kPi / 4}}) {
+            const int e = b.edge(from, to, angle, 1, 2);
+            b.g.edges[e].left = 2;
+            b.g.edges[e].right = triangleOutside;
+        }
+        return b;
+    };
+    DrawingSettings s = canvas(0.5, 0.5, 9.5, 9.5);
+    s.consistentAreas = true;
+    Rng rng(3);
+    CHECK_FALSE(drawAngleGraph(build(-1).g, s, rng).accepted);   // an island of "none" in area 1
+    CHECK(drawAngleGraph(build(1).g, s, rng).accepted);          // a hole of area 2 in area 1
+    s.consistentAreas = false;
+    CHECK(drawAngleGraph(build(-1).g, s, rng).accepted);
+    // Seen from the other side: a square of area 1 drawn around a fixed island of "none".
+    CHECK(areasConsistent({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 4}, {5, 5}},
+                          {{0, 1, 0, 10, 10, 1, -1}, {1, 2, kPi / 2, 10, 10, 1, -1}, {2, 3, kPi, 10, 10, 1, -1}, {3, 0, -kPi / 2, 10, 10, 1, -1},
+                           {4, 5, 0, 2, 2, 2, 1}, {5, 6, 3 * kPi / 4, 1, 2, 2, 1}, {6, 4, -3 * kPi / 4, 1, 2, 2, 1}},
+                          {1, 1, 1, 1, 0, 0, 0}));
+    CHECK_FALSE(areasConsistent({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 4}, {5, 5}},
+                                {{0, 1, 0, 10, 10, 1, -1}, {1, 2, kPi / 2, 10, 10, 1, -1}, {2, 3, kPi, 10, 10, 1, -1}, {3, 0, -kPi / 2, 10, 10, 1, -1},
+                                 {4, 5, 0, 2, 2, 2, -1}, {5, 6, 3 * kPi / 4, 1, 2, 2, -1}, {6, 4, -3 * kPi / 4, 1, 2, 2, -1}},
+                                {1, 1, 1, 1, 0, 0, 0}));
 }

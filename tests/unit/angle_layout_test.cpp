@@ -295,12 +295,12 @@ TEST_CASE("the same seed gives the same drawing, another seed another", "[angle-
 
 TEST_CASE("a face takes the kind most of its sides give it, the outer boundary none", "[angle-layout]") {
     // R, the side of each square's least half-edge, names Door inside: the
-    // other three name Cell, so the face is a Cell. Outside every side names
-    // Out, but the outer boundary is no face.
+    // other three name Cell, so the face is a Cell. (Naming an area outside
+    // the squares would keep them from being drawn in the open: areas must
+    // agree, areasConsistent.)
     auto r = derive(squareGrammar("(10, 10)", 4,
-                                  {"left = Door; right = Out;", "left = Cell; right = Out;", "left = Cell; right = Out;",
-                                   "left = Cell; right = Out;"},
-                                  "face Door;\nface Out;\n"),
+                                  {"left = Door;", "left = Cell;", "left = Cell;", "left = Cell;"},
+                                  "face Door;\n"),
                     2);
     const auto& prog = *r.compiled.program;
     const rt::Graph& g = r.run.graph();
@@ -308,7 +308,6 @@ TEST_CASE("a face takes the kind most of its sides give it, the outer boundary n
     CHECK(g.faceCount() == 4);
     CHECK(g.facesOfKind(kindIndex(prog, "Cell")).size() == 4);
     CHECK(g.facesOfKind(kindIndex(prog, "Door")).empty());
-    CHECK(g.facesOfKind(kindIndex(prog, "Out")).empty());
     checkUnitSquareFaces(g, kindIndex(prog, "Cell"), true);
 }
 
@@ -337,20 +336,23 @@ TEST_CASE("edges with a length range: in range, sampled, rectangles closed", "[a
     const std::string grammar =
         "layout angles { canvas_min = (-5, -5); canvas_max = (15, 15); proposals = 3; samples = 20; }\n"
         "face Cell;\nnode Corner;\n"
-        "edge H directed { layout { angle = 0; min_length = 1; max_length = 2; left = Cell; right = Cell; } }\n"
-        "edge V directed { layout { angle = radians(90); min_length = 0.5; max_length = 1.5; left = Cell; right = Cell; } }\n"
+        "edge H directed { layout { angle = 0; min_length = 1; max_length = 2; left = Cell; } }\n"
+        "edge Ht directed { layout { angle = 0; min_length = 1; max_length = 2; right = Cell; } }\n"
+        "edge V directed { layout { angle = radians(90); min_length = 0.5; max_length = 1.5; left = Cell; } }\n"
+        "edge Vl directed { layout { angle = radians(90); min_length = 0.5; max_length = 1.5; right = Cell; } }\n"
         "axiom { }\nlimit 6;\n"
         "rule Box { match { } produce { a: Corner; b: Corner; c: Corner; d: Corner; "
-        "a -[H]-> b; b -[V]-> c; d -[H]-> c; a -[V]-> d; } }\n";
+        "a -[H]-> b; b -[V]-> c; d -[Ht]-> c; a -[Vl]-> d; } }\n";
     auto r = derive(grammar, 7);
     const auto& prog = *r.compiled.program;
     const rt::Graph& g = r.run.graph();
     REQUIRE(r.run.derivation.applications == 6);
-    checkDrawing(g, prog, {{"H", {0, 1, 2}}, {"V", {kPi / 2, 0.5, 1.5}}}, {-5, -5}, {15, 15});
+    checkDrawing(g, prog, {{"H", {0, 1, 2}}, {"Ht", {0, 1, 2}}, {"V", {kPi / 2, 0.5, 1.5}}, {"Vl", {kPi / 2, 0.5, 1.5}}}, {-5, -5}, {15, 15});
     std::set<double> widths, heights;
     for (rt::EdgeId e : liveEdges(g)) {
         const rt::vec2 v = g.pos(g.target(e)) - g.pos(g.source(e));
-        (g.edgeKind(e) == kindIndex(prog, "H") ? widths : heights).insert(std::hypot(v.x, v.y));
+        const int k = g.edgeKind(e);
+        (k == kindIndex(prog, "H") || k == kindIndex(prog, "Ht") ? widths : heights).insert(std::hypot(v.x, v.y));
     }
     // Each rectangle's opposite sides are equal; the six rectangles differ
     // (lengths are sampled within the range, not fixed at its ends).

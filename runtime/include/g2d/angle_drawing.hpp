@@ -28,6 +28,7 @@ struct AngleEdge {
     double angle = 0;           // that direction, in radians
     double minLength = 0;       // the allowed lengths: minLength <= s <= maxLength,
     double maxLength = 0;       // and s > 0; minLength == maxLength: a rigid edge
+    int left = -1, right = -1;  // the area on either side of from -> to (-1: none), for consistentAreas
 };
 
 // The graph after the proposed change.
@@ -43,6 +44,10 @@ struct DrawingSettings {
     int samples = 10;             // J: samples per system
     vec2 canvasLo{0, 0}, canvasHi{0, 0};   // every moved vertex must lie in this closed box (1e-9 relative slack)
     double separation = 1e-6;     // least distance between a vertex and an edge not incident to it
+    // Also reject a drawing that puts a component inside a region of another
+    // area than its edges name outside it (a hexagon inside a hexagon's face):
+    // areasConsistent.
+    bool consistentAreas = false;
 };
 
 struct DrawingResult {
@@ -74,5 +79,13 @@ DrawingResult drawAngleGraph(const AngleGraph& graph, const DrawingSettings& set
 // every pair otherwise. A few moved vertices cost one scan of the edges.
 bool drawingIsPlanar(const std::vector<vec2>& position, const std::vector<AngleEdge>& edges, double separation,
                      const std::vector<char>& moved = {});
+
+// Whether every connected component that contains a `moved` vertex, or whose
+// bounding box meets one that does, lies in a region of the area its edges
+// name on their outside: seen from its lowest vertex (then leftmost), the
+// area of the wedge below it must be the area of the side facing up of the
+// first edge of another component straight below (none: outside everything).
+// Assumes a planar drawing. O(components tested × edges).
+bool areasConsistent(const std::vector<vec2>& position, const std::vector<AngleEdge>& edges, const std::vector<char>& moved);
 
 }  // namespace g2d::rt
