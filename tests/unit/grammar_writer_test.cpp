@@ -12,35 +12,16 @@
 #include "infer/example_json.hpp"
 #include "infer/grammar_writer.hpp"
 #include "infer/rule_sides.hpp"
+#include "infer_examples.hpp"
 
 using namespace g2d::infer;
 
 namespace {
 
-const std::string kExamples = G2D_SOURCE_DIR "/examples/infer/merrell";
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::vector<std::pair<std::string, LabelledExample>> allExamples() {
-    std::vector<std::pair<std::string, LabelledExample>> out;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples))
-        if (entry.path().extension() == ".json")
-            out.emplace_back(entry.path().string(), labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string())));
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    return out;
-}
-
-// A hierarchy small enough for tests over every example (as infer_test.cpp).
-InferOptions small() {
-    InferOptions o;
-    o.maxGraphs = 600;
-    return o;
-}
+using g2d::test::readFile;
+const std::string kExamples = g2d::test::kMerrellExamples;
+std::vector<std::pair<std::string, LabelledExample>> allExamples() { return g2d::test::merrellExamples(); }
+InferOptions small() { return g2d::test::smallHierarchy(); }
 
 // Per interface node: its edge ends on one side, as (label, 1 if the node is the source).
 std::map<int, std::vector<std::pair<int, int>>> interfaceEnds(const RuleSide& side) {

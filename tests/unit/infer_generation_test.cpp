@@ -16,6 +16,7 @@
 #include "g2d/angle_drawing.hpp"
 #include "infer/example_json.hpp"
 #include "infer/grammar_writer.hpp"
+#include "infer_examples.hpp"
 #include "interp/run_program.hpp"
 #include "test_helpers.hpp"
 
@@ -23,23 +24,7 @@ using namespace g2d;
 
 namespace {
 
-const std::string kExamples = G2D_SOURCE_DIR "/examples/infer/merrell";
 constexpr long long kSteps = 300;
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::vector<std::string> examplePaths() {
-    std::vector<std::string> out;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples))
-        if (entry.path().extension() == ".json") out.push_back(entry.path().string());
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 // The number after a kind's letter: P3 -> 3 (the writer's names).
 int indexOf(const std::string& kindName) { return std::stoi(kindName.substr(1)); }
@@ -161,9 +146,9 @@ bool anyDrawn(const std::vector<Output>& outputs) {
 
 TEST_CASE("every inferred grammar compiles cleanly and generates locally similar planar drawings", "[infer][generation]") {
     int drawn = 0;
-    for (const std::string& path : examplePaths()) {
+    for (const std::string& path : test::merrellExamplePaths()) {
         INFO(path);
-        const infer::LabelledExample ex = infer::labelExample(infer::readExampleJson(readFile(path), path));
+        const infer::LabelledExample ex = infer::labelExample(infer::readExampleJson(test::readFile(path), path));
         const std::vector<Output> outputs = generate(ex, std::filesystem::path(path).filename().string());
         // New shapes: the seeds' outputs differ, and none is the example.
         std::vector<std::pair<double, double>> example;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "infer/example_json.hpp"
+#include "infer_examples.hpp"
 #include "infer/grammar_report.hpp"
 #include "infer/matching_groups.hpp"
 #include "infer/rule_application.hpp"
@@ -18,36 +19,11 @@ using namespace g2d::infer;
 
 namespace {
 
-const std::string kExamples = G2D_SOURCE_DIR "/examples/infer/merrell";
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// Every example of the folder, labelled, by path.
-std::vector<std::pair<std::string, LabelledExample>> allExamples() {
-    std::vector<std::pair<std::string, LabelledExample>> out;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples))
-        if (entry.path().extension() == ".json")
-            out.emplace_back(entry.path().string(), labelExample(readExampleJson(readFile(entry.path().string()), entry.path().string())));
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    return out;
-}
-
-// A hierarchy small enough for tests over every example.
-InferOptions small() {
-    InferOptions o;
-    o.maxGraphs = 600;
-    return o;
-}
-
-LabelledExample example(const std::string& relative) {
-    const std::string path = kExamples + "/" + relative;
-    return labelExample(readExampleJson(readFile(path), path));
-}
+using g2d::test::readFile;
+const std::string kExamples = g2d::test::kMerrellExamples;
+std::vector<std::pair<std::string, LabelledExample>> allExamples() { return g2d::test::merrellExamples(); }
+InferOptions small() { return g2d::test::smallHierarchy(); }
+LabelledExample example(const std::string& relative) { return g2d::test::merrellExample(relative); }
 
 // A hollow 2 x 1 rectangle, corners BL, BR, TR, TL: label 0 is x (0°),
 // label 1 is y (90°); halves 0 = x, 0' = x̄, 1 = y, 1' = ȳ.
