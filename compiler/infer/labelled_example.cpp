@@ -128,7 +128,7 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
     }
     std::vector<int> groupOf;
     std::vector<double> groups = directionGroups(line, options.angleTolerance, groupOf);
-    straightenSingletons(shape, groupOf, groups);
+    straighten(shape, groupOf, groups);
 
     // Labels: (brush, left, right, direction[, length of a rigid edge]).
     std::map<std::tuple<int, int, int, int, double>, int> labelOf;
@@ -164,7 +164,8 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
             hi = std::max(hi, length[static_cast<std::size_t>(e)]);
         }
         if (brush.rigid) {
-            label.minLength = label.maxLength = std::round(lo * 1e6) / 1e6;
+            // Not rounded: rigid edges close loops with each other (1, 1, √2).
+            label.minLength = label.maxLength = lo;
         } else if (brush.maxLength > 0) {
             label.minLength = brush.minLength;
             label.maxLength = brush.maxLength;

@@ -66,8 +66,9 @@ Output checkOutput(const infer::LabelledExample& ex, const ir::Program& prog, co
         const double length = std::hypot(d.x, d.y);
         INFO("edge label " << label << " length " << length << " direction " << degreesOf(d) << " expected " << l.theta);
         CHECK(length > 1e-9);
-        CHECK(length >= l.minLength * (1 - 1e-9));
-        CHECK(length <= l.maxLength * (1 + 1e-9));
+        const double slack = 1e-9 * std::max(1.0, l.maxLength);   // the drawing step's own
+        CHECK(length >= l.minLength - slack);
+        CHECK(length <= l.maxLength + slack);
         CHECK(std::abs(wrap(degreesOf(d) - l.theta)) < 1e-6);
         edges.push_back(rt::AngleEdge{vertex[g.source(e)], vertex[g.target(e)], l.theta * M_PI / 180, l.minLength, l.maxLength});
     }
@@ -159,10 +160,10 @@ TEST_CASE("every inferred grammar compiles cleanly and generates locally similar
         ++drawn;
         CHECK((outputs[0].positions != outputs[1].positions || outputs[1].positions != outputs[2].positions));
     }
-    // The drawing step cannot draw every example's starter (docs/infer.md,
-    // "Generation"): two examples' directions do not close their loops as
-    // drawn, and one needs lengths that rejection sampling rarely finds.
-    CHECK(drawn == 42);
+    // All but simple stack, whose one starter is a rectangle with a bottom
+    // label of 2.5 to 10 and a top label of 0.5 to 2 (the ranges the example
+    // gives): no drawing of it exists (docs/infer.md, "Generation").
+    CHECK(drawn == 44);
 }
 
 TEST_CASE("a drawn example a pixel off is straightened so that its loops close", "[infer][generation]") {
