@@ -156,22 +156,29 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
         out.edgeLabel[i] = it->second;
         out.edgeFlipped[i] = flipped ? 1 : 0;
     }
+    // A brush's length range, where the example does not give it: from half
+    // its shortest edge to twice its longest (a range is the brush's, as in
+    // the author's app; per label, a short label could never equal a long
+    // one where a starter needs it: simple stack's rectangle).
+    std::vector<double> brushLo(shape.brushes.size(), 1e300), brushHi(shape.brushes.size(), 0);
+    for (std::size_t i = 0; i < shape.edges.size(); ++i) {
+        const auto b = static_cast<std::size_t>(shape.edges[i].brush);
+        brushLo[b] = std::min(brushLo[b], length[i]);
+        brushHi[b] = std::max(brushHi[b], length[i]);
+    }
     for (EdgeLabel& label : out.labels) {
-        const EdgeBrush& brush = shape.brushes[static_cast<std::size_t>(label.brush)];
-        double lo = 1e300, hi = 0;
-        for (int e : label.edges) {
-            lo = std::min(lo, length[static_cast<std::size_t>(e)]);
-            hi = std::max(hi, length[static_cast<std::size_t>(e)]);
-        }
+        const auto b = static_cast<std::size_t>(label.brush);
+        const EdgeBrush& brush = shape.brushes[b];
         if (brush.rigid) {
             // Not rounded: rigid edges close loops with each other (1, 1, √2).
-            label.minLength = label.maxLength = lo;
+            label.minLength = label.maxLength = length[static_cast<std::size_t>(label.edges.front())];
+            for (int e : label.edges) label.minLength = label.maxLength = std::min(label.minLength, length[static_cast<std::size_t>(e)]);
         } else if (brush.maxLength > 0) {
             label.minLength = brush.minLength;
             label.maxLength = brush.maxLength;
-        } else {   // not given: from half the shortest to twice the longest in the example
-            label.minLength = std::round(lo / 2 * 1e6) / 1e6;
-            label.maxLength = std::round(hi * 2 * 1e6) / 1e6;
+        } else {
+            label.minLength = std::round(brushLo[b] / 2 * 1e6) / 1e6;
+            label.maxLength = std::round(brushHi[b] * 2 * 1e6) / 1e6;
         }
     }
 

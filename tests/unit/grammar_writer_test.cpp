@@ -100,17 +100,17 @@ limit iterations;
 // Edge labels: brush, the areas left and right, the direction.
 edge E0 directed {
     label: int = 0;
-    layout { angle = radians(45); min_length = 1.767767; max_length = 7.071068; }
+    layout { angle = radians(45); min_length = 1.767767; max_length = 10; }
     style { stroke = "#202020"; stroke_width = 0.18; }
 }
 edge E1 directed {
     label: int = 1;
-    layout { angle = radians(135); min_length = 1.767767; max_length = 7.071068; }
+    layout { angle = radians(135); min_length = 1.767767; max_length = 10; }
     style { stroke = "#202020"; stroke_width = 0.18; }
 }
 edge E2 directed {
     label: int = 2;
-    layout { angle = radians(0); min_length = 2.5; max_length = 10; }
+    layout { angle = radians(0); min_length = 1.767767; max_length = 10; }
     style { stroke = "#202020"; stroke_width = 0.18; }
 }
 
