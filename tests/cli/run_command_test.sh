@@ -213,10 +213,13 @@ grep -q '"steps": 3' fault.json && grep -q '"stopped": "error"' fault.json || fa
 grep -q '"n": 0' fault.json || fail "the partial graph is not step 3's: $(cat fault.json)"
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 30000 --no-svg
 
-# An interrupted run leaves no temporary files and no output
+# An interrupted run leaves no temporary files and no output. The signal is
+# sent once the output's temporary file exists (its handler is installed by
+# then): a background job starts with SIGINT ignored, so a signal during a
+# slow start (sanitizers, a loaded machine) would be lost and the run finish.
 "$g2d" run spin.g2d --steps 100000000 -o interrupted.svg >/dev/null 2>&1 &
 pid=$!
-sleep 0.5
+for _ in $(seq 600); do ls | grep -q 'interrupted.svg.tmp-' && break; sleep 0.1; done
 kill -INT "$pid"; wait "$pid" 2>/dev/null
 ls | grep -q 'interrupted.svg' && fail "an interrupted run left $(ls | grep interrupted)"
 
