@@ -283,6 +283,32 @@ def subdivide(s, quick):
 # G^3 (Laganeckiene 2012) Table 5.1: its models' generation times on a Core2 Duo, in seconds.
 G3_TABLE_5_1 = {"g3_house": 0.31, "g3_cupboard": 0.16, "g3_sofa": 50.22, "g3_tree_box": 6.14}
 
+def coral(s, quick):
+    """Growth with collision avoidance (examples/coral.g2d): a negative
+    condition asking for a node near a point, answered by the spatial index.
+    Besides the rows, the time per step around 10^3 and 10^5 nodes (the
+    difference of two runs over their difference in steps) and its ratio."""
+    grammar, exe = s.build("coral", open(os.path.join(ROOT, "examples/coral.g2d")).read())
+    sizes = [1000, 10000] if quick else [1000, 10000, 100000]
+    for n in sizes:
+        s.case("coral", f"{n:,} steps", grammar, exe, ["-D", f"steps={n}"], interpret=n <= 10000)
+    windows = [(1000, 2000), (sizes[-1] - sizes[-1] // 10, sizes[-1])]
+    per_step = []
+    for a, b in windows:
+        cmds = [[exe, "--no-svg", "--stats", "-D", f"steps={n}"] for n in (a, b)]
+        best, _ = measure(cmds, max(s.args.repeat, 5), max(s.args.repeat, 5))
+        nodes = best[1]["nodes"]
+        per_step.append((nodes, (best[1]["seconds"] - best[0]["seconds"]) / (b - a)))
+    print()
+    print("Coral, compiled: time per step at the graph's size (steps a..b: the runs' difference over b - a):")
+    print()
+    print("| nodes | µs per step |")
+    print("|---:|---:|")
+    for nodes, t in per_step:
+        print(f"| {nodes:,} | {t * 1e6:.2f} |")
+    print(f"\nratio, largest against smallest: {per_step[-1][1] / per_step[0][1]:.2f}", flush=True)
+
+
 
 def g3(s, quick):
     for name, seconds in G3_TABLE_5_1.items():
@@ -369,7 +395,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
     ap.add_argument("--short-repeat", type=int, default=21,
                     help="runs per case when its runs take under 10 ms (default 21)")
-    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "g3", "infer", "instructions"])
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "coral", "g3", "output", "infer", "instructions"])
     args = ap.parse_args()
     if args.quick:
         args.repeat = args.short_repeat = 1
@@ -377,7 +403,7 @@ def main():
     print(f"g2d benchmark suite — {time.strftime('%Y-%m-%d')}, {os.cpu_count()} cores; fastest of {args.repeat}"
           + (f" ({max(args.repeat, args.short_repeat)} for runs under 10 ms)" if args.short_repeat > args.repeat else ""))
     timed = [(n, fn) for n, fn in [("thesis", thesis), ("koch", koch), ("sierpinski", sierpinski), ("mutex", mutex),
-                                     ("subdivide", subdivide), ("g3", g3)]
+                                     ("subdivide", subdivide), ("coral", coral), ("g3", g3)]
              if not args.only or n in args.only]
     if timed:
         print()

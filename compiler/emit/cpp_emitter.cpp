@@ -63,6 +63,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     for (std::size_t d = 0; d < i.weights.size(); ++d) out += (d ? ", " : "") + cppLiteral(ir::Value{i.weights[d]}, ir::kFloatType);
     out += "};\n";
     out += in + "info.radius = " + str(i.radius) + ";\n";
+    out += in + "info.nearKinds = " + vectorLiteral(i.nearKinds) + ";\n";
     out += in + "info.readsIncidence = " + listOf(i.readsIncidence, incidenceName) + ";\n";
     out += in + "info.readDirections = " + listOf(i.readDirections, byteText) + ";\n";
     out += in + "info.newHostAddsNothing = " + listOf(i.newHostAddsNothing, byteText) + ";\n";

@@ -138,6 +138,21 @@ private:
                            steps(ops, i + 1, nac, onComplete, out, body + "    ");
                            out += body + "}\n" + next + "}\n" + in + "}\n";
                        },
+                       [&](const lower::ScanNear& o) {
+                           const std::string c = "c" + str(static_cast<int>(i)), l = "l" + str(static_cast<int>(i));
+                           const std::string nd = "n[" + str(o.node) + "]";
+                           out += in + "{\n";
+                           const std::string centre = gen_.gen(*o.centre, matchContext(nac), out, next);
+                           const std::string radius = gen_.gen(*o.radius, matchContext(nac), out, next);
+                           const std::string at = prog_.space3d ? centre : "vec3(" + centre + ", 0.0)";
+                           out += next + "const auto " + l + " = nearQueries().nodesNear(g, " + ri_ + ", " + str(o.near) + ", n[" + str(o.key) + "], " +
+                                  str(o.kind) + ", " + at + ", static_cast<double>(" + radius + "));\n";
+                           out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
+                           out += body + nd + " = " + l + "[" + c + "];\n";
+                           out += body + "if (true" + notUsed(nd, o.distinctNodes, "n") + ") {\n";
+                           steps(ops, i + 1, nac, onComplete, out, body + "    ");
+                           out += body + "}\n" + next + "}\n" + in + "}\n";
+                       },
                        [&](const lower::MatchFace& o) { bindFace(o, static_cast<int>(i), [&](std::string& o2, const std::string& in2) {
                                                               steps(ops, i + 1, nac, onComplete, o2, in2);
                                                           }, out, in); },

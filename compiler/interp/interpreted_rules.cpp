@@ -95,6 +95,28 @@ bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, s
                 return evaluateBool(*o.condition, f) && search(g, ops, i + 1, onComplete);
             },
             [&](const lower::MatchFace& o) { return bindFace(g, o, ops, i, onComplete); },
+            [&](const lower::ScanNear& o) {
+                EvalFrame f = st_.frame(nullptr);
+                f.graph = &g;
+                f.nodes = boundNodes_.data();
+                f.edges = boundEdges_.data();
+                f.faces = boundFaces_.data();
+                const rt::Value centre = evaluate(*o.centre, f);
+                const rt::Value r = evaluate(*o.radius, f);   // an int or a float
+                const double radius = std::holds_alternative<long long>(r) ? static_cast<double>(std::get<long long>(r)) : std::get<double>(r);
+                const rt::vec3 at = std::holds_alternative<rt::vec3>(centre) ? std::get<rt::vec3>(centre)
+                                                                             : rt::vec3(std::get<rt::vec2>(centre), 0.0);
+                const auto near =
+                    nearQueries().nodesNear(g, currentIndex_, o.near, boundNodes_[o.key], o.kind, at, radius);
+                for (const NodeId h : near) {
+                    if (usedNode(o.distinctNodes, h)) continue;
+                    boundNodes_[o.node] = h;
+                    const bool stop = search(g, ops, i + 1, onComplete);
+                    boundNodes_[o.node] = kNoId;
+                    if (stop) return true;
+                }
+                return false;
+            },
             [&](const lower::ScanNodes& o) {
                 auto tryHost = [&](NodeId h) {
                     if (usedNode(o.distinctNodes, h) || (g.edgeKindsAt(h) & o.edgeKinds) != o.edgeKinds) return false;
@@ -237,6 +259,7 @@ void InterpretedRules::collect(const rt::Graph& g, const lower::MatchProgram& m,
 
 void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) {
     current_ = &st_.prog->rules[rule];
+    currentIndex_ = rule;
     const lower::MatchProgram& m = matches_[rule];
     collect(g, m, m.full, out);
 }
@@ -247,6 +270,7 @@ void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int no
     const std::uint32_t need = m.anchorEdgeKinds[static_cast<std::size_t>(node)];
     if ((g.edgeKindsAt(host) & need) != need) return;
     current_ = &st_.prog->rules[rule];
+    currentIndex_ = rule;
     boundNodes_[node] = host;
     newEdgesFrom_ = newEdgesFrom;
     collect(g, m, m.anchored[static_cast<std::size_t>(node)], out);

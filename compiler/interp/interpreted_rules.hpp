@@ -78,6 +78,7 @@ private:
     rt::EdgeId newEdgesFrom_ = rt::kNoId;
     std::vector<rt::Value> locals_;
     const ir::Rule* current_ = nullptr;
+    std::size_t currentIndex_ = 0;   // current_'s index (near queries record under it)
     std::optional<rt::AngleLayoutSpec> angleLayout_;
 };
 

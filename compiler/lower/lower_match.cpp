@@ -2,6 +2,7 @@
 
 #include "g2d/graph.hpp"
 #include "lower/match_program.hpp"
+#include "lower/near_negative.hpp"
 #include "lower/search_plan.hpp"
 
 namespace g2d::lower {
@@ -25,13 +26,18 @@ public:
             p.anchorEdgeKinds.push_back(edgeKindsNeeded(anchor));
         }
         std::size_t nodes = r_.nodes.size(), edges = r_.edges.size();
-        for (const auto& nac : r_.nacs) {
+        int nears = 0;
+        for (std::size_t k = 0; k < r_.nacs.size(); ++k) {
+            const ir::NegativeCondition& nac = r_.nacs[k];
+            near_ = nearNegative(r_, k);
+            nearIndex_ = near_ ? nears++ : -1;
             std::vector<int> outerNodes, outerEdges;
             for (int i = 0; i < nac.outerNodes; ++i) outerNodes.push_back(i);
             for (int i = 0; i < nac.outerEdges; ++i) outerEdges.push_back(i);
             const auto plan = buildSearchPlan(nac.nodes, nac.edges, nac.faces, nac.conditions, nac.outerNodes, nac.outerEdges,
                                               static_cast<int>(r_.nodes.size()), -1, nac.outerFaces);
             p.negatives.push_back(list(plan, &nac, outerNodes, outerEdges));
+            near_.reset();
             nodes = std::max(nodes, r_.nodes.size() + nac.nodes.size());
             edges = std::max(edges, r_.edges.size() + nac.edges.size());
         }
@@ -105,7 +111,10 @@ private:
                 break;
             }
             case PlanStep::Op::ScanNodes:
-                out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(s.node, boundNodes, nac),
+                if (near_ && s.node == near_->node)
+                    out.push_back(ScanNear{s.node, near_->kind, nearIndex_, near_->key, near_->centre, near_->radius, distinct(s.node, boundNodes, nac)});
+                else
+                    out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(s.node, boundNodes, nac),
                                         ordered(s.node, boundNodes)});
                 boundNodes.push_back(s.node);
                 break;
@@ -145,6 +154,8 @@ private:
 
     const ir::Program& prog_;
     const ir::Rule& r_;
+    std::optional<NearNegative> near_;   // the negative condition being lowered, when it is a node near a point
+    int nearIndex_ = -1;
     std::vector<std::vector<int>> neededEdgeKinds_;   // per pattern node
 };
 

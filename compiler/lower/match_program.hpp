@@ -71,10 +71,24 @@ struct MatchFace {
     std::vector<int> distinctNodes;          // node slots bound before
     std::vector<int> distinctFaces;          // face slots bound before
 };
+// node := each host node of `kind` near a point (a negative condition's
+// only node, near_negative.hpp): those within `radius` of `centre`, from the
+// spatial index (rt::NearQueries::nodesNear), by id; the conditions that
+// follow test the distance exactly. `near` numbers the rule's such negative
+// conditions (rt::RuleInfo::nearKinds).
+struct ScanNear {
+    int node;
+    int kind;
+    int near;
+    int key;                        // the node slot the disk is recorded under
+    const ir::Expr* centre;
+    const ir::Expr* radius;
+    std::vector<int> distinctNodes; // earlier node slots
+};
 struct Filter {
     const ir::Expr* condition;
 };
-using MatchOp = std::variant<ScanNodes, ExtendEdge, ConnectEdge, MatchFace, Filter>;
+using MatchOp = std::variant<ScanNodes, ScanNear, ExtendEdge, ConnectEdge, MatchFace, Filter>;
 using MatchList = std::vector<MatchOp>;
 
 struct MatchProgram {

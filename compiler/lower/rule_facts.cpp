@@ -4,6 +4,7 @@
 
 #include "lower/angle_layout.hpp"
 #include "lower/kind_effects.hpp"
+#include "lower/near_negative.hpp"
 #include "lower/search_plan.hpp"
 #include "g2d/node_merge.hpp"
 
@@ -23,6 +24,8 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
         out.weightExprs.push_back(!d.weight && d.weightExpr ? &*d.weightExpr : nullptr);
     }
     info.radius = repairRadius(r);
+    for (std::size_t k = 0; k < r.nacs.size(); ++k)
+        if (const auto near = nearNegative(r, k)) info.nearKinds.push_back(near->kind);
     info.readsIncidence = incidenceReaders(r);
     std::vector<bool> directed;
     for (const auto& k : prog.kinds) directed.push_back(k.directed);

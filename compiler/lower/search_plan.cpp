@@ -1,5 +1,7 @@
 #include "lower/search_plan.hpp"
 
+#include "lower/near_negative.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -173,7 +175,10 @@ int repairRadius(const ir::Rule& rule) {
     // (in edges from the match) of the shallowest end of what is read.
     int radius = 0;
     const int outer = static_cast<int>(rule.nodes.size());
-    for (const auto& nac : rule.nacs) {
+    for (std::size_t k = 0; k < rule.nacs.size(); ++k) {
+        // A node near a point: the spatial index tells repair which matches to revisit.
+        if (nearNegative(rule, k)) continue;
+        const auto& nac = rule.nacs[k];
         const int total = outer + static_cast<int>(nac.nodes.size());
         auto valid = [&](const ir::PatternEdge& e) { return e.src >= 0 && e.dst >= 0 && e.src < total && e.dst < total; };
         std::vector<int> depth(static_cast<std::size_t>(total), -1);

@@ -44,7 +44,8 @@ std::vector<int> faceSlots(const ir::PatternFace& f);
 // How far (in edges) from a changed node a match can be affected: 0 without
 // negative conditions (a match reads only its own elements), else the depth
 // of the deepest negative-condition element read; -1 when a negative
-// condition has a part not connected to the match (any change may matter).
+// condition has a part not connected to the match (any change may matter),
+// unless it is a node near a point (near_negative.hpp).
 int repairRadius(const ir::Rule& rule);
 // Per match node: which changes among the host node's edges alone (an edge
 // added or removed) can make or break a match binding it there. Every edge

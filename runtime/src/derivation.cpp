@@ -139,6 +139,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             merger->sync(g);
             if (const double tolerance = rules.info(r).mergeTolerance; tolerance > 0) merger->mergeChanged(g, tolerance);
         }
+        sets.syncNear(g);
         const bool everything = IncrementalMatches::searchesEverything(g);
         if (everything) g.forgetChanges();
         try {

@@ -38,6 +38,10 @@ Effect effectOf(const RuleInfo& applied, std::size_t d, const RuleInfo& reader) 
 }  // namespace
 
 IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(rules) {
+    std::vector<std::vector<int>> nearKinds;
+    for (std::size_t r = 0; r < rules.ruleCount(); ++r)
+        nearKinds.push_back(rules.info(r).globalMatches ? rules.info(r).nearKinds : std::vector<int>{});
+    rules.nearQueries().start(g, nearKinds);
     std::size_t pairs = 0;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);
@@ -65,6 +69,8 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     }
     firstList_.push_back(static_cast<std::uint32_t>(listEnds_.size()));
 }
+
+IncrementalMatches::~IncrementalMatches() { rules_.nearQueries().stop(); }
 
 void IncrementalMatches::affectedBy(std::size_t applied, std::size_t daughter, std::vector<std::uint32_t>& out) const {
     const RuleInfo& info = rules_.info(applied);
@@ -180,10 +186,15 @@ void IncrementalMatches::update(const Graph& g, EdgeId newEdgesFrom, NodeId newN
             areaRadius = radius_[r];
             areaValues = values;
         }
+        if (!rules_.info(r).nearKinds.empty() && addTouchedKeys(r)) areaRadius = -2;   // not for the next rule
         const RepairArea area{area_, seen_.data(), mark_, newEdgesFrom, newNodesFrom};
         for (NodeId n : area_) {
-            if (area.full(n)) set.removeTouching(n);
-            else set.removeBrokenAt(n, area.edgeChanges(n), g);
+            if (area.full(n)) {
+                set.removeTouching(n);
+                if (!rules_.info(r).nearKinds.empty()) rules_.nearQueries().forget(r, n);
+            } else {
+                set.removeBrokenAt(n, area.edgeChanges(n), g);
+            }
         }
         rules_.repair(r, g, area, anchors_[r].data(), set, found_);
     }
@@ -202,9 +213,24 @@ void IncrementalMatches::prefetchMatch(const Graph& g, Match m, int nodes, int e
     for (int i = 0; i < edges; ++i) g.prefetchEdge(m.edges[i]);
 }
 
+bool IncrementalMatches::addTouchedKeys(std::size_t rule) {
+    touched_.clear();
+    rules_.nearQueries().touchedKeys(rule, touched_);
+    const std::uint32_t full = mark_ * 8 + 1;
+    bool added = false;
+    for (NodeId n : touched_) {
+        if (inArea(n) && seen_[n] == full) continue;
+        if (!inArea(n)) area_.push_back(n);
+        seen_[n] = full;
+        added = true;
+    }
+    return added;
+}
+
 void IncrementalMatches::refill(std::size_t rule, const Graph& g) {
     MatchSet& set = sets_[rule];
     set.clear();
+    rules_.nearQueries().forgetRule(rule);
     found_.reset(set.nodes(), set.edges(), set.faces());
     rules_.findMatches(rule, g, found_);
     for (std::size_t i = 0; i < found_.size(); ++i) set.add(found_.ids(i), g);
@@ -243,6 +269,7 @@ void IncrementalMatches::verify(const Graph& g, long long step) {
         const MatchSet& set = sets_[r];
         const std::size_t width = static_cast<std::size_t>(set.nodes() + set.edges() + set.faces());
         found_.reset(set.nodes(), set.edges(), set.faces());
+        rules_.nearQueries().forgetRule(r);   // recorded afresh by the search
         rules_.findMatches(r, g, found_);
         std::vector<Key> all, kept;
         for (std::size_t i = 0; i < found_.size(); ++i) all.emplace_back(found_.ids(i), found_.ids(i) + width);

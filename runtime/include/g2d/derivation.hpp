@@ -41,6 +41,7 @@
 #include "g2d/command_list.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/match_set.hpp"
+#include "g2d/near_queries.hpp"
 #include "g2d/pick.hpp"
 #include "g2d/rng.hpp"
 
@@ -100,6 +101,11 @@ struct RuleInfo {
     // G^3's intersection tests (intersection_guard.hpp): an application
     // whose additions would intersect the model is undone.
     bool intersect = false;
+    // Per negative condition asking for a node near a point
+    // (lower::nearNegative), in order: that node's kind. Their searches go
+    // through RuleSet::nearQueries(), and repair revisits the matches whose
+    // disks a changed node of the kind lies in.
+    std::vector<int> nearKinds;
     // With `layout angles` (RuleSet::angleLayout): per daughter, what it
     // does to the graph, for the drawing step (angle_step.hpp).
     std::vector<DaughterShape> shapes;
@@ -264,6 +270,13 @@ public:
     // Called by commit() after each application it makes, when set (compound
     // scopes take in what each application created).
     std::function<void()> onApplied;
+    // The spatial index of negative conditions asking for a node near a
+    // point (RuleInfo::nearKinds): the searches read it, IncrementalMatches
+    // keeps it up to date while a derivation runs.
+    NearQueries& nearQueries() { return near_; }
+
+private:
+    NearQueries near_;
 };
 
 // A runaway guard: a derivation stops with an error past this many nodes +

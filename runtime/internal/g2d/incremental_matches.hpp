@@ -40,6 +40,12 @@ public:
     static constexpr std::size_t kFullSearchMinNodes = 64;
 
     IncrementalMatches(RuleSet& rules, const Graph& g);
+    ~IncrementalMatches();   // stops the rules' near queries (RuleSet::nearQueries)
+    IncrementalMatches(const IncrementalMatches&) = delete;
+    IncrementalMatches& operator=(const IncrementalMatches&) = delete;
+    // After a step, before its changes are forgotten: brings the spatial
+    // index of near conditions up to date (NearQueries::sync).
+    void syncNear(const Graph& g) { rules_.nearQueries().sync(g); }
 
     MatchSet& of(std::size_t rule) { return sets_[rule]; }
     // Stops keeping `rule`'s matches (it will not be applied again): its set
@@ -93,6 +99,10 @@ private:
     template <bool kCountValues>
     void collectChanged(const Graph& g, std::uint32_t full, std::uint32_t partial);
     bool inArea(NodeId n) const { return (seen_[n] >> 3) == mark_; }
+    // Adds to the area, as changed themselves, the nodes whose near
+    // conditions' disks a changed node lies in (NearQueries::touchedKeys).
+    // Returns whether it added any (the area is then `rule`'s own).
+    bool addTouchedKeys(std::size_t rule);
     // Empties `rule`'s set and fills it by a full search.
     void refill(std::size_t rule, const Graph& g);
 
@@ -128,6 +138,7 @@ private:
     GrowArray<std::uint32_t> seen_;
     std::uint32_t mark_ = 0;
     std::vector<NodeId> area_;
+    std::vector<NodeId> touched_;
     MatchBuffer found_;
 };
 
