@@ -36,6 +36,7 @@ priorityDecl: 'priority' signedInt priorityOption+ ';' ;
 priorityOption
     : 'limit' expr      # priorityLimit
     | 'parallel'        # priorityParallel
+    | ID                # priorityWord      // `generation` (not a keyword: it may name attributes)
     ;
 defsDecl    : 'defs' STRING ';' ;
 // merge within TOLERANCE;   every rule merges coinciding nodes (G^3 §3.1).

@@ -205,6 +205,8 @@ struct PriorityDecl {
     Span prioritySpan;
     ExprPtr limit;
     bool parallel = false;
+    bool generation = false;            // `generation`: every rule of the priority rewrites all its matches in one step
+    std::vector<Ident> unknownOptions;  // words that are no option
     std::vector<Span> repeatedOptions;  // an option given twice
     Span span;
 };

@@ -59,6 +59,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     out += in + "info.priority = " + cppLiteral(ir::Value{i.priority}, ir::kIntType) + ";\n";
     out += in + "info.pick = " + (i.pick == rt::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
     out += in + "info.parallel = " + (i.parallel ? "true" : "false") + ";\n";
+    out += in + "info.generation = " + (i.generation ? "true" : "false") + ";\n";
     out += in + "info.weights = {";
     for (std::size_t d = 0; d < i.weights.size(); ++d) out += (d ? ", " : "") + cppLiteral(ir::Value{i.weights[d]}, ir::kFloatType);
     out += "};\n";

@@ -421,6 +421,7 @@ struct Rule {
 struct PriorityConfig {
     std::optional<Expr> limit;
     bool parallel = false;
+    bool generation = false;           // every rule of the priority rewrites all its matches in one step (§12.5)
     Span span;
 };
 

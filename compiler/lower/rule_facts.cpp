@@ -19,6 +19,7 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     // `parallel` on the rule, or on its priority (`priority P parallel;`).
     const auto prio = prog.priorities.find(r.priority);
     info.parallel = r.parallel || (prio != prog.priorities.end() && prio->second.parallel);
+    info.generation = prio != prog.priorities.end() && prio->second.generation;
     for (const auto& d : r.daughters) {
         info.weights.push_back(d.weight ? *d.weight : d.weightExpr ? 0.0 : 1.0);
         out.weightExprs.push_back(!d.weight && d.weightExpr ? &*d.weightExpr : nullptr);

@@ -145,6 +145,13 @@ public:
                 } else if (dynamic_cast<P::PriorityParallelContext*>(o)) {
                     if (d.parallel) d.repeatedOptions.push_back(span(o));
                     d.parallel = true;
+                } else if (auto* w = dynamic_cast<P::PriorityWordContext*>(o)) {
+                    if (w->ID()->getText() != "generation") {
+                        d.unknownOptions.push_back(ident(w->ID()));
+                        continue;
+                    }
+                    if (d.generation) d.repeatedOptions.push_back(span(o));
+                    d.generation = true;
                 } else {
                     throw std::logic_error("a priority option of the grammar the AST builder does not know: " + o->getText());
                 }

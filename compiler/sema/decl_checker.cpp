@@ -370,6 +370,9 @@ void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
         return;
     }
     for (const auto& s : d.repeatedOptions) g.diags.error(s, "option given twice for priority " + std::to_string(d.priority));
+    for (const auto& w : d.unknownOptions)
+        g.diags.error(w.span, "unknown priority option `" + w.name + "` (options: limit N, parallel, generation)" +
+                                  suggest(w.name, {"limit", "parallel", "generation"}));
     if (g.prog.priorities.count(d.priority)) {
         auto& diag = g.diags.error(d.prioritySpan, "priority " + std::to_string(d.priority) + " is configured twice");
         diag.notes.push_back({g.prog.priorities[d.priority].span, "first configured here"});
@@ -377,6 +380,7 @@ void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
     }
     ir::PriorityConfig cfg;
     cfg.parallel = d.parallel;
+    cfg.generation = d.generation;
     cfg.span = d.prioritySpan;
     if (d.limit) {
         ExprEnv env = constantEnv("a step limit");

@@ -51,6 +51,8 @@ struct Group {
     std::vector<std::size_t> rules;
     std::optional<long long> limit;
     long long applied = 0;
+    bool generation = false;        // `priority P generation;` (RuleInfo::generation)
+    double mergeTolerance = 0;      // a generation's: the largest of its rules'
 };
 
 }  // namespace
@@ -94,6 +96,8 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
         auto& grp = byPriority[p];
         grp.priority = p;
         grp.rules.push_back(r);
+        grp.generation = grp.generation || rules.info(r).generation;
+        grp.mergeTolerance = std::max(grp.mergeTolerance, rules.info(r).mergeTolerance);
     }
     std::vector<Group> groups;
     for (auto& [p, grp] : byPriority) {
@@ -102,6 +106,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     }
 
     std::vector<std::size_t> order;
+    std::vector<const MatchSet*> generationSets;
     ParallelStep parallel;
     const AngleLayoutSpec* angles = rules.angleLayout();
     AngleStep drawing;
@@ -134,10 +139,13 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     // are brought up to date, reading the step's changes in place; they are
     // forgotten after it (before a full search, which reads none: a
     // generation's marks are still in the caches now).
-    auto afterStep = [&](std::size_t r, std::size_t daughter, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom) {
+    // A generation passes kAnyRule and its group's merge tolerance.
+    auto afterStep = [&](std::size_t r, std::size_t daughter, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom,
+                         double generationMerge = 0) {
         if (merger) {
             merger->sync(g);
-            if (const double tolerance = rules.info(r).mergeTolerance; tolerance > 0) merger->mergeChanged(g, tolerance);
+            const double tolerance = r == IncrementalMatches::kAnyRule ? generationMerge : rules.info(r).mergeTolerance;
+            if (tolerance > 0) merger->mergeChanged(g, tolerance);
         }
         sets.syncNear(g);
         const bool everything = IncrementalMatches::searchesEverything(g);
@@ -238,6 +246,28 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
         bool applied = false;
         for (auto& grp : groups) {
             if (grp.limit && grp.applied >= *grp.limit) continue;
+            if (grp.generation) {
+                // Every rule of the priority at once (ParallelStep::runGeneration).
+                generationSets.clear();
+                bool any = false;
+                for (std::size_t r : grp.rules) {
+                    generationSets.push_back(&sets.of(r));
+                    any = any || !sets.of(r).empty();
+                }
+                if (!any) continue;
+                try {
+                    result.applications +=
+                        static_cast<long long>(parallel.runGeneration(grp.rules, generationSets, rules, g, rng, step, tracer));
+                } catch (const DeadlinePassed&) {
+                    throw timeLimit(limits, step);
+                }
+                ++grp.applied;
+                retireIfSpent(grp);
+                afterStep(IncrementalMatches::kAnyRule, IncrementalMatches::kAnyDaughter, step, newEdgesFrom, newNodesFrom,
+                          grp.mergeTolerance);
+                applied = true;
+                break;
+            }
             // Rules of one priority are tried in random order (a group of
             // one needs no copy: shuffling it draws nothing).
             const std::vector<std::size_t>* tryOrder = &grp.rules;

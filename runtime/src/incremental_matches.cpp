@@ -57,6 +57,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
         pairs += (info.weights.size() + 1) * rules.ruleCount();
     }
     std::stable_sort(byRadius_.begin(), byRadius_.end(), [&](std::size_t a, std::size_t b) { return radius_[a] < radius_[b]; });
+    for (const std::size_t r : byRadius_) allRules_.push_back(static_cast<std::uint32_t>(r) | kReadsValues);
     if (pairs > kMaxListedPairs) return;   // decided at each step instead (affectedBy)
     std::vector<std::uint32_t> list;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
@@ -152,6 +153,7 @@ bool IncrementalMatches::searchesEverything(const Graph& g) {
 }
 
 std::span<const std::uint32_t> IncrementalMatches::affectedSets(std::size_t applied, std::size_t daughter) {
+    if (applied == kAnyRule) return allRules_;
     if (firstList_.empty()) {
         affectedBy(applied, daughter, scratchAffected_);
         return scratchAffected_;

@@ -52,6 +52,10 @@ struct RuleInfo {
     long long priority = 0;
     Pick pick = Pick::Random;
     bool parallel = false;
+    // Its priority is a generation (`priority P generation;`): when the
+    // priority's turn comes, every one of its rules rewrites all its matches
+    // in one step (ParallelStep::runGeneration).
+    bool generation = false;
     std::vector<double> weights;      // one per daughter, all > 0
     // The pattern's shape, for incremental matching: the kinds of its nodes
     // (-1: wildcard), its edge count, and how far (in edges) from a changed

@@ -61,6 +61,8 @@ public:
     // `daughter` changes are repaired (RuleInfo::readKinds; kAnyDaughter: any
     // of its daughters, as after a parallel step).
     static constexpr std::size_t kAnyDaughter = ~std::size_t{0};
+    // As `appliedRule`: several rules applied at once (a generation); every set is repaired.
+    static constexpr std::size_t kAnyRule = ~std::size_t{0};
     void update(const Graph& g, EdgeId newEdgesFrom, NodeId newNodesFrom, bool everything, std::size_t appliedRule,
                 std::size_t daughter);
     // How many sets of rules not retired updates have repaired or refilled,
@@ -133,6 +135,7 @@ private:
     static constexpr std::size_t kMaxListedPairs = std::size_t{1} << 20;
     std::vector<std::uint32_t> listed_, listEnds_, firstList_;
     std::vector<std::uint32_t> scratchAffected_;
+    std::vector<std::uint32_t> allRules_;   // every rule by radius, reading values: after kAnyRule
     std::size_t setsRepaired_ = 0, setsSkipped_ = 0;
     std::size_t liveRules_ = 0;   // rules not retired
     GrowArray<std::uint32_t> seen_;
