@@ -71,6 +71,15 @@ bool InterpretedRules::keptByNewEdgeGate(bool gateHere) const {
     return false;
 }
 
+EvalFrame InterpretedRules::boundFrame(const rt::Graph& g) {
+    EvalFrame f = st_.frame(nullptr);
+    f.graph = &g;
+    f.nodes = boundNodes_.data();
+    f.edges = boundEdges_.data();
+    f.faces = boundFaces_.data();
+    return f;
+}
+
 template <class OnComplete>
 bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, std::size_t i, OnComplete& onComplete) {
     if (i == ops.size()) return onComplete();
@@ -87,20 +96,12 @@ bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, s
     return std::visit(
         lower::Overloaded{
             [&](const lower::Filter& o) {
-                EvalFrame f = st_.frame(nullptr);
-                f.graph = &g;
-                f.nodes = boundNodes_.data();
-                f.edges = boundEdges_.data();
-                f.faces = boundFaces_.data();
+                EvalFrame f = boundFrame(g);
                 return evaluateBool(*o.condition, f) && search(g, ops, i + 1, onComplete);
             },
             [&](const lower::MatchFace& o) { return bindFace(g, o, ops, i, onComplete); },
             [&](const lower::ScanNear& o) {
-                EvalFrame f = st_.frame(nullptr);
-                f.graph = &g;
-                f.nodes = boundNodes_.data();
-                f.edges = boundEdges_.data();
-                f.faces = boundFaces_.data();
+                EvalFrame f = boundFrame(g);
                 const rt::Value centre = evaluate(*o.centre, f);
                 const rt::Value r = evaluate(*o.radius, f);   // an int or a float
                 const double radius = std::holds_alternative<long long>(r) ? static_cast<double>(std::get<long long>(r)) : std::get<double>(r);

@@ -77,6 +77,8 @@ private:
     std::vector<rt::FaceId> boundFaces_;
     rt::EdgeId newEdgesFrom_ = rt::kNoId;
     std::vector<rt::Value> locals_;
+    // A frame reading the elements bound so far (conditions, near queries' centres).
+    EvalFrame boundFrame(const rt::Graph& g);
     const ir::Rule* current_ = nullptr;
     std::size_t currentIndex_ = 0;   // current_'s index (near queries record under it)
     std::optional<rt::AngleLayoutSpec> angleLayout_;

@@ -62,12 +62,7 @@ std::optional<NearNegative> distanceTest(const ir::Expr& e, int node) {
         return std::nullopt;
     const ir::Expr* centre = isPosOf(call->args[0], node) ? &call->args[1] : isPosOf(call->args[1], node) ? &call->args[0] : nullptr;
     if (!centre || readsNode(*centre, node) || readsNode(*radius, node)) return std::nullopt;
-    NearNegative out;
-    out.node = node;
-    out.centre = centre;
-    out.radius = radius;
-    out.inclusive = inclusive;
-    return out;
+    return NearNegative{node, -1, centre, radius, inclusive, 0};
 }
 
 }  // namespace
