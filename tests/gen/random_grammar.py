@@ -15,6 +15,9 @@ import sys
 
 def grammar(seed: int) -> str:
     r = random.Random(seed)
+    # Near conditions (a node near a point: the spatial index) come from a
+    # generator of their own, so the rest of each grammar stays as it was.
+    near = random.Random(seed * 7919 + 1)
     out = []
     w = out.append
     w(f"// random grammar {seed} (tests/gen/random_grammar.py)")
@@ -107,6 +110,13 @@ def grammar(seed: int) -> str:
         if r.random() < 0.3:
             kind = r.choice(edge_kinds)
             lines.append(f"not {{ z: {r.choice(node_kinds)[0]}; {mnodes[0][0]} {arrow(kind)} z; }}")
+        if near.random() < 0.3:
+            o_kind = near.choice(node_kinds)[0]
+            attr = near.choice(["", f" where o.i > {near.randint(1, 8)}"])
+            centre = f"{mnodes[-1][0]}.pos + ({near.choice([0, 0.5, -1])}, {near.choice([0, 1])})"
+            test = near.choice([f"distance(o.pos, {centre}) < {near.choice(['0.8', '2', 'q + 1'])}",
+                                f"{near.choice(['1.5', '3'])} >= distance({centre}, o.pos)"])
+            lines.append(f"not {{ o: {o_kind}{attr}; where {test}; }}")
         w(f"rule R{ri} {' '.join(opts)} {{")
         w("    match { " + " ".join(lines) + " }")
         w(f"    let v = {mnodes[-1][0]}.pos - {mnodes[0][0]}.pos;")
