@@ -20,6 +20,11 @@ Benchmarks:
   g3           G^3's models beside its Table 5.1 (Laganeckiene 2012: Core2 Duo seconds),
                and G^3's Split edge / Split face over a model growing to a million elements
                (bench/grammars/g3_quads.g2d)
+  output       writing the result: compiled Koch level 10 (--quick: 7) with --no-svg, -o x.svg,
+               --json x.json and --svg-compact: seconds (the whole run), MB written, MB/s of the
+               writing (the run less the derivation), peak RSS
+  seeds        many seeds: `--seeds 1..200` of examples/stained_glass.g2d (smallest=0.005, SVGs written)
+               with -j1 and -j2, compiled and interpreted: batch wall time and the -j2/-j1 throughput ratio
   infer        `g2d infer` on the author's 45 examples (examples/infer/merrell):
                the grammar's numbers and the inference time, beside Merrell 2023's Table 1,
                and the written grammar's generation (1000 steps, interpreted)
@@ -309,6 +314,7 @@ def coral(s, quick):
 # G^3 (Laganeckiene 2012) Table 5.1: its models' generation times on a Core2 Duo, in seconds.
 G3_TABLE_5_1 = {"g3_house": 0.31, "g3_cupboard": 0.16, "g3_sofa": 50.22, "g3_tree_box": 6.14}
 
+
 def g3(s, quick):
     for name, seconds in G3_TABLE_5_1.items():
         path = os.path.join(ROOT, "examples", name + ".g2d")
@@ -387,6 +393,65 @@ def infer_table(g2d, repeat):
           f"slowest generation of {GENERATION_STEPS} steps: {worst_generation:.0f} ms")
 
 
+def output(s, quick):
+    """The cost of writing the result, beside the derivation alone (wall time of the whole run)."""
+    grammar, exe = s.build("koch-oldest", open(os.path.join(ROOT, "examples/koch_snowflake.g2d")).read())
+    level = 7 if quick else 10
+    target = os.path.join(s.work, "out")
+    cases = [("derivation only", ["--no-svg"], None),
+             ("SVG", ["-o", target + ".svg"], target + ".svg"),
+             ("JSON", ["--no-svg", "--json", target + ".json"], target + ".json"),
+             ("compact SVG", ["--svg-compact", "-o", target + "-compact.svg"], target + "-compact.svg")]
+    print()
+    print(f"Writing the result: compiled Koch level {level} (fastest of {s.args.repeat}):")
+    print()
+    print("| output | seconds | derivation s | MB written | MB/s written | peak RSS MB |")
+    print("|---|---:|---:|---:|---:|---:|", flush=True)
+    for name, flags, path in cases:
+        best, peak = None, 0
+        for _ in range(s.args.repeat):
+            start = time.perf_counter()
+            stats, rss = run_measured([exe, "--stats", "-D", f"max_lod={level}"] + flags)
+            wall = time.perf_counter() - start
+            peak = max(peak, rss)
+            if best is None or wall < best[0]:
+                best = (wall, stats["seconds"])
+        wall, derivation = best
+        size = os.path.getsize(path) / 1e6 if path else 0.0
+        rate = f"{size / (wall - derivation):,.0f}" if path and wall > derivation else "–"
+        print(f"| {name} | {wall:.2f} | {derivation:.2f} | {size:,.0f} | {rate} | {peak / 1e6:,.0f} |", flush=True)
+        if path:
+            os.remove(path)
+
+
+SEEDS_EXAMPLE = ("examples/stained_glass.g2d", ["-D", "smallest=0.005"])   # ~50 ms a seed interpreted, seed-dependent
+
+
+def seeds_table(s, quick):
+    """`--seeds` throughput: the wall time of a whole batch (SVGs written) with -j1 and -j2, alternating,
+    fastest of `repeat` rounds; the ratio is the speed-up from the second core."""
+    path, extra = SEEDS_EXAMPLE
+    grammar, exe = s.build("seeds_" + os.path.basename(path)[:-4], open(os.path.join(ROOT, path)).read())
+    count = 40 if quick else 200
+    out = tempfile.mkdtemp(prefix="seeds-", dir=s.work)
+    print()
+    print(f"Many seeds: {path} {' '.join(extra)}, --seeds 1..{count}, an SVG per seed "
+          f"(wall time of the batch, fastest of {s.args.repeat}):")
+    print()
+    print("| back end | -j1 s | -j2 s | seeds/s at -j2 | -j2 / -j1 throughput |")
+    print("|---|---:|---:|---:|---:|", flush=True)
+    for label, program in (("compiled", [exe]), ("interpreted", [s.args.g2d, "run", grammar])):
+        best = {1: float("inf"), 2: float("inf")}
+        for _ in range(s.args.repeat):
+            for jobs in (1, 2):
+                cmd = program + ["--seeds", f"1..{count}", "-j", str(jobs), "-o", os.path.join(out, "{seed}.svg"),
+                                 "--quiet"] + extra
+                start = time.perf_counter()
+                subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+                best[jobs] = min(best[jobs], time.perf_counter() - start)
+        print(f"| {label} | {best[1]:.2f} | {best[2]:.2f} | {count / best[2]:.0f} | {best[1] / best[2]:.2f}× |", flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--g2d", default=os.path.join(ROOT, "build/release/bin/g2d"))
@@ -394,7 +459,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="runs per case; the fastest counts (default 3)")
     ap.add_argument("--short-repeat", type=int, default=21,
                     help="runs per case when its runs take under 10 ms (default 21)")
-    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "coral", "g3", "infer", "instructions"])
+    ap.add_argument("--only", nargs="+", choices=["thesis", "koch", "sierpinski", "mutex", "subdivide", "coral", "g3", "output", "infer", "seeds", "instructions"])
     args = ap.parse_args()
     if args.quick:
         args.repeat = args.short_repeat = 1
@@ -410,8 +475,12 @@ def main():
     for _, fn in timed:
         fn(s, args.quick)
     s.flatness()
+    if not args.only or "output" in args.only:
+        output(s, args.quick)
     if not args.only or "infer" in args.only:
         infer_table(args.g2d, args.repeat)
+    if not args.only or "seeds" in args.only:
+        seeds_table(s, args.quick)
     # Instruction counts: in the full suite, or when asked (--quick skips them:
     # it also runs sanitized builds, which valgrind cannot run).
     asked = bool(args.only and "instructions" in args.only)

@@ -531,12 +531,12 @@ private:
             }
             out += "    }\n\n";
         }
-        out += "    std::vector<DrawItem> drawItems() override {\n        try {\n"
-               "            return rt::drawItems(graph_, schema_.enumValueNames, [this](DrawItem& it, int kind) {\n"
+        out += "    void drawItem(ElemClass cls, std::uint32_t id, DrawItem& out) override {\n        try {\n"
+               "            rt::drawItem(graph_, cls, id, schema_.enumValueNames, [this](DrawItem& it, int kind) {\n"
                "                switch (kind) {\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
             out += "                case " + str(static_cast<long long>(k)) + ": style_" + str(static_cast<long long>(k)) + "(it); break;\n";
-        out += "                default: break;\n                }\n            });\n";
+        out += "                default: break;\n                }\n            }, out);\n";
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
         return out;
     }

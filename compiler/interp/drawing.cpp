@@ -4,16 +4,23 @@
 
 namespace g2d::interp {
 
-std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) {
+void drawItem(const rt::Graph& g, const ProgramState& st, const std::vector<std::vector<std::string>>& enumNames,
+              rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) {
     const ir::Program& prog = *st.prog;
     EvalFrame f = st.frame(nullptr);
     f.graph = &g;
-    std::vector<std::vector<std::string>> enumNames;
-    for (const auto& e : prog.enums) enumNames.push_back(e.values);
-    return rt::drawItems(g, enumNames, [&](rt::DrawItem& item, int kind) {
+    rt::drawItem(g, cls, id, enumNames, [&](rt::DrawItem& item, int kind) {
         f.selfClass = item.cls;
         f.self = item.id;
         for (const auto& p : prog.kinds[kind].style) item.props.push_back({p.name, evaluate(p.value, f)});
+    }, out);
+}
+
+std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) {
+    std::vector<std::vector<std::string>> enumNames;
+    for (const auto& e : st.prog->enums) enumNames.push_back(e.values);
+    return rt::drawItems(g, [&](rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) {
+        drawItem(g, st, enumNames, cls, id, out);
     });
 }
 

@@ -10,6 +10,9 @@
 namespace g2d::interp {
 
 std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st);
+// One element's item (`enumNames`: each enum's value names).
+void drawItem(const rt::Graph& g, const ProgramState& st, const std::vector<std::vector<std::string>>& enumNames,
+              rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out);
 rt::JsonSchema jsonSchema(const ir::Program& prog);
 
 }  // namespace g2d::interp

@@ -51,7 +51,9 @@ std::map<long long, long long> InterpretedRun::priorityLimits() {
     return out;
 }
 
-std::vector<rt::DrawItem> InterpretedRun::drawItems() { return interp::drawItems(graph_, state_); }
+void InterpretedRun::drawItem(rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) {
+    interp::drawItem(graph_, state_, schema_.enumValueNames, cls, id, out);
+}
 
 rt::Value InterpretedRun::attribute(rt::ElemClass cls, std::uint32_t id, int attr) const {
     return graph_.attrOf(cls, id, attr);

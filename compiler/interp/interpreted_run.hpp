@@ -19,7 +19,7 @@ public:
     std::map<long long, long long> priorityLimits() override;
     rt::Graph& graph() override { return graph_; }
     rt::RuleSet& rules() override { return *rules_; }
-    std::vector<rt::DrawItem> drawItems() override;
+    void drawItem(rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) override;
     const std::vector<std::string>& svgDefs() const override { return prog_.svgDefs; }
     const rt::JsonSchema& jsonSchema() const override { return schema_; }
     rt::Value attribute(rt::ElemClass cls, std::uint32_t id, int attr) const override;

@@ -103,10 +103,10 @@ AtomicFile::~AtomicFile() {
     unregisterTemp(slot_);
 }
 
-void AtomicFile::writeAll(const std::string& contents) {
+void AtomicFile::drain(const char* data, std::size_t size) {
     std::size_t done = 0;
-    while (done < contents.size()) {
-        const ssize_t n = ::write(fd_, contents.data() + done, contents.size() - done);
+    while (done < size) {
+        const ssize_t n = ::write(fd_, data + done, size - done);
         if (n < 0) {
             if (errno == EINTR) continue;
             throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
@@ -116,7 +116,12 @@ void AtomicFile::writeAll(const std::string& contents) {
 }
 
 void AtomicFile::commit(const std::string& contents) {
-    writeAll(contents);
+    write(contents);
+    commit();
+}
+
+void AtomicFile::commit() {
+    flush();
     if (direct_) {
         const int fd = fd_;
         fd_ = -1;

@@ -1,64 +1,75 @@
 #include "g2d/draw_items.hpp"
 
+#include "g2d/draw_order.hpp"
+
 namespace g2d::rt {
 
 namespace {
 
-Value printable(const Value& v, const std::vector<std::vector<std::string>>& enumValueNames) {
-    if (const auto* e = std::get_if<EnumVal>(&v)) return enumValueNames[e->enumId][e->index];
-    return v;
+// Enum values print by their value's name; other values stay as they are.
+void makePrintable(Value& v, const std::vector<std::vector<std::string>>& enumValueNames) {
+    if (const auto* e = std::get_if<EnumVal>(&v)) v = enumValueNames[e->enumId][e->index];
 }
 
 void resolve(DrawItem& item, int kind, StyleList own, const Graph& g, const std::vector<std::vector<std::string>>& names,
              const KindStyle& kindStyle) {
     kindStyle(item, kind);
-    for (auto& p : item.props) p.value = printable(p.value, names);
+    for (auto& p : item.props) makePrintable(p.value, names);
     for (const auto& o : own) {
         const std::string& name = g.stylePropName(o.prop);
         bool replaced = false;
         for (auto& p : item.props)
             if (p.prop == name) {
-                p.value = printable(o.value, names);
+                p.value = o.value;
+                makePrintable(p.value, names);
                 replaced = true;
             }
-        if (!replaced) item.props.push_back({name, printable(o.value, names)});
+        if (!replaced) {
+            item.props.push_back({name, o.value});
+            makePrintable(item.props.back().value, names);
+        }
     }
 }
 
 }  // namespace
 
+void drawItem(const Graph& g, ElemClass cls, std::uint32_t id, const std::vector<std::vector<std::string>>& enumValueNames,
+              const KindStyle& kindStyle, DrawItem& item) {
+    item.cls = cls;
+    item.id = id;
+    item.corners.clear();
+    item.props.clear();
+    item.depth = 0;
+    item.turnedAway = false;
+    if (cls == ElemClass::Face) {
+        CornerId c = g.firstCorner(id);
+        for (int i = 0; i < g.cornerCount(id); ++i, c = g.nextCorner(c)) item.corners.push_back(g.pos(g.cornerNode(c)));
+        item.a = item.b = g.centroid(id);
+        resolve(item, g.faceKind(id), g.faceStyle(id), g, enumValueNames, kindStyle);
+    } else if (cls == ElemClass::Edge) {
+        item.a = g.pos(g.source(id));
+        item.b = g.pos(g.target(id));
+        resolve(item, g.edgeKind(id), g.edgeStyle(id), g, enumValueNames, kindStyle);
+    } else {
+        item.a = g.pos(id);
+        item.b = {0, 0};
+        resolve(item, g.nodeKind(id), g.nodeStyle(id), g, enumValueNames, kindStyle);
+    }
+}
+
 std::vector<DrawItem> drawItems(const Graph& g, const std::vector<std::vector<std::string>>& enumValueNames,
                                 const KindStyle& kindStyle) {
+    return drawItems(g, [&](ElemClass cls, std::uint32_t id, DrawItem& item) {
+        drawItem(g, cls, id, enumValueNames, kindStyle, item);
+    });
+}
+
+std::vector<DrawItem> drawItems(const Graph& g, const ItemMaker& make) {
     std::vector<DrawItem> items;
-    for (FaceId f = 0; f < g.faceCapacity(); ++f) {
-        if (!g.faceAlive(f)) continue;
-        DrawItem item;
-        item.cls = ElemClass::Face;
-        item.id = f;
-        CornerId c = g.firstCorner(f);
-        for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) item.corners.push_back(g.pos(g.cornerNode(c)));
-        item.a = item.b = g.centroid(f);
-        resolve(item, g.faceKind(f), g.faceStyle(f), g, enumValueNames, kindStyle);
-        items.push_back(std::move(item));
-    }
-    for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
-        if (!g.edgeAlive(e)) continue;
-        DrawItem item;
-        item.cls = ElemClass::Edge;
-        item.id = e;
-        item.a = g.pos(g.source(e));
-        item.b = g.pos(g.target(e));
-        resolve(item, g.edgeKind(e), g.edgeStyle(e), g, enumValueNames, kindStyle);
-        items.push_back(std::move(item));
-    }
-    for (NodeId n = 0; n < g.nodeCapacity(); ++n) {
-        if (!g.nodeAlive(n)) continue;
-        DrawItem item;
-        item.id = n;
-        item.a = g.pos(n);
-        resolve(item, g.nodeKind(n), g.nodeStyle(n), g, enumValueNames, kindStyle);
-        items.push_back(std::move(item));
-    }
+    forEachLiveElement(g, [&](ElemClass cls, std::uint32_t id) {
+        make(cls, id, items.emplace_back());
+        return true;
+    });
     return items;
 }
 

@@ -9,9 +9,14 @@
 
 namespace g2d::rt {
 
-std::string writeObj(const Graph& g, const JsonSchema& schema) {
-    std::string out = "# g2d: " + std::to_string(g.nodeCount()) + " nodes, " + std::to_string(g.edgeCount()) + " edges, " +
-                      std::to_string(g.faceCount()) + " faces\n";
+void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
+    out.write("# g2d: ");
+    out.integer(static_cast<long long>(g.nodeCount()));
+    out.write(" nodes, ");
+    out.integer(static_cast<long long>(g.edgeCount()));
+    out.write(" edges, ");
+    out.integer(static_cast<long long>(g.faceCount()));
+    out.write(" faces\n");
     // OBJ indices are 1-based in write order; node ids have gaps after deletions.
     std::vector<std::uint32_t> index(g.nodeCapacity(), 0);
     std::uint32_t next = 1;
@@ -19,7 +24,13 @@ std::string writeObj(const Graph& g, const JsonSchema& schema) {
         if (!g.nodeAlive(n)) continue;
         const vec3 p = g.pos3(n);
         if (!isFinitePosition(p)) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
-        out += "v " + formatNumber(p.x) + " " + formatNumber(p.y) + " " + formatNumber(p.z) + "\n";
+        out.write("v ");
+        out.number(p.x);
+        out.write(' ');
+        out.number(p.y);
+        out.write(' ');
+        out.number(p.z);
+        out.write('\n');
         index[n] = next++;
     }
     for (std::size_t k = 0; k < g.kinds().size(); ++k) {
@@ -27,20 +38,37 @@ std::string writeObj(const Graph& g, const JsonSchema& schema) {
         std::vector<FaceId> faces(g.facesOfKind(static_cast<int>(k)).begin(), g.facesOfKind(static_cast<int>(k)).end());
         if (faces.empty()) continue;
         std::sort(faces.begin(), faces.end());
-        out += "g " + schema.kindNames[k] + "\n";
+        out.write("g ");
+        out.write(schema.kindNames[k]);
+        out.write('\n');
         for (FaceId f : faces) {
-            out += "f";
+            out.write('f');
             CornerId c = g.firstCorner(f);
-            for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) out += " " + std::to_string(index[g.cornerNode(c)]);
-            out += "\n";
+            for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) {
+                out.write(' ');
+                out.integer(index[g.cornerNode(c)]);
+            }
+            out.write('\n');
         }
     }
     if (g.edgeCount() > 0) {
-        out += "g edges\n";
-        for (EdgeId e = 0; e < g.edgeCapacity(); ++e)
-            if (g.edgeAlive(e)) out += "l " + std::to_string(index[g.source(e)]) + " " + std::to_string(index[g.target(e)]) + "\n";
+        out.write("g edges\n");
+        for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
+            if (!g.edgeAlive(e)) continue;
+            out.write("l ");
+            out.integer(index[g.source(e)]);
+            out.write(' ');
+            out.integer(index[g.target(e)]);
+            out.write('\n');
+        }
     }
-    return out;
+    out.flush();
+}
+
+std::string writeObj(const Graph& g, const JsonSchema& schema) {
+    StringOut out;
+    writeObj(g, schema, out);
+    return std::move(out.text());
 }
 
 }  // namespace g2d::rt

@@ -12,6 +12,7 @@
 
 #include "g2d/atomic_file.hpp"
 #include "g2d/obj_writer.hpp"
+#include "g2d/seed_batch.hpp"
 #include "g2d/trace.hpp"
 #include "g2d/source_excerpt.hpp"
 #include "g2d/view_page.hpp"
@@ -68,7 +69,7 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
 // Shows steps, elements and rate on a terminal, at most five times a second.
 class Progress {
 public:
-    Progress() : enabled_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()), last_(start_) {}
+    explicit Progress(bool wanted) : enabled_(wanted && isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()), last_(start_) {}
     void update(long long step, const Graph& g) {
         if (!enabled_ || (step & 255) != 0) return;
         auto now = std::chrono::steady_clock::now();
@@ -142,6 +143,7 @@ void reportRunError(const RunRequest& request, GrammarRun& grammar, const std::e
 }  // namespace
 
 int runGrammar(const RunRequest& request, GrammarRun& grammar) {
+    if (request.seeds) return runSeedBatch(request, grammar);   // many seeds: one runGrammar per seed, in workers
     std::vector<Value> params;
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
         return usageError(request, err);
@@ -189,7 +191,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     std::string stopped;
     int status = 0;
     try {
-        Progress display;
+        Progress display(!request.quiet);
         deriveGrammar(grammar, params, request.seed, settings, derived,
                       [&](long long s, const Graph& g) { display.update(s, g); }, &progress, trace.get());
         stopped = stopName(result.stopped);
@@ -214,16 +216,33 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         stopped = "error";
         status = 1;
     }
+    if (request.outcome)   // a batch's summary row (seed_batch.cpp)
+        *request.outcome = RunOutcome{result.steps, grammar.graph().nodeCount() + grammar.graph().edgeCount(), stopped};
     if (status != 0 && !(request.keepPartial && progress.started)) return status;
 
     try {
         const Graph& graph = grammar.graph();
         const std::string name = std::filesystem::path(request.grammarFile).filename().string();
-        const std::vector<DrawItem> items = svgFile || traceHtmlFile || viewFile ? grammar.drawItems() : std::vector<DrawItem>{};
-        std::vector<DrawItem> drawn = svgFile || traceHtmlFile ? items : std::vector<DrawItem>{};
-        if (grammar.jsonSchema().space3d) projectDrawing(drawn, graph, view);
-        const std::string svg = svgFile || traceHtmlFile ? writeSvg(std::move(drawn), grammar.svgDefs()) : "";
-        if (svgFile) svgFile->commit(svg);
+        // The SVG is streamed, its items made one at a time; the trace page,
+        // small by design, embeds it whole.
+        const bool space3d = grammar.jsonSchema().space3d;
+        const ItemMaker drawn = [&](ElemClass cls, std::uint32_t id, DrawItem& it) {
+            grammar.drawItem(cls, id, it);
+            if (space3d) projectItem(it, graph, view);
+        };
+        SvgOptions svgOptions;
+        svgOptions.compact = request.svgCompact;
+        svgOptions.precision = request.precision;
+        std::string svg;
+        if (traceHtmlFile) {
+            StringOut text;
+            writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
+            svg = std::move(text.text());
+            if (svgFile) svgFile->commit(svg);
+        } else if (svgFile) {
+            writeSvg(graph, drawn, grammar.svgDefs(), *svgFile, svgOptions);
+            svgFile->commit();
+        }
         if (trace) {
             const std::string data = trace->json(name, request.seed, stopped);
             if (traceJsonFile) traceJsonFile->commit(data);
@@ -235,12 +254,16 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                 {"seed", static_cast<long long>(request.seed)},
                 {"steps", result.steps},
                 {"stopped", stopped}};
-            jsonFile->commit(writeJson(graph, grammar.jsonSchema(), meta,
-                                       [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); }));
+            writeJson(graph, grammar.jsonSchema(), meta, *jsonFile,
+                      [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); });
+            jsonFile->commit();
         }
-        if (objFile) objFile->commit(writeObj(graph, grammar.jsonSchema()));
+        if (objFile) {
+            writeObj(graph, grammar.jsonSchema(), *objFile);
+            objFile->commit();
+        }
         if (viewFile) {
-            ViewModel model = viewModelOf(graph, items, name);
+            ViewModel model = viewModelOf(graph, grammar.drawItems(), name);
             if (grammar.jsonSchema().space3d) model.home = view.toward;   // the SVG's view, z up
             viewFile->commit(writeViewPage(model));
         }

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "g2d/param_parse.hpp"
+#include "g2d/seed_batch.hpp"
 #include "g2d/value.hpp"
 
 namespace g2d::rt {
@@ -38,7 +39,12 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
     addOptional(app, "--view-from", r.viewFrom,
                 "3D grammars: draw the SVG as seen from this direction (default 1,-2,1.5; z is up)", "X,Y,Z");
     app.add_flag("--no-svg", r.noSvg, "Write no SVG");
-    app.add_option("--seed", r.seed, "Seed of the random generator (default 1)")->check(CLI::NonNegativeNumber)->type_name("N");
+    app.add_flag("--svg-compact", r.svgCompact,
+                 "Smaller SVG for huge drawings: each run of alike lines as one <path> (the same picture)");
+    addOptional(app, "--precision", r.precision, "Round SVG coordinates to N decimals (default: exact)", "N")
+        ->check(CLI::Range(0, 15));
+    CLI::Option* seed =
+        app.add_option("--seed", r.seed, "Seed of the random generator (default 1)")->check(CLI::NonNegativeNumber)->type_name("N");
     app.add_option("-D,--define", r.defines, "Set a parameter (the grammar's are listed below)")
         ->allow_extra_args(false)
         ->type_name("NAME=VALUE");
@@ -52,6 +58,8 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
     addOptional(app, "--trace-json", r.traceJson, "Write the derivation step by step as JSON", "FILE");
     app.add_flag("--verify-matches", r.verifyMatches,
                  "After every step, check the engine's kept matches against a full search (slow; an error names the first difference)");
+    app.add_flag("-q,--quiet", r.quiet, "Show no progress display on stderr");
+    addSeedBatchOptions(app, r, seed);
 }
 
 std::string parameterHelp(const std::vector<ParamSpec>& params) {

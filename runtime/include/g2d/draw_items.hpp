@@ -17,7 +17,15 @@ namespace g2d::rt {
 // positions are set).
 using KindStyle = std::function<void(DrawItem& item, int kind)>;
 
+// The item of one live element, made in `item` (whose storage is reused:
+// outputs make items one at a time).
+void drawItem(const Graph& g, ElemClass cls, std::uint32_t id, const std::vector<std::vector<std::string>>& enumValueNames,
+              const KindStyle& kindStyle, DrawItem& item);
+
 std::vector<DrawItem> drawItems(const Graph& g, const std::vector<std::vector<std::string>>& enumValueNames,
                                 const KindStyle& kindStyle);
+
+// Every live element's item, made by `make` (the small pages that need all at once).
+std::vector<DrawItem> drawItems(const Graph& g, const ItemMaker& make);
 
 }  // namespace g2d::rt

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "g2d/derivation.hpp"
+#include "g2d/draw_items.hpp"
 #include "g2d/json_writer.hpp"
 #include "g2d/param_parse.hpp"
 #include "g2d/svg_writer.hpp"
@@ -44,7 +45,11 @@ public:
     virtual Graph& graph() = 0;
     virtual RuleSet& rules() = 0;
 
-    virtual std::vector<DrawItem> drawItems() = 0;
+    // The item of one live element (outputs make them one at a time).
+    virtual void drawItem(ElemClass cls, std::uint32_t id, DrawItem& out) = 0;
+    std::vector<DrawItem> drawItems() {
+        return rt::drawItems(graph(), [this](ElemClass cls, std::uint32_t id, DrawItem& out) { drawItem(cls, id, out); });
+    }
     virtual const std::vector<std::string>& svgDefs() const = 0;
     virtual const JsonSchema& jsonSchema() const = 0;
     virtual Value attribute(ElemClass cls, std::uint32_t id, int attr) const = 0;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "g2d/graph.hpp"
+#include "g2d/text_out.hpp"
 
 namespace g2d::rt {
 
@@ -28,6 +29,9 @@ using AttributeReader = std::function<Value(ElemClass cls, std::uint32_t id, int
 std::string writeJson(const Graph& g, const JsonSchema& schema,
                       const std::vector<std::pair<std::string, Value>>& graphAttrs,
                       const AttributeReader& attr = {});
+// The same text, streamed into `out`.
+void writeJson(const Graph& g, const JsonSchema& schema, const std::vector<std::pair<std::string, Value>>& graphAttrs,
+               TextOut& out, const AttributeReader& attr = {});
 
 std::string jsonString(const std::string& s);
 

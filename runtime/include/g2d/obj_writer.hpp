@@ -12,5 +12,7 @@
 namespace g2d::rt {
 
 std::string writeObj(const Graph& g, const JsonSchema& schema);
+// The same text, streamed into `out`.
+void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out);
 
 }  // namespace g2d::rt

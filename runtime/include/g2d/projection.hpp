@@ -31,5 +31,6 @@ ViewProjection viewFrom(vec3 from);
 // Replaces the items' 2D positions (the graph's x and y) by the projection of
 // their 3D positions, and sets their depth.
 void projectDrawing(std::vector<DrawItem>& items, const Graph& g, const ViewProjection& view);
+void projectItem(DrawItem& it, const Graph& g, const ViewProjection& view);
 
 }  // namespace g2d::rt

@@ -1,7 +1,8 @@
 #pragma once
 // The run procedure shared by `g2d run` and compiled grammars:
-// RUN [-o OUT.svg] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--seed N] [-D NAME=VALUE]…
-//     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial]
+// RUN [-o OUT.svg] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--seed N] [-D NAME=VALUE]…
+//     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial] [--quiet]
+//     [--seeds A..B [-j N] [--summary FILE]]
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 namespace g2d::rt {
 
 class TraceRecorder;   // --trace (runtime-internal)
+struct RunOutcome;
 
 inline constexpr long long kDefaultStepLimit = 10000;
 
@@ -25,6 +27,8 @@ struct RunRequest {
     std::optional<std::string> viewOut;   // the model in 3D, as a self-contained page (view_page.hpp)
     std::optional<std::string> viewFrom;  // 3D grammars: the SVG's view direction, "X,Y,Z" (projection.hpp)
     bool noSvg = false;
+    bool svgCompact = false;              // runs of alike lines as one <path> each (svg_writer.hpp)
+    std::optional<int> precision;         // SVG coordinates rounded to this many decimals
     std::uint64_t seed = 1;
     std::vector<std::string> defines;     // NAME=VALUE
     std::optional<long long> steps;       // overrides the grammar's global limit
@@ -35,6 +39,20 @@ struct RunRequest {
     std::optional<std::string> traceHtml; // the derivation step by step, as a self-contained page
     std::optional<std::string> traceJson; // the same, as data
     bool verifyMatches = false;           // check incremental matching after every step (DerivationOptions)
+    bool quiet = false;                   // no progress display on stderr
+    // Many seeds (seed_batch.hpp): one derivation per seed of `seeds`, in
+    // `jobs` worker processes, output names from the patterns ({seed}).
+    std::optional<std::string> seeds;     // "1..1000", "1,5,9..12"
+    std::optional<int> jobs;              // default: the cores this process may use
+    std::optional<std::string> summaryOut;// the summary's JSON lines (default: stdout)
+    RunOutcome* outcome = nullptr;        // filled in after the derivation, when set (a batch's summary row)
+};
+
+// How a derivation ended, for a batch's summary row.
+struct RunOutcome {
+    long long steps = 0;                  // the last completed step
+    std::size_t elements = 0;             // nodes + edges
+    std::string stopped;                  // as in the JSON output ("terminal", "max_elements", "error", …)
 };
 
 // The bounds of one derivation.

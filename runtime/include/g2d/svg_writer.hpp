@@ -16,10 +16,20 @@
 //   z       drawing order (lower first; then faces, edges, nodes; then, in 3D,
 //           farther first; then by id)
 //   filter  an id of a filter in `defs` (written as url(#id)) or any CSS filter
+//
+// The compact form (SvgOptions::compact) writes each run of consecutive plain
+// lines (edges drawn as `line`, without an arrow or a fill) with the same
+// attributes as one <path> of `M x y L x y` segments, a segment that starts
+// where the last ended continuing it (`L x y x y`); every other item is
+// written as usual. `precision` rounds coordinates to that many decimals.
+#include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "g2d/graph.hpp"
+#include "g2d/text_out.hpp"
 
 namespace g2d::rt {
 
@@ -33,11 +43,27 @@ struct DrawItem {
     bool turnedAway = false;               // 3D: a face seen from its back (drawn before those seen from the front)
 };
 
-std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>& defs);
+struct SvgOptions {
+    bool compact = false;
+    std::optional<int> precision;   // decimals of coordinates (none: the shortest exact text)
+};
+
+// Makes the item of live element `id` of class `cls` in `out` (its storage reused).
+using ItemMaker = std::function<void(ElemClass cls, std::uint32_t id, DrawItem& out)>;
+
+// All items at hand (the trace player, tests).
+std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>& defs, const SvgOptions& options = {});
+
+// The drawing of every live element of `g`, streamed: each item is made
+// twice, once to fit the frame and once to be written, and none is kept (the
+// order is kept as compact keys, and not at all while it is the graph's own).
+// Writes the same bytes as the function above given all items.
+void writeSvg(const Graph& g, const ItemMaker& make, const std::vector<std::string>& defs, TextOut& out,
+              const SvgOptions& options = {});
 
 // A resolved style property of an item (nullptr / the fallback when absent;
 // numbers accept int or float values). The trace player reads kinds' looks too.
-const Value* styleValue(const DrawItem& it, const char* prop);
+const Value* styleValue(const DrawItem& it, std::string_view prop);
 double styleNumber(const DrawItem& it, const char* prop, double fallback);
 std::string styleText(const DrawItem& it, const char* prop, const std::string& fallback);
 

@@ -7,8 +7,12 @@
 // /dev/null) is written directly: it cannot be replaced, and must not be.
 // A full disk or a file-size limit (SIGXFSZ is ignored) fails the commit
 // with the system's reason, leaving the target as it was.
+// The text is written in pieces (TextOut::write: a fixed-size buffer, so an
+// output of any size costs the same memory), then commit() makes it appear.
 #include <stdexcept>
 #include <string>
+
+#include "g2d/text_out.hpp"
 
 namespace g2d::rt {
 
@@ -17,19 +21,20 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-class AtomicFile {
+class AtomicFile final : public TextOut {
 public:
     // Creates the temporary file now, so an unwritable target fails early.
     explicit AtomicFile(std::string path);
-    ~AtomicFile();  // removes the temporary file unless committed
-    AtomicFile(const AtomicFile&) = delete;
-    AtomicFile& operator=(const AtomicFile&) = delete;
+    ~AtomicFile() override;  // removes the temporary file unless committed
 
+    // Makes the text written so far the file's contents.
+    void commit();
+    // Writes `contents`, then commits.
     void commit(const std::string& contents);
     const std::string& path() const { return path_; }
 
 private:
-    void writeAll(const std::string& contents);
+    void drain(const char* data, std::size_t size) override;
 
     std::string path_, temp_, target_;   // target_: path_ with symbolic links resolved
     int fd_ = -1;
