@@ -17,6 +17,8 @@ Benchmarks:
   subdivide    faces: examples/subdivide.g2d, a square split into 4^depth quads, depth up to 9
   thesis       the thesis's examples at the original tool's step counts, with
                the speed-up over its measured seconds (../shared/reference/README.md)
+  coral        growth with collision avoidance (examples/coral.g2d, a near condition) to 10^5 steps,
+               and the time per step around 10^3 and 10^5 nodes
   g3           G^3's models beside its Table 5.1 (Laganeckiene 2012: Core2 Duo seconds),
                and G^3's Split edge / Split face over a model growing to a million elements
                (bench/grammars/g3_quads.g2d)
