@@ -527,7 +527,8 @@ private:
             ctx.graph = "graph_";
             for (const auto& p : kind.style) {
                 const std::string v = gen_.gen(p.value, ctx, out, "        ");
-                out += "        it.props.push_back(StyleOverride{" + cppString(p.name) + ", " + valueOf(p.value.type, v) + "});\n";
+                // The name is an identifier; the item keeps a view of the literal.
+                out += "        it.props.push_back(StyleOverride{std::string_view(\"" + p.name + "\"), " + valueOf(p.value.type, v) + "});\n";
             }
             out += "    }\n\n";
         }

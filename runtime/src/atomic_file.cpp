@@ -15,9 +15,14 @@ namespace g2d::rt {
 
 namespace {
 
+// A long file's writeback is started every this many bytes, so that the
+// disk works while the rest is made and the commit's fsync waits less.
+constexpr long long kWritebackStride = 32LL << 20;
+
 // Temporary files still open, for the signal handler: fixed storage, since a
 // handler may only call async-signal-safe functions (unlink, signal, raise).
 constexpr int kSlots = 16;
+
 char tempPaths[kSlots][4096];
 std::atomic<bool> slotUsed[kSlots];
 
@@ -112,6 +117,12 @@ void AtomicFile::drain(const char* data, std::size_t size) {
             throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
         }
         done += static_cast<std::size_t>(n);
+    }
+    written_ += static_cast<long long>(size);
+    if (!direct_ && written_ - startedWriteback_ >= kWritebackStride) {
+        // Only a hint, its errors ignored: the fsync of commit() is what counts.
+        ::sync_file_range(fd_, startedWriteback_, written_ - startedWriteback_, SYNC_FILE_RANGE_WRITE);
+        startedWriteback_ = written_;
     }
 }
 

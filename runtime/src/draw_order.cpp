@@ -26,10 +26,18 @@ bool drawnBefore(const DrawKey& a, const DrawKey& b) {
 }
 
 void forEachLiveElement(const Graph& g, const std::function<bool(ElemClass, std::uint32_t)>& fn) {
+    // Edge ids are reused as a derivation goes on, so an edge's ends lie
+    // anywhere in the node array: their records are asked for ahead of use.
+    constexpr EdgeId kAhead = 16;
     for (FaceId f = 0; f < g.faceCapacity(); ++f)
         if (g.faceAlive(f) && !fn(ElemClass::Face, f)) return;
-    for (EdgeId e = 0; e < g.edgeCapacity(); ++e)
+    for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
+        if (e + kAhead < g.edgeCapacity() && g.edgeAlive(e + kAhead)) {
+            g.prefetchNode(g.source(e + kAhead));
+            g.prefetchNode(g.target(e + kAhead));
+        }
         if (g.edgeAlive(e) && !fn(ElemClass::Edge, e)) return;
+    }
     for (NodeId n = 0; n < g.nodeCapacity(); ++n)
         if (g.nodeAlive(n) && !fn(ElemClass::Node, n)) return;
 }

@@ -17,7 +17,8 @@ namespace {
 }
 }  // namespace
 
-StyleStore::StyleStore(std::vector<std::string> props) : names_(std::move(props)) {
+StyleStore::StyleStore(std::vector<std::string> props)
+    : names_(std::make_move_iterator(props.begin()), std::make_move_iterator(props.end())) {
     if (names_.size() > kMaxStyleProps) tooMany();
 }
 
@@ -71,7 +72,7 @@ void StyleStore::drop(std::uint32_t& head) {
 
 std::size_t StyleStore::memoryBytes() const {
     return blocks_.size() * ((std::size_t{1} << kBlockBits) * sizeof(StyleEntry) + sizeof(blocks_[0])) +
-           names_.capacity() * sizeof(std::string);
+           names_.size() * sizeof(std::string);
 }
 
 }  // namespace g2d::rt

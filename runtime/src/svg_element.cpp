@@ -57,15 +57,15 @@ bool isSpecial(std::string_view p) {
 }
 
 // A property's attribute name is its name with `_` written `-`.
-bool namesAttribute(const std::string& prop, std::string_view attr) {
+bool namesAttribute(std::string_view prop, std::string_view attr) {
     if (prop.size() != attr.size()) return false;
     for (std::size_t i = 0; i < attr.size(); ++i)
         if ((prop[i] == '_' ? '-' : prop[i]) != attr[i]) return false;
     return true;
 }
 
-void writeAttrName(TextOut& out, const std::string& prop) {
-    if (prop.find('_') == std::string::npos) return out.write(prop);
+void writeAttrName(TextOut& out, std::string_view prop) {
+    if (prop.find('_') == std::string_view::npos) return out.write(prop);
     for (char c : prop) out.write(c == '_' ? '-' : c);
 }
 
@@ -154,9 +154,9 @@ void SvgFrame::addTurned(vec2 c, double w, double h, double degrees) {
     add(c, (w * cs + h * sn) / 2, (w * sn + h * cs) / 2);
 }
 
-void measureItem(const DrawItem& it, SvgFrame& frame) {
+bool measureItem(const DrawItem& it, SvgFrame& frame) {
     const Shape shape = shapeOf(it);
-    if (shape == Shape::None) return;
+    if (shape == Shape::None) return false;
     const bool isEdge = it.cls == ElemClass::Edge, isFace = it.cls == ElemClass::Face;
     frame.maxStroke = std::max(frame.maxStroke, styleNumber(it, "stroke_width", isEdge ? 0.05 : isFace ? 0 : 0.02));
     const vec2 c = centre(it);
@@ -185,6 +185,7 @@ void measureItem(const DrawItem& it, SvgFrame& frame) {
     case Shape::None:
     case Shape::Unknown: break;
     }
+    return shape != Shape::Unknown;
 }
 
 void writeSvgStart(const SvgFrame& frame, const std::vector<std::string>& defs, TextOut& out) {

@@ -76,9 +76,14 @@ void writeSvg(const Graph& g, const ItemMaker& make, const std::vector<std::stri
             return true;
         });
     };
+    // Elements that draw nothing (hidden nodes, as the thesis's grammars
+    // have) are not made again: a bit each.
+    std::vector<bool> written[3] = {std::vector<bool>(g.faceCapacity()), std::vector<bool>(g.edgeCapacity()),
+                                    std::vector<bool>(g.nodeCapacity())};
+    auto classIndex = [](ElemClass cls) { return cls == ElemClass::Face ? 0 : cls == ElemClass::Edge ? 1 : 2; };
     forEachLiveElement(g, [&](ElemClass cls, std::uint32_t id) {
         make(cls, id, it);
-        measureItem(it, frame);
+        written[classIndex(cls)][id] = measureItem(it, frame);
         order.add(drawKey(it), earlierKeys);
         return true;
     });
@@ -86,6 +91,7 @@ void writeSvg(const Graph& g, const ItemMaker& make, const std::vector<std::stri
     writeSvgStart(frame, defs, out);
     SvgBody body(out, options);
     order.visit(g, [&](ElemClass cls, std::uint32_t id) {
+        if (!written[classIndex(cls)][id]) return;
         make(cls, id, it);
         body.item(it);
     });

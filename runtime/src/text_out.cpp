@@ -33,9 +33,21 @@ void TextOut::number(double x) {
     if (x == 0) return write('0');
     if (std::isnan(x)) return write("nan");
     if (std::isinf(x)) return write(x > 0 ? "inf" : "-inf");
-    constexpr std::size_t kLongest = 32;   // "-1.2345678901234567e-308" and the like
+    constexpr std::size_t kLongest = sizeof RecentNumber::text;   // "-1.2345678901234567e-308" and the like
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    RecentNumber& slot = recent_[(bits * 0x9E3779B97F4A7C15ULL) >> (64 - kRecentBits)];
     char* at = reserve(kLongest);
-    used_ += static_cast<std::size_t>(std::to_chars(at, at + kLongest, x).ptr - at);
+    if (slot.bits == bits && slot.size != 0) {
+        std::memcpy(at, slot.text, kLongest);
+        used_ += slot.size;
+        return;
+    }
+    const auto size = static_cast<std::size_t>(std::to_chars(at, at + kLongest, x).ptr - at);
+    std::memcpy(slot.text, at, kLongest);
+    slot.bits = bits;
+    slot.size = static_cast<std::uint8_t>(size);
+    used_ += size;
 }
 
 void TextOut::integer(long long v) {

@@ -45,7 +45,7 @@ struct KindInfo {
 
 // A style property by name, as drawing resolves it for the writers.
 struct StyleOverride {
-    std::string prop;
+    std::string_view prop;   // a name that outlives the item (a literal, the program, the graph)
     Value value;
 };
 
@@ -320,7 +320,7 @@ public:
     // Style property numbers (a new name is numbered after the others).
     StyleProp styleProp(std::string_view name) { return styles_.prop(name); }
     const std::string& stylePropName(StyleProp p) const { return styles_.name(p); }
-    const std::vector<std::string>& styleProps() const { return styles_.names(); }
+    std::vector<std::string> styleProps() const { return styles_.names(); }
 
     // Live nodes of one kind (deterministic order), or of every kind (by id).
     std::span<const NodeId> nodesOfKind(int kind) const { return {kindNodes_[kind].data(), kindNodes_[kind].size()}; }

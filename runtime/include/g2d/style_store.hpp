@@ -12,6 +12,7 @@
 // pool grows by blocks, so entries never move (relocating a growing vector
 // of them cost more than the settings themselves).
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -75,7 +76,7 @@ public:
     // (A linear search: for setting up and for tests, not for a rewrite.)
     StyleProp prop(std::string_view name);
     const std::string& name(StyleProp p) const { return names_[p]; }
-    const std::vector<std::string>& names() const { return names_; }
+    std::vector<std::string> names() const { return {names_.begin(), names_.end()}; }
 
     // `head` is an element's chain (kNone for none), kept by the caller.
     void set(std::uint32_t& head, StyleProp p, Value&& v);
@@ -96,7 +97,7 @@ private:
     static constexpr std::uint32_t kBlockMask = (1u << kBlockBits) - 1;
     StyleEntry& at(std::uint32_t i) { return blocks_[i >> kBlockBits][i & kBlockMask]; }
 
-    std::vector<std::string> names_;
+    std::deque<std::string> names_;   // a deque: drawn items keep views of the names as more are added
     std::vector<std::unique_ptr<StyleEntry[]>> blocks_;
     std::uint32_t used_ = 0;   // entries ever taken; below it, free or in a chain
     std::uint32_t free_ = kNone;

@@ -5,6 +5,7 @@
 // small pages that embed a drawing). Numbers are formatted straight into the
 // buffer, with the same text as formatNumber.
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -47,6 +48,16 @@ private:
 
     std::unique_ptr<char[]> buf_;
     std::size_t used_ = 0;
+    // The texts of recent numbers by their bits: drawings repeat them (an
+    // edge starts where the last one ended, a width recurs), and the shortest
+    // round-trip text costs more than a lookup.
+    struct RecentNumber {
+        std::uint64_t bits = 0;
+        std::uint8_t size = 0;   // 0: empty
+        char text[31];
+    };
+    static constexpr int kRecentBits = 4;
+    RecentNumber recent_[1 << kRecentBits];
 };
 
 // Collects the text in memory (the trace page embeds the SVG).

@@ -41,6 +41,7 @@ private:
     bool direct_ = false;                // writing straight into a non-regular file
     int slot_ = -1;   // in the signal handler's list
     bool committed_ = false;
+    long long written_ = 0, startedWriteback_ = 0;   // bytes: written, and handed to writeback
 };
 
 }  // namespace g2d::rt

@@ -23,7 +23,9 @@ struct SvgFrame {
     bool empty() const { return x0 > x1; }
 };
 
-void measureItem(const DrawItem& it, SvgFrame& frame);
+// Adds the item to the frame; false if it is not written at all (tag "none",
+// or a tag for another class of element).
+bool measureItem(const DrawItem& it, SvgFrame& frame);
 
 // The document's start (the XML declaration, <svg> with the fitted viewBox,
 // the defs) and end.
