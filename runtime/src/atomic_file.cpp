@@ -1,5 +1,6 @@
 #include "g2d/atomic_file.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -21,7 +22,7 @@ constexpr long long kWritebackStride = 32LL << 20;
 
 // Temporary files still open, for the signal handler: fixed storage, since a
 // handler may only call async-signal-safe functions (unlink, signal, raise).
-constexpr int kSlots = 16;
+constexpr int kSlots = 64;
 
 char tempPaths[kSlots][4096];
 std::atomic<bool> slotUsed[kSlots];
@@ -72,7 +73,42 @@ std::string followLinks(std::string path) {
     return path;  // a loop: creating the temporary file next to it fails with ELOOP or succeeds harmlessly
 }
 
+std::vector<StagedFile>* staging = nullptr;
+
 }  // namespace
+
+void setCommitStaging(std::vector<StagedFile>* list) { staging = list; }
+
+void releaseStaged(std::vector<StagedFile>& files) {
+    for (auto& f : files) {
+        unregisterTemp(f.slot);
+        f.slot = -1;
+    }
+}
+
+std::vector<std::string> placeStaged(const std::vector<StagedFile>& files) {
+    std::vector<std::string> errors(files.size());
+    std::vector<dev_t> synced;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const int fd = ::open(files[i].temp.c_str(), O_RDONLY | O_CLOEXEC);
+        struct stat st {};
+        if (fd < 0 || ::fstat(fd, &st) != 0) {
+            errors[i] = "cannot write `" + files[i].path + "`: " + std::strerror(errno);
+        } else if (std::find(synced.begin(), synced.end(), st.st_dev) == synced.end()) {
+            if (::syncfs(fd) != 0) errors[i] = "cannot write `" + files[i].path + "`: " + std::strerror(errno);
+            else synced.push_back(st.st_dev);
+        }
+        if (fd >= 0) ::close(fd);
+    }
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        // A file system that could not be synced keeps its files out of place.
+        bool durable = errors[i].empty();
+        if (durable && ::rename(files[i].temp.c_str(), files[i].target.c_str()) != 0)
+            errors[i] = "cannot write `" + files[i].path + "`: " + std::strerror(errno);
+        if (!errors[i].empty()) ::unlink(files[i].temp.c_str());
+    }
+    return errors;
+}
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), target_(path_) {
     // A full file-size limit must fail a write, not kill the process.
@@ -144,6 +180,15 @@ void AtomicFile::commit() {
     const mode_t mask = ::umask(0);
     ::umask(mask);
     ::fchmod(fd_, 0666 & ~mask);
+    if (staging) {
+        const int fd = fd_;
+        fd_ = -1;
+        if (::close(fd) != 0) throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));
+        staging->push_back({temp_, target_, path_, slot_});
+        committed_ = true;   // the list's owner removes or places the file
+        slot_ = -1;
+        return;
+    }
     if (::fsync(fd_) != 0 || ::close(fd_) != 0) {
         fd_ = -1;
         throw OutputError("cannot write `" + path_ + "`: " + std::strerror(errno));

@@ -1,6 +1,7 @@
 #include "g2d/seed_batch.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -27,6 +28,8 @@
 namespace g2d::rt {
 
 namespace {
+
+constexpr std::size_t kGroupFiles = 128;   // outputs made durable together
 
 int usageError(const RunRequest& request, const std::string& message) {
     std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), message.c_str());
@@ -220,11 +223,47 @@ private:
             ++failed_;
             if (failedSeeds_.size() < 10) failedSeeds_.push_back(row->seed);
         }
+        for (auto& f : row->staged) pending_.push_back({index, std::move(f)});
+        row->staged.clear();
         rows_[index] = std::move(row);
         ++done_;
-        printRowsInOrder();
         if (w.pid > 0) giveNextSeed(w);
+        if (pending_.size() >= kGroupFiles || done_ == seeds_.size() || groupIsOld()) placePending();
+        printRowsInOrder();
         return 0;
+    }
+
+    // A group of seeds' outputs made durable and put in place at once. A
+    // seed's line is printed once its outputs are in place.
+    void placePending() {
+        std::vector<StagedFile> files;
+        for (const auto& p : pending_) files.push_back(p.file);
+        const std::vector<std::string> errors = placeStaged(files);
+        for (std::size_t i = 0; i < pending_.size(); ++i) {
+            if (errors[i].empty()) continue;
+            SeedRow& row = *rows_[pending_[i].index];
+            progress_.clear();
+            std::fprintf(stderr, "seed %llu: %s: error: %s\n", static_cast<unsigned long long>(row.seed),
+                         request_.program.c_str(), errors[i].c_str());
+            if (row.status == 0) {
+                row.status = 1;
+                row.stopped = "output_error";
+                row.messages = request_.program + ": error: " + errors[i] + "\n" + row.messages;
+                ++failed_;
+                if (failedSeeds_.size() < 10) failedSeeds_.push_back(row.seed);
+            }
+        }
+        pending_.clear();
+        groupStart_ = std::chrono::steady_clock::now();
+    }
+
+    // Outputs wait at most this long for their group.
+    bool groupIsOld() const { return std::chrono::steady_clock::now() - groupStart_ > std::chrono::milliseconds(500); }
+
+    // Staged outputs of a batch that stops are removed (as unfinished ones are).
+    void discardPending() {
+        for (const auto& p : pending_) ::unlink(p.file.temp.c_str());
+        pending_.clear();
     }
 
     std::string reap(Worker& w) {
@@ -244,7 +283,12 @@ private:
     }
 
     void printRowsInOrder() {
-        for (; printed_ < rows_.size() && rows_[printed_]; ++printed_) {
+        auto placed = [&](std::size_t i) {
+            for (const auto& p : pending_)
+                if (p.index == i) return false;
+            return true;
+        };
+        for (; printed_ < rows_.size() && rows_[printed_] && placed(printed_); ++printed_) {
             const std::string line = summaryLine(*rows_[printed_]);
             if (request_.summaryOut) {
                 summary_ += line;
@@ -260,11 +304,16 @@ private:
     // their unfinished outputs) and waits for all. Returns `code`.
     int stopAll(int code) {
         stopping_ = true;
+        if (code != 0) discardPending();
         for (auto& w : workers_) {
             if (w.pid <= 0) continue;
             if (code != 0) ::kill(w.pid, SIGTERM);
             if (w.seedsFd >= 0) ::close(w.seedsFd);
             w.seedsFd = -1;
+            // Rows not yet read may name staged outputs: they go too.
+            if (code != 0)
+                while (const auto row = readRow(w.rowsFd))
+                    for (const auto& f : row->staged) ::unlink(f.temp.c_str());
             reap(w);
         }
         progress_.clear();
@@ -304,6 +353,12 @@ private:
     int interruptedBy_ = 0;                      // a worker died of SIGINT, SIGTERM or SIGHUP
     std::vector<std::uint64_t> failedSeeds_;     // the first ten, for the closing message
     std::string summary_;                        // --summary's lines, written at the end
+    struct Pending {
+        std::size_t index;   // the seed's
+        StagedFile file;
+    };
+    std::vector<Pending> pending_;               // staged outputs of finished seeds, oldest first
+    std::chrono::steady_clock::time_point groupStart_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace

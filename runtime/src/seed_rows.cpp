@@ -17,8 +17,10 @@ struct RowHeader {
     std::int64_t steps;
     std::uint64_t elements;
     double seconds;
-    std::uint32_t stoppedSize, messagesSize;
+    std::uint32_t stoppedSize, messagesSize, stagedCount;
 };
+
+constexpr std::uint32_t kMaxStaged = 16;   // a run writes at most six outputs
 
 constexpr std::size_t kMaxText = 1 << 20;   // a sane bound for reading: rows come from our own workers
 
@@ -37,6 +39,19 @@ std::string jsonString(const std::string& s) {
         }
     }
     return out + "\"";
+}
+
+void appendText(std::string& buffer, const std::string& text) {
+    const auto size = static_cast<std::uint32_t>(text.size());
+    buffer.append(reinterpret_cast<const char*>(&size), sizeof size);
+    buffer += text;
+}
+
+bool readText(int fd, std::string& text) {
+    std::uint32_t size = 0;
+    if (!readFully(fd, &size, sizeof size) || size > kMaxText) return false;
+    text.assign(size, '\0');
+    return readFully(fd, text.data(), size);
 }
 
 }  // namespace
@@ -68,20 +83,27 @@ bool readFully(int fd, void* data, std::size_t size) {
 bool writeRow(int fd, const SeedRow& row) {
     const std::string stopped = row.stopped.substr(0, kMaxText), messages = row.messages.substr(0, kMaxText);
     const RowHeader h{row.seed, row.status, row.steps, row.elements, row.seconds,
-                      static_cast<std::uint32_t>(stopped.size()), static_cast<std::uint32_t>(messages.size())};
+                      static_cast<std::uint32_t>(stopped.size()), static_cast<std::uint32_t>(messages.size()),
+                      static_cast<std::uint32_t>(row.staged.size())};
     std::string buffer(reinterpret_cast<const char*>(&h), sizeof h);
     buffer += stopped;
     buffer += messages;
+    for (const auto& f : row.staged)
+        for (const std::string* text : {&f.temp, &f.target, &f.path}) appendText(buffer, *text);
     return writeFully(fd, buffer.data(), buffer.size());
 }
 
 std::optional<SeedRow> readRow(int fd) {
     RowHeader h{};
-    if (!readFully(fd, &h, sizeof h) || h.stoppedSize > kMaxText || h.messagesSize > kMaxText) return std::nullopt;
+    if (!readFully(fd, &h, sizeof h) || h.stoppedSize > kMaxText || h.messagesSize > kMaxText || h.stagedCount > kMaxStaged)
+        return std::nullopt;
     SeedRow row{h.seed, h.status, h.steps, h.elements, h.seconds, std::string(h.stoppedSize, '\0'),
-                std::string(h.messagesSize, '\0')};
+                std::string(h.messagesSize, '\0'), std::vector<StagedFile>(h.stagedCount)};
     if (!readFully(fd, row.stopped.data(), row.stopped.size()) || !readFully(fd, row.messages.data(), row.messages.size()))
         return std::nullopt;
+    for (auto& f : row.staged)
+        for (std::string* text : {&f.temp, &f.target, &f.path})
+            if (!readText(fd, *text)) return std::nullopt;
     return row;
 }
 

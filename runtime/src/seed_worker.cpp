@@ -88,9 +88,19 @@ void runSeedWorker(const RunRequest& batch, GrammarRun& grammar, int seedsIn, in
         ::_exit(1);
     }
     ::close(capture);
+    // Outputs are staged: the parent makes a group of them durable at once.
+    std::vector<StagedFile> staged;
+    setCommitStaging(&staged);
     std::uint64_t seed = 0;
-    while (readFully(seedsIn, &seed, sizeof seed))
-        if (!writeRow(rowsOut, runOneSeed(batch, grammar, seed))) break;
+    while (readFully(seedsIn, &seed, sizeof seed)) {
+        staged.clear();
+        SeedRow row = runOneSeed(batch, grammar, seed);
+        row.staged = staged;
+        if (!writeRow(rowsOut, row)) break;   // the parent is gone: the handler list still has them
+        releaseStaged(staged);
+    }
+    for (const auto& f : staged)
+        if (f.slot >= 0) ::unlink(f.temp.c_str());
     // _exit: the parent's objects (and buffered output) copied into this
     // process are not ours to destroy or flush.
     ::_exit(0);

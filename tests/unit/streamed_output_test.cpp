@@ -144,6 +144,43 @@ TEST_CASE("an AtomicFile written in pieces appears only on commit", "[output][at
     fs::remove_all(dir);
 }
 
+TEST_CASE("staged commits appear when their group is placed; a failed placement is reported and cleaned up",
+          "[output][atomic]") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("g2d-staged-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string a = (dir / "a.svg").string(), b = (dir / "b.svg").string();
+    std::vector<rt::StagedFile> staged;
+    rt::setCommitStaging(&staged);
+    for (const auto& path : {a, b}) {
+        rt::AtomicFile file(path);
+        file.write("text of " + path);
+        file.commit();
+    }
+    rt::setCommitStaging(nullptr);
+    REQUIRE(staged.size() == 2);
+    CHECK_FALSE(fs::exists(a));   // written, not in place
+    CHECK(fs::exists(staged[0].temp));
+    CHECK(staged[1].path == b);
+    rt::releaseStaged(staged);
+    // b's name is taken by a folder meanwhile: its placement fails, a's does not.
+    fs::create_directories(dir / "b.svg" / "inside");
+    const std::vector<std::string> errors = rt::placeStaged(staged);
+    CHECK(errors[0].empty());
+    CHECK(readFile(a) == "text of " + a);
+    CHECK_THAT(errors[1], Catch::StartsWith("cannot write `" + b + "`: "));
+    CHECK_FALSE(fs::exists(staged[1].temp));   // no temporary left
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 2);   // a.svg, b.svg/
+    // Without a staging list, commits are in place at once again.
+    {
+        rt::AtomicFile file(a);
+        file.write("again");
+        file.commit();
+    }
+    CHECK(readFile(a) == "again");
+    fs::remove_all(dir);
+}
+
 TEST_CASE("JSON multigraph keys count parallel edges per source and target", "[output][json]") {
     auto c = test::compile("node V; edge E directed;\n"
                            "axiom { a: V at (0, 0); b: V at (1, 0); a -[E]-> b; a -[E]-> b; b -[E]-> a; a -[E]-> b; }\n");

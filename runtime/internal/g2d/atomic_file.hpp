@@ -11,6 +11,7 @@
 // output of any size costs the same memory), then commit() makes it appear.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "g2d/text_out.hpp"
 
@@ -20,6 +21,25 @@ class OutputError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// A file whose text is complete but not yet durable nor in place: a batch of
+// many small files makes a group of them durable with one syncfs (an fsync
+// each would serialise the workers on the file system's journal).
+struct StagedFile {
+    std::string temp, target, path;   // path: as the user gave it, for messages
+    int slot = -1;                    // in the signal handler's list, until released
+};
+
+// While a list is set, commit() closes its temporary file without syncing
+// and appends it to the list instead of renaming it (the file stays on the
+// signal handler's list: see releaseStaged).
+void setCommitStaging(std::vector<StagedFile>* staging);
+// Takes staged files off the signal handler's list: their owner (the batch's
+// parent) now removes them or puts them in place.
+void releaseStaged(std::vector<StagedFile>& files);
+// Makes staged files durable (one syncfs per file system) and renames each
+// over its target. Returns one text per file: "" or what went wrong.
+std::vector<std::string> placeStaged(const std::vector<StagedFile>& files);
 
 class AtomicFile final : public TextOut {
 public:

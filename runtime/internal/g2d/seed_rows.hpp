@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "g2d/atomic_file.hpp"
 
 namespace g2d::rt {
 
@@ -15,6 +18,7 @@ struct SeedRow {
     double seconds = 0;         // wall time of the seed: derivation and outputs
     std::string stopped;        // as in the JSON output's "stopped", or "error", "crashed"
     std::string messages;       // what the run printed on stderr (errors, notes)
+    std::vector<StagedFile> staged;   // its outputs, written but not yet durable nor in place
 };
 
 // Whole rows over a pipe. writeRow returns false when the parent is gone;
