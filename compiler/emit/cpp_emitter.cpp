@@ -59,6 +59,7 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     out += in + "info.priority = " + cppLiteral(ir::Value{i.priority}, ir::kIntType) + ";\n";
     out += in + "info.pick = " + (i.pick == rt::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
     out += in + "info.parallel = " + (i.parallel ? "true" : "false") + ";\n";
+    if (i.matchWeighted) out += in + "info.matchWeighted = true;\n";
     out += in + "info.generation = " + (i.generation ? "true" : "false") + ";\n";
     out += in + "info.weights = {";
     for (std::size_t d = 0; d < i.weights.size(); ++d) out += (d ? ", " : "") + cppLiteral(ir::Value{i.weights[d]}, ir::kFloatType);
@@ -326,6 +327,43 @@ private:
         return out;
     }
 
+    // Weights that read the match, per application (RuleSet::weigh).
+    std::string emitWeigh() {
+        std::string out, cases;
+        for (std::size_t r = 0; r < prog_.rules.size(); ++r) {
+            const ir::Rule& rule = prog_.rules[r];
+            const lower::RuleFacts facts = lower::ruleFacts(prog_, rule);
+            if (!facts.info.matchWeighted) continue;
+            const std::string rs = str(static_cast<long long>(r));
+            ExprContext ctx;
+            ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
+            ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
+            ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
+            ctx.nodeKind = [&rule](int i) { return rule.nodes[static_cast<std::size_t>(i)].kind; };
+            ctx.edgeKind = [&rule](int i) { return rule.edges[static_cast<std::size_t>(i)].kind; };
+            ctx.faceKind = [&rule](int i) { return rule.faces[static_cast<std::size_t>(i)].kind; };
+            out += "    void weigh_" + rs + "(Match m, const Graph& g, std::vector<double>& w) {\n        (void)m;\n        (void)g;\n";
+            int first = -1;
+            for (std::size_t d = 0; d < facts.matchWeightExprs.size(); ++d) {
+                const ir::Expr* expr = facts.matchWeightExprs[d];
+                if (!expr) continue;
+                const int place = places_.add(expr->span);
+                first = first < 0 ? place : first;
+                out += "        try {\n";
+                const std::string v = gen_.gen(*expr, ctx, out, "            ");
+                out += "            w[" + str(static_cast<long long>(d)) + "] = checkedMatchWeight(" + v + ");\n";
+                out += "        } catch (const OpError& e) {\n            throw PlacedError(" + str(place) + ", e.what());\n        }\n";
+            }
+            out += "        try {\n            checkSomeWeight(w);\n        } catch (const OpError& e) {\n            throw PlacedError(" +
+                   str(first) + ", e.what());\n        }\n    }\n\n";
+            cases += "        case " + rs + ": weigh_" + rs + "(m, g, w); break;\n";
+        }
+        if (cases.empty()) return out;
+        out += "    void weigh(std::size_t rule, Match m, const Graph& g, std::vector<double>& w) override {\n"
+               "        current_ = infos_[rule].name.c_str();\n        switch (rule) {\n" + cases + "        default: break;\n        }\n    }\n\n";
+        return out;
+    }
+
     std::string emitRuleSet() {
         const std::size_t n = prog_.rules.size();
         std::string names = "        static const char* const names[] = {";
@@ -373,6 +411,7 @@ private:
         out += "    void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& w) const override {\n";
         out += perDaughter("        ", "writes_@(m, w)");
         out += "        (void)daughter; (void)m; (void)w;\n    }\n\n";
+        out += emitWeigh();
         out += "    void prepare(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng, long long) override {\n" + names;
         out += "        rng_ = &rng;\n        current_ = names[rule];\n        try {\n";
         out += perDaughter("            ", "prepare_@(m, g)");

@@ -39,6 +39,7 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
             }
         }
         infos_.push_back(std::move(info));
+        matchWeights_.push_back(facts.matchWeightExprs);
         auto& rewrites = rewrites_.emplace_back();
         for (std::size_t d = 0; d < r.daughters.size(); ++d) rewrites.push_back(lower::lowerRewrite(*st.prog, r, d));
         const lower::MatchProgram& m = matches_.emplace_back(lower::lowerMatch(*st.prog, r));
@@ -298,6 +299,31 @@ EvalFrame InterpretedRules::matchFrame(const ir::Rule& r, rt::Match m, const rt:
     f.faces = m.faces;
     f.locals = &locals_;
     return f;
+}
+
+void InterpretedRules::weigh(std::size_t rule, rt::Match m, const rt::Graph& g, std::vector<double>& weights) {
+    current_ = &st_.prog->rules[rule];
+    EvalFrame f = st_.frame(nullptr);   // no random draws: weights may have none
+    f.graph = &g;
+    f.nodes = m.nodes;
+    f.edges = m.edges;
+    f.faces = m.faces;
+    const ir::Expr* first = nullptr;
+    for (std::size_t d = 0; d < weights.size(); ++d) {
+        const ir::Expr* expr = matchWeights_[rule][d];
+        if (!expr) continue;
+        first = first ? first : expr;
+        try {
+            weights[d] = rt::checkedMatchWeight(std::get<double>(evaluate(*expr, f)));
+        } catch (const rt::OpError& e) {
+            throw EvalError(expr->span, e.what());
+        }
+    }
+    try {
+        rt::checkSomeWeight(weights);
+    } catch (const rt::OpError& e) {
+        throw EvalError(first->span, e.what());
+    }
 }
 
 void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,

@@ -26,6 +26,7 @@ public:
     void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out,
                       rt::EdgeId newEdgesFrom = rt::kNoId) override;
     void writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& out) const override;
+    void weigh(std::size_t rule, rt::Match m, const rt::Graph& g, std::vector<double>& weights) override;
     void prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g, rt::Rng& rng,
                  long long step) override;
     void commit(rt::Graph& g, long long step) override;
@@ -39,6 +40,7 @@ private:
     // The frame of rule r's expressions on match m (its locals cleared).
     EvalFrame matchFrame(const ir::Rule& r, rt::Match m, const rt::Graph& g, rt::Rng& rng);
     std::vector<rt::SequenceEntry> sequence_;   // lower::sequenceOf
+    std::vector<std::vector<const ir::Expr*>> matchWeights_;   // per rule and daughter (lower::RuleFacts)
     std::vector<rt::CompoundInfo> compounds_;
     // One prepared application; kept in a pool so that its vectors are reused.
     struct Prepared {

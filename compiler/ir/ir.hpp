@@ -379,6 +379,7 @@ struct FaceSplit {
 struct Daughter {
     std::optional<Expr> weightExpr;    // absent: weight 1
     std::optional<double> weight;      // known at compile time
+    bool weightReadsMatch = false;     // weightExpr reads the match: evaluated per application
     std::vector<Let> lets;
     std::vector<DaughterNode> nodes;
     std::vector<DaughterEdge> edges;

@@ -22,7 +22,10 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.generation = prio != prog.priorities.end() && prio->second.generation;
     for (const auto& d : r.daughters) {
         info.weights.push_back(d.weight ? *d.weight : d.weightExpr ? 0.0 : 1.0);
-        out.weightExprs.push_back(!d.weight && d.weightExpr ? &*d.weightExpr : nullptr);
+        const ir::Expr* expr = !d.weight && d.weightExpr ? &*d.weightExpr : nullptr;
+        out.weightExprs.push_back(d.weightReadsMatch ? nullptr : expr);
+        out.matchWeightExprs.push_back(d.weightReadsMatch ? expr : nullptr);
+        info.matchWeighted = info.matchWeighted || d.weightReadsMatch;
     }
     info.radius = repairRadius(r);
     for (std::size_t k = 0; k < r.nacs.size(); ++k)

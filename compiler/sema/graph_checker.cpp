@@ -645,14 +645,18 @@ private:
     void weight(const ast::ProduceBlock& p, ir::Daughter& dg) {
         if (!p.weight) { dg.weight = 1.0; return; }
         ExprEnv env;
-        env.context = "a weight (weights are constants: literals, constants and parameters)";
+        env.context = "a weight (weights read literals, constants, parameters and the matched elements)";
         env.allowRandom = false;
         env.allowLocals = false;
-        env.allowElements = false;
         env.locals = &locals_;
         env.elems = &bindings_;
         auto w = ec_.checkAs(*p.weight, ir::kFloatType, env, "a weight");
         if (!w) return;
+        if (readsElements(*w)) {   // known per application only (ops.hpp: checkedMatchWeight)
+            dg.weightReadsMatch = true;
+            dg.weightExpr = std::move(*w);
+            return;
+        }
         std::string error;
         auto folded = fold(*w, g_.prog, &error);
         if (!error.empty()) {

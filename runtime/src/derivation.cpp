@@ -34,7 +34,18 @@ std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng) {
         cumulative += weights[i];
         if (u < cumulative) return i;
     }
-    return weights.size() - 1;
+    // u rounded up to the total: the last daughter that can be chosen.
+    std::size_t last = weights.size() - 1;
+    while (last > 0 && !(weights[last] > 0)) --last;
+    return last;
+}
+
+std::size_t chooseDaughter(RuleSet& rules, std::size_t rule, const RuleInfo& info, Match m, const Graph& g, Rng& rng,
+                           std::vector<double>& scratch) {
+    if (!info.matchWeighted) return pickDaughter(info.weights, rng);
+    scratch = info.weights;
+    rules.weigh(rule, m, g, scratch);
+    return pickDaughter(scratch, rng);
 }
 
 namespace {
@@ -106,6 +117,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     }
 
     std::vector<std::size_t> order;
+    std::vector<double> weights;   // a match-weighted rule's, per application
     std::vector<const MatchSet*> generationSets;
     ParallelStep parallel;
     const AngleLayoutSpec* angles = rules.angleLayout();
@@ -287,7 +299,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                     } else {
                         const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
                         if (!lookahead.guessed(m)) sets.prefetch(g, m, set.nodes(), set.edges());
-                        const std::size_t d = pickDaughter(info.weights, rng);
+                        const std::size_t d = chooseDaughter(rules, r, info, m, g, rng, weights);
                         daughter = d;
                         lookahead.ahead(r, info, set, m, rng, sets, rules, g);
                         if (!angles) {

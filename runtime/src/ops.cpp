@@ -36,6 +36,19 @@ double checkedWeight(double w) {
     return w;
 }
 
+double checkedMatchWeight(double w) {
+    if (!(w >= 0) || !std::isfinite(w))
+        throw OpError("a weight must be 0 or more, but this is " + formatNumber(w) + " for this match");
+    return w;
+}
+
+void checkSomeWeight(const std::vector<double>& weights) {
+    for (double w : weights)
+        if (w > 0) return;
+    throw OpError("every daughter's weight is 0 for this match: a match that must not be rewritten belongs in "
+                  "the match's conditions (`where`)");
+}
+
 double checkedMergeTolerance(double t) {
     if (!(t >= 0) || !std::isfinite(t)) throw OpError("a merge tolerance must be finite and not negative, but this is " + formatNumber(t));
     return t;

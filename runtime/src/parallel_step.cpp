@@ -15,7 +15,7 @@ void ParallelStep::beginStep(const Graph& g) {
     grow(faceMarks_, g.faceCapacity());
 }
 
-std::size_t ParallelStep::claim(std::size_t rule, const MatchSet& set, RuleSet& rules, Rng& rng,
+std::size_t ParallelStep::claim(std::size_t rule, const MatchSet& set, RuleSet& rules, const Graph& g, Rng& rng,
                                 std::vector<std::uint32_t>& daughters) {
     const RuleInfo& info = rules.info(rule);
     const int nn = set.nodes(), ne = set.edges(), nf = set.faces();
@@ -41,7 +41,7 @@ std::size_t ParallelStep::claim(std::size_t rule, const MatchSet& set, RuleSet& 
         for (int k = 0; k < ne; ++k) clash = clash || edgeMarks_[m.edges[k]] == written;
         for (int k = 0; k < nf; ++k) clash = clash || faceMarks_[m.faces[k]] == written;
         if (clash) continue;
-        const std::size_t daughter = pickDaughter(info.weights, rng);
+        const std::size_t daughter = chooseDaughter(rules, rule, info, m, g, rng, weights_);
         writes_.clear();
         rules.writeSet(rule, daughter, m, writes_);
         for (NodeId n : writes_.nodes) clash = clash || (nodeMarks_[n] >> 1) == stamp_;
@@ -79,7 +79,7 @@ void ParallelStep::prepareTaken(std::size_t rule, const MatchSet& set, const std
 std::size_t ParallelStep::run(std::size_t rule, const MatchSet& set, RuleSet& rules, Graph& g, Rng& rng, long long step,
                                StepTracer* tracer, const ElementScope* const* scopes) {
     beginStep(g);
-    const std::size_t taken = claim(rule, set, rules, rng, daughter_);
+    const std::size_t taken = claim(rule, set, rules, g, rng, daughter_);
     prepareTaken(rule, set, daughter_, rules, g, rng, step, tracer, scopes);
     rules.commit(g, step);
     return taken;
@@ -93,7 +93,7 @@ std::size_t ParallelStep::runGeneration(std::span<const std::size_t> rulesInOrde
     std::size_t taken = 0;
     // Earlier rules claim first: a match that overlaps one an earlier rule
     // took is not rewritten (docs/language.md §12.5).
-    for (std::size_t k = 0; k < rulesInOrder.size(); ++k) taken += claim(rulesInOrder[k], *sets[k], rules, rng, generation_[k]);
+    for (std::size_t k = 0; k < rulesInOrder.size(); ++k) taken += claim(rulesInOrder[k], *sets[k], rules, g, rng, generation_[k]);
     for (std::size_t k = 0; k < rulesInOrder.size(); ++k)
         prepareTaken(rulesInOrder[k], *sets[k], generation_[k], rules, g, rng, step, tracer, nullptr);
     rules.commit(g, step);

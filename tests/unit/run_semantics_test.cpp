@@ -223,6 +223,60 @@ TEST_CASE("daughters are chosen by weight", "[run][weights]") {
     CHECK(std::abs(bs - runs * 3 / 4) < 5 * 28);
 }
 
+TEST_CASE("weights read from the match are evaluated per application, and 0 is never chosen", "[run][weights]") {
+    // p.w is 3 for the first node and 0 for the second: its A-daughter is
+    // three times as likely there, and never chosen at the second.
+    const std::string src = "node P { w: float = 0; } node A; node B; node C;\n"
+                            "axiom { p: P at (0, 0) { w = 3 }; q: P at (1, 0); }\n"
+                            "rule R { match { p: P; } produce weight p.w { a: A at p.pos; } produce weight 1 { b: B at p.pos; } }\n";
+    auto c = compile(src);
+    REQUIRE(c.program);
+    const int kindA = kindIndex(*c.program, "A");
+    int asAtFirst = 0;
+    const int runs = 4000;
+    for (int seed = 0; seed < runs; ++seed) {
+        auto run = interp::runProgram(*c.program, {}, static_cast<std::uint64_t>(seed), test::verified());
+        const rt::Graph& g = run.graph();
+        for (rt::NodeId n = 0; n < g.nodeCapacity(); ++n) {
+            if (!g.nodeAlive(n) || g.nodeKind(n) != kindA) continue;
+            CHECK(g.pos(n).x == 0);   // never at q, whose weight is 0
+            ++asAtFirst;
+        }
+    }
+    // Expected 3/4 at p; the standard deviation of the count is about 27.4.
+    CHECK(std::abs(asAtFirst - runs * 3 / 4) < 5 * 28);
+}
+
+TEST_CASE("a match whose weights are all 0, or one negative, stops the run at the weight", "[run][weights]") {
+    const std::string kinds = "node P { w: float = 0; }\naxiom { p: P at (0, 0) { w = -1 }; }\n";
+    SECTION("all 0") {
+        auto c = compile("node P { w: float = 0; }\naxiom { p: P at (0, 0); }\n"
+                         "rule R { match { p: P; } produce weight p.w { } produce weight p.w * 2 { p; } }\n");
+        REQUIRE(c.program);
+        try {
+            interp::runProgram(*c.program, {}, 1, test::verified());
+            FAIL("expected an error");
+        } catch (const interp::EvalError& e) {
+            CHECK(std::string(e.what()) == "every daughter's weight is 0 for this match: a match that must not be "
+                                           "rewritten belongs in the match's conditions (`where`)");
+            CHECK(e.span.line == 3);
+            CHECK(e.span.col == 41);
+        }
+    }
+    SECTION("negative") {
+        auto c = compile(kinds + "rule R { match { p: P; } produce weight 1 { } produce weight p.w { p; } }\n");
+        REQUIRE(c.program);
+        try {
+            interp::runProgram(*c.program, {}, 1, test::verified());
+            FAIL("expected an error");
+        } catch (const interp::EvalError& e) {
+            CHECK(std::string(e.what()) == "a weight must be 0 or more, but this is -1 for this match");
+            CHECK(e.span.line == 3);
+            CHECK(e.span.col == 62);
+        }
+    }
+}
+
 TEST_CASE("priorities and both kinds of limits, as in the thesis's §4.1 example", "[run][limits]") {
     // Priority 0 could run forever; it is limited to 100. Priority 1 consumes tokens.
     auto grammar = [](int tokens) {

@@ -153,21 +153,27 @@ TEST_CASE("keeping an edge keeps its endpoints", "[sema][mapping]") {
     CHECK(d.deletedEdges == std::vector<int>{1});
 }
 
-TEST_CASE("weights must be positive constants", "[sema][weights]") {
+TEST_CASE("weights: positive constants, or read from the match", "[sema][weights]") {
     checkCases({
         {"zero weight", "rule R { match { x: P; } produce weight 0 { x; } }",
          "5:41: a weight must be positive, but this is 0"},
         {"negative weight", "rule R { match { x: P; } produce weight -2.5 { x; } }",
          "5:41: a weight must be positive, but this is -2.5"},
-        {"weight reads the match", "rule R { match { x: P; } produce weight x.w { x; } }",
-         "5:41: `x` cannot be read in a weight (weights are constants: literals, constants and parameters)"},
         {"random weight", "rule R { match { x: P; } produce weight uniform(1, 2) { x; } }",
-         "5:41: random function `uniform` cannot be used in a weight (weights are constants: literals, constants and "
-         "parameters)"},
+         "5:41: random function `uniform` cannot be used in a weight (weights read literals, constants, parameters "
+         "and the matched elements)"},
+        {"a daughter's new node", "rule R { match { x: P; } produce weight y.w { x; y: P; } }",
+         "5:41: unknown name `y`"},
     });
     // A parameter may set a weight (checked when the run starts).
     auto r = compile(prelude() + "param p: float = 2;\nrule R { match { x: P; } produce weight p { x; } }");
     CHECK(firstError(r).empty());
+    // A weight may read the match: evaluated per application.
+    auto m = compile(prelude() + "rule R { match { x: P; } produce weight x.w * 2 { x; } produce { } }");
+    REQUIRE(m.program);
+    CHECK(m.program->rules[0].daughters[0].weightReadsMatch);
+    CHECK_FALSE(m.program->rules[0].daughters[0].weight);
+    CHECK_FALSE(m.program->rules[0].daughters[1].weightReadsMatch);
 }
 
 TEST_CASE("wildcards are used only as the thesis allows", "[sema][wildcards]") {

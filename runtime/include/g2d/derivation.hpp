@@ -56,7 +56,9 @@ struct RuleInfo {
     // priority's turn comes, every one of its rules rewrites all its matches
     // in one step (ParallelStep::runGeneration).
     bool generation = false;
-    std::vector<double> weights;      // one per daughter, all > 0
+    std::vector<double> weights;      // one per daughter, all > 0 (0 for those read from the match)
+    // Some daughter's weight reads the match: RuleSet::weigh gives them per application.
+    bool matchWeighted = false;
     // The pattern's shape, for incremental matching: the kinds of its nodes
     // (-1: wildcard), its edge count, and how far (in edges) from a changed
     // node a match can be affected through its negative conditions (-1:
@@ -225,6 +227,12 @@ public:
                         MatchBuffer& scratch);
     // What applying `daughter` to `m` deletes or changes, appended to `out`.
     virtual void writeSet(std::size_t rule, std::size_t daughter, Match m, WriteSet& out) const = 0;
+    // A matchWeighted rule's weights for match m: `weights` comes as
+    // info.weights, and the daughters whose weight reads the match get theirs.
+    // Throws (placed at the weight) when one is negative or not finite, or all are 0.
+    virtual void weigh(std::size_t rule, Match m, const Graph& g, std::vector<double>& weights) {
+        (void)rule, (void)m, (void)g, (void)weights;
+    }
     // Evaluates everything the daughter computes, on the graph as it is now
     // (before the step), and keeps it (and the match's ids) until commit().
     virtual void prepare(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng,
@@ -346,6 +354,10 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& options
 
 // Helpers shared with tests: the selection rules, as specified above.
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);
+// The daughter for an application of `rule` to m: by its weights, read from
+// the match where they depend on it (`scratch` holds them).
+std::size_t chooseDaughter(RuleSet& rules, std::size_t rule, const RuleInfo& info, Match m, const Graph& g, Rng& rng,
+                           std::vector<double>& scratch);
 long long ageSum(Match m, int nodes, int edges, const Graph& g, int faces = 0);
 template <class T>
 void shuffle(std::vector<T>& v, Rng& rng) {

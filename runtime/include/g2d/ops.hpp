@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"
@@ -78,6 +79,11 @@ inline vec3 divVec(vec3 v, double s) {
 
 // A daughter's weight, when a parameter gives it: positive and finite.
 double checkedWeight(double w);
+// A daughter's weight read from the match: finite and not negative (0: the
+// daughter is not chosen for this match).
+double checkedMatchWeight(double w);
+// Some daughter of a match-weighted rule must weigh more than 0.
+void checkSomeWeight(const std::vector<double>& weights);
 // A merge tolerance (`merge within`), when a parameter gives it: finite, not negative.
 double checkedMergeTolerance(double t);
 

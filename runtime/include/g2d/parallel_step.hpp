@@ -41,7 +41,8 @@ private:
     void beginStep(const Graph& g);
     // Draws `rule`'s matches and takes those that clash with nothing taken
     // this step; daughters[i]: the daughter of the set's match i, or kNotTaken.
-    std::size_t claim(std::size_t rule, const MatchSet& set, RuleSet& rules, Rng& rng, std::vector<std::uint32_t>& daughters);
+    std::size_t claim(std::size_t rule, const MatchSet& set, RuleSet& rules, const Graph& g, Rng& rng,
+                      std::vector<std::uint32_t>& daughters);
     void prepareTaken(std::size_t rule, const MatchSet& set, const std::vector<std::uint32_t>& daughters, RuleSet& rules,
                       Graph& g, Rng& rng, long long step, StepTracer* tracer, const ElementScope* const* scopes);
     std::vector<std::uint32_t> order_, daughter_;
@@ -52,6 +53,7 @@ private:
     std::vector<std::uint32_t> nodeMarks_, edgeMarks_, faceMarks_;
     std::uint32_t stamp_ = 0;
     WriteSet writes_;
+    std::vector<double> weights_;   // a match-weighted rule's, per match
 };
 
 }  // namespace g2d::rt
