@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev
   libeigen3-dev libxml2-dev
   libxml2-utils
+  librsvg2-dev libcairo2-dev
   python3-networkx
   chromium
 )

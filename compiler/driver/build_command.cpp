@@ -87,7 +87,7 @@ int runCommand(const std::vector<std::string>& args) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
-#ifdef G2D_RUNTIME_LINK_FLAGS
+#if defined(G2D_RUNTIME_LINK_FLAGS) || defined(G2D_RUNTIME_LIBS)
 std::vector<std::string> splitFlags(const std::string& flags) {
     std::vector<std::string> out;
     std::size_t i = 0;
@@ -152,6 +152,10 @@ int runBuild(const BuildOptions& options) {
     const fs::path temp = target.string() + ".tmp-" + std::to_string(getpid());
     std::vector<std::string> args = {*cxx, "-std=c++20", "-O" + level, "-ffp-contract=off", "-I", runtime->include, cpp.string(),
                                      runtime->library, "-o", temp.string()};
+#ifdef G2D_RUNTIME_LIBS
+    // The runtime's own libraries (librsvg and cairo: PNG output), after it.
+    for (const auto& f : splitFlags(G2D_RUNTIME_LIBS)) args.insert(args.end() - 2, f);
+#endif
 #ifdef G2D_RUNTIME_LINK_FLAGS
     for (const auto& f : splitFlags(G2D_RUNTIME_LINK_FLAGS)) args.insert(args.begin() + 1, f);
 #endif

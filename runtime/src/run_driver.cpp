@@ -12,6 +12,7 @@
 
 #include "g2d/atomic_file.hpp"
 #include "g2d/obj_writer.hpp"
+#include "g2d/png_writer.hpp"
 #include "g2d/seed_batch.hpp"
 #include "g2d/trace.hpp"
 #include "g2d/source_excerpt.hpp"
@@ -142,7 +143,21 @@ void reportRunError(const RunRequest& request, GrammarRun& grammar, const std::e
 
 }  // namespace
 
+// Why --dpi or --width cannot apply, or "".
+std::string pngOptionError(const RunRequest& request) {
+    if (!request.dpi && !request.width) return "";
+    const char* option = request.dpi ? "--dpi" : "--width";
+    if (request.dpi && request.width)
+        return "--dpi and --width both set the PNG's size: give one of them (--width PX fixes the width, the height follows)";
+    if (request.noSvg || !request.svgOut || !isPngPath(*request.svgOut))
+        return std::string(option) + " applies to PNG output only: write the image with -o FILE.png";
+    if (request.dpi && !(*request.dpi > 0 && *request.dpi <= 10000)) return "--dpi must be a positive number (at most 10000)";
+    if (request.width && !(*request.width > 0 && *request.width <= 32767)) return "--width must be between 1 and 32767 pixels";
+    return "";
+}
+
 int runGrammar(const RunRequest& request, GrammarRun& grammar) {
+    if (std::string err = pngOptionError(request); !err.empty()) return usageError(request, err);
     if (request.seeds) return runSeedBatch(request, grammar);   // many seeds: one runGrammar per seed, in workers
     std::vector<Value> params;
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
@@ -234,7 +249,23 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         svgOptions.compact = request.svgCompact;
         svgOptions.precision = request.precision;
         std::string svg;
-        if (traceHtmlFile) {
+        if (svgFile && request.svgOut && isPngPath(*request.svgOut)) {
+            // A PNG: the SVG, made whole in memory, rendered by librsvg.
+            StringOut text;
+            writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
+            svg = std::move(text.text());
+            PngOptions png;
+            png.dpi = request.dpi;
+            png.width = request.width;
+            png.baseFile = std::filesystem::absolute(request.grammarFile).string();
+            std::string bytes;
+            try {
+                bytes = renderPng(svg, png);
+            } catch (const std::runtime_error& e) {
+                throw OutputError("cannot write `" + *request.svgOut + "`: " + e.what());
+            }
+            svgFile->commit(bytes);
+        } else if (traceHtmlFile) {
             StringOut text;
             writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
             svg = std::move(text.text());

@@ -32,7 +32,10 @@ std::string defaultText(const ParamSpec& p) {
 }  // namespace
 
 void addRunOptions(CLI::App& app, RunRequest& r) {
-    addOptional(app, "-o,--output", r.svgOut, "SVG output (default: the grammar's name with .svg)", "FILE");
+    addOptional(app, "-o,--output", r.svgOut,
+                "SVG output (default: the grammar's name with .svg); a name ending in .png writes a PNG image instead", "FILE");
+    addOptional(app, "--dpi", r.dpi, "PNG output: pixels per inch of the drawing's size in cm (default 96)", "N");
+    addOptional(app, "--width", r.width, "PNG output: the image's width in pixels (the height follows; not with --dpi)", "PX");
     addOptional(app, "--json", r.jsonOut, "Graph output in NetworkX node-link JSON", "FILE");
     addOptional(app, "--obj", r.objOut, "Wavefront OBJ output: nodes as vertices, faces by kind, edges as lines", "FILE");
     addOptional(app, "--view", r.viewOut, "Write the model in 3D as a self-contained HTML page (drag to turn it)", "FILE");

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "g2d/svg_extent.hpp"
+
 namespace g2d::rt {
 
 namespace {
@@ -177,11 +179,17 @@ bool measureItem(const DrawItem& it, SvgFrame& frame) {
     case Shape::Polyline:
         frame.add(it.a, 0);
         if (isEdge) frame.add(it.b, 0);
+        if (shape == Shape::Path) addPathExtent(styleText(it, "d", ""), frame);
+        else addPointsExtent(styleText(it, "points", ""), frame);
         break;
     case Shape::Image:
         frame.addTurned(c, styleNumber(it, "width", 1), styleNumber(it, "height", 1), styleNumber(it, "rotate", 0));
         break;
-    case Shape::Text: frame.add(c, 0); break;
+    case Shape::Text:
+        frame.add(c, 0);
+        addTextExtent(c, styleText(it, "text", ""), styleNumber(it, "font_size", 0.5), styleText(it, "text_anchor", "middle"),
+                      styleNumber(it, "rotate", 0), frame);
+        break;
     case Shape::None:
     case Shape::Unknown: break;
     }
