@@ -144,7 +144,7 @@ TEST_CASE("an AtomicFile written in pieces appears only on commit", "[output][at
     fs::remove_all(dir);
 }
 
-TEST_CASE("staged commits appear when their group is placed; a failed placement is reported and cleaned up",
+TEST_CASE("staged commits appear when their group is placed, a failed placement is reported and cleaned up",
           "[output][atomic]") {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / ("g2d-staged-" + std::to_string(::getpid()));
