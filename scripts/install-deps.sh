@@ -11,6 +11,7 @@ packages=(
   libglm-dev libcli11-dev catch2
   nlohmann-json3-dev
   libeigen3-dev libxml2-dev
+  libyaml-cpp-dev
   libxml2-utils
   librsvg2-dev libcairo2-dev
   python3-networkx

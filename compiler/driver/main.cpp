@@ -4,6 +4,7 @@
 
 #include "driver/check_command.hpp"
 #include "driver/infer_command.hpp"
+#include "driver/import_command.hpp"
 #include "driver/big_stack.hpp"
 #include "driver/build_command.hpp"
 #include "driver/run_command.hpp"
@@ -82,6 +83,12 @@ int runCommandLine(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
 
+    auto* importCmd = app.add_subcommand("import", "Translate a grammar of the original tool (model_gen YAML) into g2d source");
+    g2d::ImportCommandOptions importOptions;
+    importCmd->add_option("FILE", importOptions.input, "The tool's grammar (.yml)")->required();
+    importCmd->add_option("-o,--output", importOptions.output, "Write the .g2d source here (default: standard output)");
+    importCmd->add_flag("-q,--quiet", importOptions.quiet, "Do not print the warnings");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -96,6 +103,7 @@ int runCommandLine(int argc, char** argv) {
         return 2;  // usage error
     }
 
+    if (importCmd->parsed()) return g2d::runImport(importOptions);
     if (check->parsed()) {
         return g2d::runCheck(checkFiles,
                              format == "json" ? g2d::DiagnosticsFormat::Json : g2d::DiagnosticsFormat::Text,

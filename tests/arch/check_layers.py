@@ -27,7 +27,8 @@ ALLOWED = {
     "lsp": {"ast", "diag", "front", "sema", "g2d", "antlr"},   # the lexer's keyword list
     "show": {"diag", "ir", "sema", "g2d"},
     "infer": set(),
-    "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "infer", "g2d"},
+    "import": set(),
+    "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "infer", "import", "g2d"},
 }
 INTERNAL = set(os.listdir(os.path.join(root, "runtime", "internal", "g2d")))
 include = re.compile(r'^\s*#include "([^"]+)"', re.M)

@@ -1,0 +1,37 @@
+#include "import/model_gen_catalogue.hpp"
+
+namespace g2d::import {
+
+PyType mergeTypes(PyType a, PyType b, bool& conflict) {
+    if (a == PyType::Unknown || a == PyType::None) return b == PyType::None ? PyType::Unknown : b;
+    if (b == PyType::Unknown || b == PyType::None || a == b) return a;
+    auto numeric = [](PyType t) { return t == PyType::Int || t == PyType::Float || t == PyType::Bool; };
+    if (numeric(a) && numeric(b)) {
+        if (a == PyType::Float || b == PyType::Float) return PyType::Float;
+        return PyType::Int;
+    }
+    conflict = true;
+    return (a == PyType::String || b == PyType::String) ? PyType::String : a;
+}
+
+std::string g2dTypeName(PyType type) {
+    switch (type) {
+        case PyType::Bool: return "bool";
+        case PyType::Int: return "int";
+        case PyType::String: return "string";
+        case PyType::Vec2: return "vec2";
+        default: return "float";
+    }
+}
+
+std::string defaultLiteral(PyType type) {
+    switch (type) {
+        case PyType::Bool: return "false";
+        case PyType::Int: return "0";
+        case PyType::String: return "\"\"";
+        case PyType::Vec2: return "(0, 0)";
+        default: return "0";
+    }
+}
+
+}  // namespace g2d::import
