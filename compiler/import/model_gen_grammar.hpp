@@ -106,4 +106,10 @@ struct MgError : std::runtime_error {
 
 MgGrammar readModelGenGrammar(const std::string& yamlText);
 
+// Python's truth of a flag as the files write it (true, 'True', 1).
+inline bool isTrue(const MgScalar& s) { return s.text == "True" || s.text == "true" || s.text == "1"; }
+
+// The label a mother condition asks for (`attr=='Branch'`), if it is that simple.
+std::optional<std::string> labelTested(const std::string& condition);
+
 }  // namespace g2d::import

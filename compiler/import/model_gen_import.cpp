@@ -20,24 +20,8 @@
 namespace g2d::import {
 namespace {
 
-bool truthy(const MgScalar& s) {
-    return s.text == "True" || s.text == "true" || s.text == "1";
-}
-
 bool isUserKey(const std::string& key) {
     return !key.empty() && key[0] != '.' && key != "x" && key != "y" && key != "new_x" && key != "new_y";
-}
-
-// The label a mother condition asks for (attr=='Branch'), if it is that simple.
-std::optional<std::string> labelCondition(const std::string& condition) {
-    std::string s;
-    for (char c : condition) if (c != ' ') s += c;
-    if (s.rfind("attr==", 0) != 0 || s.size() < 9) return std::nullopt;
-    const char q = s[6];
-    if ((q != '\'' && q != '"') || s.back() != q) return std::nullopt;
-    std::string label = s.substr(7, s.size() - 8);
-    if (label.find_first_of("'\"") != std::string::npos) return std::nullopt;
-    return label;
 }
 
 // Whether every `or`-part compares attr with a non-empty string: an element
@@ -48,7 +32,7 @@ bool falseOnEmptyString(const std::string& condition) {
     while (true) {
         const std::size_t next = rest.find(" or ", at);
         const std::string part = rest.substr(at, next == std::string::npos ? std::string::npos : next - at);
-        auto label = labelCondition(part);
+        auto label = labelTested(part);
         if (!label || label->empty()) return false;
         if (next == std::string::npos) return true;
         at = next + 4;
@@ -96,13 +80,13 @@ PyType literalType(const MgScalar& s) {
 // A literal value as g2d source of the given type.
 std::string literalAs(const MgScalar& s, PyType type) {
     switch (type) {
-        case PyType::Bool: return truthy(s) ? "true" : "false";
+        case PyType::Bool: return isTrue(s) ? "true" : "false";
         case PyType::String: return quoted(s.kind == MgScalar::Kind::Null ? "" : s.text);
         case PyType::Int:
             if (auto v = lengthInUnits(s.text)) return std::to_string(static_cast<long long>(*v * kPixelsPerUnit + (*v >= 0 ? 0.5 : -0.5)));
             return "0";
         default:
-            if (s.text == "True" || s.text == "False") return truthy(s) ? "1" : "0";
+            if (s.text == "True" || s.text == "False") return isTrue(s) ? "1" : "0";
             if (auto v = lengthInUnits(s.text); v && s.text.find_first_not_of("0123456789.-+e") == std::string::npos)
                 return numberText(*v * kPixelsPerUnit);
             return "0";
@@ -266,7 +250,7 @@ private:
         for (const auto& p : g_.productions)
             for (const auto& e : p.mother.edges) {
                 const auto* d = e.attribute(".directed");
-                (d && truthy(d->value) ? anyDirected : anyUndirected) = true;
+                (d && isTrue(d->value) ? anyDirected : anyUndirected) = true;
             }
         directed_ = anyDirected && !anyUndirected;
         mixedDirections_ = anyDirected && anyUndirected;
@@ -274,7 +258,7 @@ private:
 
     std::string directionCondition(const RuleScope& scope, const MgElement& e) const {
         const auto* d = e.attribute(".directed");
-        if (!mixedDirections_ || !d || !truthy(d->value)) return "";
+        if (!mixedDirections_ || !d || !isTrue(d->value)) return "";
         // An undirected edge keeps the orientation it was written in; a
         // zero-length one has no direction and matches neither way.
         return "dot(" + scope.motherName(e.id) + ".direction, " + scope.endName(e, false) + ".pos - " +
@@ -476,7 +460,7 @@ private:
         }
         if (isPixelLength(prop))
             if (auto v = lengthInUnits(literal.text)) return target + " = " + numberText(*v);
-        if (literal.kind == MgScalar::Kind::Bool) return target + " = " + (truthy(literal) ? "true" : "false");
+        if (literal.kind == MgScalar::Kind::Bool) return target + " = " + (isTrue(literal) ? "true" : "false");
         if (prop == "width" || prop == "height" || literal.kind == MgScalar::Kind::Int || literal.kind == MgScalar::Kind::Float)
             if (auto v = lengthInUnits(literal.text); v && literal.text.find_first_not_of("0123456789.-+e") == std::string::npos)
                 return target + " = " + numberText(*v * kPixelsPerUnit);
@@ -692,7 +676,7 @@ private:
         out_ << "rule " << scope.ruleName();
         if (p.priority != 0) out_ << " priority " << p.priority;
         for (const auto& [key, value] : p.conditions)
-            if (key == ".geometric_ordering" && truthy(value)) out_ << " ordered";
+            if (key == ".geometric_ordering" && isTrue(value)) out_ << " ordered";
         bool oldest = false;
         for (const auto& o : p.options)
             for (const auto& [key, value] : o.conditions)

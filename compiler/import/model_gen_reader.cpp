@@ -200,6 +200,17 @@ std::string filterElement(const std::string& id, const YAML::Node& methods) {
 
 }  // namespace
 
+std::optional<std::string> labelTested(const std::string& condition) {
+    std::string s;
+    for (char c : condition) if (c != ' ') s += c;
+    if (s.rfind("attr==", 0) != 0 || s.size() < 9) return std::nullopt;
+    const char q = s[6];
+    if ((q != '\'' && q != '"') || s.back() != q) return std::nullopt;
+    std::string label = s.substr(7, s.size() - 8);
+    if (label.find_first_of("'\"") != std::string::npos) return std::nullopt;
+    return label;
+}
+
 MgGrammar readModelGenGrammar(const std::string& yamlText) {
     YAML::Node root;
     try {

@@ -6,9 +6,7 @@
 namespace g2d::import {
 namespace {
 
-bool truthy(const MgAttribute* a) {
-    return a && (a->value.text == "True" || a->value.text == "true" || a->value.text == "1");
-}
+bool isTrue(const MgAttribute* a) { return a && isTrue(a->value); }
 
 bool isArgName(const std::string& name) {
     if (name.rfind("arg", 0) != 0 || name.size() == 3) return false;
@@ -32,15 +30,9 @@ std::string literalLabel(const MgElement& e) {
     return "";
 }
 
-std::optional<std::string> conditionLabel(const MgElement& e) {
+std::optional<std::string> testedLabel(const MgElement& e) {
     const MgAttribute* label = e.attribute("label");
-    if (!label) return std::nullopt;
-    std::string s;
-    for (char c : label->value.text) if (c != ' ') s += c;
-    if (s.rfind("attr==", 0) != 0 || s.size() < 9) return std::nullopt;
-    const char q = s[6];
-    if ((q != '\'' && q != '"') || s.back() != q) return std::nullopt;
-    return s.substr(7, s.size() - 8);
+    return label ? labelTested(label->value.text) : std::nullopt;
 }
 
 double coordinate(const MgElement& v, const char* key) {
@@ -93,13 +85,13 @@ RuleScope RuleScope::build(const MgProduction& p, const std::vector<MgGlobal>& g
     auto nameMother = [&](const MgElement& e, bool isNode) {
         std::string name;
         if (auto it = wanted.find(e.id); it != wanted.end()) name = it->second;
-        else if (auto label = conditionLabel(e); label && !label->empty()) name = snakeName(*label);
+        else if (auto label = testedLabel(e); label && !label->empty()) name = snakeName(*label);
         else name = isNode ? "n" : "e";
         s.motherNames_[e.id] = s.names_.take(name);
         s.motherIsNode_[e.id] = isNode;
     };
     for (const auto& v : p.mother.vertices) {
-        if (truthy(v.attribute(".helper_node"))) s.wildcards_.insert(v.id);
+        if (isTrue(v.attribute(".helper_node"))) s.wildcards_.insert(v.id);
         nameMother(v, true);
     }
     for (const auto& e : p.mother.edges) {
@@ -239,7 +231,7 @@ std::optional<std::string> RuleScope::daughterVertexName(std::size_t option, con
     if (auto it = keptBy_[option].find(*id); it != keptBy_[option].end()) return motherName(it->second);
     const auto& o = p_->options[option];
     for (const auto& v : o.daughter.vertices)
-        if (v.id == *id && truthy(v.attribute(".helper_node"))) return std::nullopt;
+        if (v.id == *id && isTrue(v.attribute(".helper_node"))) return std::nullopt;
     if (auto n = newNames_[option].find(*id); n != newNames_[option].end()) return n->second;
     return std::nullopt;
 }
