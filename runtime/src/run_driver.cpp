@@ -12,6 +12,7 @@
 
 #include "g2d/atomic_file.hpp"
 #include "g2d/obj_writer.hpp"
+#include "g2d/image_links.hpp"
 #include "g2d/png_writer.hpp"
 #include "g2d/seed_batch.hpp"
 #include "g2d/trace.hpp"
@@ -248,8 +249,16 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         SvgOptions svgOptions;
         svgOptions.compact = request.svgCompact;
         svgOptions.precision = request.precision;
+        // Images are named relative to the grammar; the SVG links them from
+        // where it is written (a PNG is rendered with the grammar's folder as base).
+        const bool png = svgFile && request.svgOut && isPngPath(*request.svgOut);
+        const std::string svgPlace = svgFile ? request.svgOut.value_or(std::filesystem::path(request.grammarFile).stem().string() + ".svg")
+                                             : request.traceHtml.value_or(".");
+        ImageLinks images(request.grammarFile, svgPlace, request.embedImages);
+        if (!png || request.embedImages)
+            svgOptions.imageHref = [&images](const std::string& href) { return images.href(href); };
         std::string svg;
-        if (svgFile && request.svgOut && isPngPath(*request.svgOut)) {
+        if (png) {
             // A PNG: the SVG, made whole in memory, rendered by librsvg.
             StringOut text;
             writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);

@@ -44,6 +44,8 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
     app.add_flag("--no-svg", r.noSvg, "Write no SVG");
     app.add_flag("--svg-compact", r.svgCompact,
                  "Smaller SVG for huge drawings: each run of alike lines as one <path> (the same picture)");
+    app.add_flag("--embed-images", r.embedImages,
+                 "Put the images into the SVG (data: URIs) instead of linking them: a file that stands alone");
     addOptional(app, "--precision", r.precision, "Round SVG coordinates to N decimals (default: exact)", "N")
         ->check(CLI::Range(0, 15));
     CLI::Option* seed =

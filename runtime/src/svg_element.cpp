@@ -335,7 +335,8 @@ void SvgBody::item(const DrawItem& it) {
         const double w = styleNumber(it, "width", 1), h = styleNumber(it, "height", 1);
         // Images and text are flipped back upright inside the y-up group.
         out.write("<image href=\"");
-        writeEscaped(out, styleText(it, "href", ""));
+        const std::string href = styleText(it, "href", "");
+        writeEscaped(out, options_.imageHref ? options_.imageHref(href) : href);
         out.write("\" x=\"");
         num(out, -w / 2);
         out.write("\" y=\"");

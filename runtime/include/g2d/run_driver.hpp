@@ -1,6 +1,6 @@
 #pragma once
 // The run procedure shared by `g2d run` and compiled grammars:
-// RUN [-o OUT.svg|OUT.png [--dpi N | --width PX]] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--seed N] [-D NAME=VALUE]…
+// RUN [-o OUT.svg|OUT.png [--dpi N | --width PX]] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--embed-images] [--seed N] [-D NAME=VALUE]…
 //     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial] [--quiet]
 //     [--seeds A..B [-j N] [--summary FILE]]
 #include <cstdint>
@@ -29,6 +29,7 @@ struct RunRequest {
     bool noSvg = false;
     bool svgCompact = false;              // runs of alike lines as one <path> each (svg_writer.hpp)
     std::optional<int> precision;         // SVG coordinates rounded to this many decimals
+    bool embedImages = false;             // images as data: URIs, not links (image_links.hpp)
     std::optional<double> dpi;            // PNG output (-o x.png): pixels per inch (default 96; the SVG's size is in cm)
     std::optional<int> width;             // PNG output: this many pixels wide instead (not with dpi)
     std::uint64_t seed = 1;

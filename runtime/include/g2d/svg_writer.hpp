@@ -46,6 +46,8 @@ struct DrawItem {
 struct SvgOptions {
     bool compact = false;
     std::optional<int> precision;   // decimals of coordinates (none: the shortest exact text)
+    // What an image's href becomes in the file (image_links.hpp); none: as written.
+    std::function<std::string(const std::string&)> imageHref;
 };
 
 // Makes the item of live element `id` of class `cls` in `out` (its storage reused).
