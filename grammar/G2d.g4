@@ -112,7 +112,7 @@ faceStmt
 ruleDecl    : 'rule' ID ruleOption* '{' matchBlock ruleItem* '}' ;
 ruleOption
     : 'priority' signedInt          # rulePriority
-    | 'pick' ID                     # rulePick
+    | 'pick' how=ID measure=ID?      # rulePick       // `pick oldest generation`
     | 'ordered'                     # ruleOrdered
     | 'parallel'                    # ruleParallel
     | word=('merge' | 'intersect' | 'dpo')  # ruleWordOption

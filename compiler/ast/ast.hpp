@@ -161,6 +161,7 @@ struct RuleOption {
     long long priority = 0;
     bool priorityOverflow = false;
     Ident pick;
+    Ident pickMeasure;              // `pick oldest generation`: empty when not written
     Ident word;                     // Word: an option named by a plain name (`merge`)
     Span span;
 };

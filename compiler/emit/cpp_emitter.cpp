@@ -57,7 +57,9 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     std::string out = in + "RuleInfo info;\n";
     out += in + "info.name = " + cppString(i.name) + ";\n";
     out += in + "info.priority = " + cppLiteral(ir::Value{i.priority}, ir::kIntType) + ";\n";
-    out += in + "info.pick = " + (i.pick == rt::Pick::Oldest ? "Pick::Oldest" : "Pick::Random") + ";\n";
+    out += in + "info.pick = " + (i.pick == rt::Pick::OldestGeneration ? "Pick::OldestGeneration"
+                                  : i.pick == rt::Pick::Oldest          ? "Pick::Oldest"
+                                                                        : "Pick::Random") + ";\n";
     out += in + "info.parallel = " + (i.parallel ? "true" : "false") + ";\n";
     if (i.matchWeighted) out += in + "info.matchWeighted = true;\n";
     out += in + "info.generation = " + (i.generation ? "true" : "false") + ";\n";
@@ -287,6 +289,7 @@ private:
         out += axiom.prepare(start.axiom, noElements(), in + "    ") + axiom.commit(start.axiom, in + "    ") + in + "}\n";
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";
+        if (prog_.tracksGenerations) out += in + "tracksGenerations = true;\n";
         for (const auto& r : prog_.rules) {
             const lower::RuleFacts facts = lower::ruleFacts(prog_, r);
             out += in + "{\n" + ruleInfo(facts.info, in + "    ");
@@ -430,7 +433,7 @@ private:
                 for (std::size_t l = 0; l < loops; ++l)
                     clears += "        turns_" + rd + "_" + str(static_cast<long long>(l)) + "_.clear();\n";
             }
-        out += "            default: break;\n            }\n            if (onApplied) onApplied();\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
+        out += "            default: break;\n            }\n            applicationDone(G);\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
         out += "    void discard() override { clearPending(); }\n\n";
         out += angleLayoutOverride(prog_);
         out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";

@@ -681,10 +681,8 @@ private:
         for (const auto& o : p.options)
             for (const auto& [key, value] : o.conditions)
                 if (key == "generation" && value.text == "oldest") oldest = true;
-        if (oldest) out_ << " pick oldest";
+        if (oldest) out_ << " pick oldest generation";   // the tool's `.generation`, not g2d's age
         out_ << " {\n";
-        if (oldest)
-            out_ << "    // The tool's oldest is by .generation, g2d's by age (docs/language.md §13).\n";
         writeMatch(p, scope);
         std::ostringstream daughters;
         for (std::size_t oi = 0; oi < p.options.size(); ++oi) {

@@ -14,6 +14,7 @@ using rt::kNoId;
 using rt::NodeId;
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
+    tracksGenerations = st.prog->tracksGenerations;
     sequence_ = lower::sequenceOf(*st.prog);
     compounds_ = lower::compoundsOf(*st.prog);
     angleLayout_ = lower::angleLayoutSpec(*st.prog);
@@ -360,7 +361,7 @@ void InterpretedRules::commit(rt::Graph& g, long long step) {
         Prepared& p = pending_[k];
         executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, p.loops,
                          g, step);
-        if (onApplied) onApplied();
+        applicationDone(g);
     }
     pendingCount_ = 0;
 }

@@ -459,6 +459,9 @@ struct Compound {
 
 struct Program {
     bool space3d = false;              // `space 3d;`: positions are vec3
+    // Some rule picks by, or some expression reads, `generation`: the
+    // runtime keeps it (g2d/generations.hpp).
+    bool tracksGenerations = false;
     // `merge within T;`: every rule merges, with tolerance T (a constant
     // expression; <= 0 turns merging off). Rules with the `merge` option
     // merge with it too, or with rt::kDefaultMergeTolerance without one.

@@ -15,7 +15,7 @@ bool readsNode(const ir::Expr& e, int node) {
 }
 
 // Whether `e` reads something of node `node` that its position, attributes,
-// age, id and radius do not show (what the spatial index does not follow).
+// age, generation, id and radius do not show (what the spatial index does not follow).
 bool readsIncidence(const ir::Expr& e, int node) {
     if (e.op == ir::ExprOp::Fact && e.elem.cls == ir::ElemClass::Node && e.elem.index == node)
         switch (e.fact) {
@@ -23,6 +23,7 @@ bool readsIncidence(const ir::Expr& e, int node) {
         case ir::ElemFact::Pos3:
         case ir::ElemFact::Radius:
         case ir::ElemFact::Age:
+        case ir::ElemFact::Generation:
         case ir::ElemFact::Id: break;
         default: return true;
         }

@@ -324,7 +324,8 @@ public:
                 opt.priority = signedInt(p->signedInt(), opt.priorityOverflow);
             } else if (auto* k = dynamic_cast<P::RulePickContext*>(o)) {
                 opt.kind = RuleOption::Kind::Pick;
-                opt.pick = ident(k->ID());
+                opt.pick = ident(k->how);
+                if (k->measure) opt.pickMeasure = ident(k->measure);
             } else if (dynamic_cast<P::RuleOrderedContext*>(o)) {
                 opt.kind = RuleOption::Kind::Ordered;
             } else if (dynamic_cast<P::RuleParallelContext*>(o)) {

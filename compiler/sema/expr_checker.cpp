@@ -150,6 +150,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
             Expr r;
             r.op = ExprOp::SelfFact;
             r.fact = f->fact;
+            if (f->fact == ir::ElemFact::Generation) g_.prog.tracksGenerations = true;
             r.type = ir::Type::of(f->type);
             r.span = e.span;
             return r;
@@ -354,6 +355,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         r.op = ExprOp::Fact;
         r.elem = b.ref;
         r.fact = f->fact;
+        if (f->fact == ir::ElemFact::Generation) g_.prog.tracksGenerations = true;
         r.type = ir::Type::of(f->type);
         r.span = e.span;
         if (env.deps) env.deps->insert(b.ref);

@@ -300,11 +300,31 @@ private:
                                                      suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect", "dpo"}));
                 break;
             case ast::RuleOption::Kind::Pick:
-                if (o.pick.name == "random") rule_.pick = ir::Pick::Random;
-                else if (o.pick.name == "oldest") rule_.pick = ir::Pick::Oldest;
-                else g_.diags.error(o.pick.span, "unknown match selection `" + o.pick.name + "` (use `random` or `oldest`)");
+                checkPick(o);
                 break;
             }
+        }
+    }
+
+    // `pick random`, `pick oldest`, `pick oldest age`, `pick oldest generation`.
+    void checkPick(const ast::RuleOption& o) {
+        const std::string& measure = o.pickMeasure.name;
+        if (o.pick.name == "random") {
+            rule_.pick = ir::Pick::Random;
+            if (!measure.empty()) g_.diags.error(o.pickMeasure.span, "`pick random` takes no measure (`" + measure + "`)");
+        } else if (o.pick.name == "oldest") {
+            if (measure.empty() || measure == "age") {
+                rule_.pick = ir::Pick::Oldest;
+            } else if (measure == "generation") {
+                rule_.pick = ir::Pick::OldestGeneration;
+                g_.prog.tracksGenerations = true;
+            } else {
+                g_.diags.error(o.pickMeasure.span, "unknown measure `" + measure + "` for `pick oldest` (use `age` or `generation`)" +
+                                                       suggest(measure, {"age", "generation"}));
+            }
+        } else {
+            g_.diags.error(o.pick.span, "unknown match selection `" + o.pick.name + "` (use `random` or `oldest`)" +
+                                            suggest(o.pick.name, {"random", "oldest"}));
         }
     }
 

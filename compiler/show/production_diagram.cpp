@@ -314,6 +314,7 @@ std::string ruleHeading(const ir::Rule& r, const ir::Program& prog, const Source
              " (its priority's)";
     }
     if (r.pick == ir::Pick::Oldest) h += " · pick oldest";
+    if (r.pick == ir::Pick::OldestGeneration) h += " · pick oldest generation";
     if (r.ordered) h += " · ordered";
     if (r.parallel || (config && config->parallel)) h += " · parallel";
     return h;

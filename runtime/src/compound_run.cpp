@@ -7,7 +7,7 @@ namespace g2d::rt {
 namespace {
 
 MatchSet emptySet(const RuleInfo& info) {
-    return MatchSet(static_cast<int>(info.nodeKinds.size()), info.edgeCount, info.faceCount, info.pick == Pick::Oldest);
+    return MatchSet(static_cast<int>(info.nodeKinds.size()), info.edgeCount, info.faceCount, info.pick);
 }
 
 bool inScope(const ElementScope& s, Match m, int nodes, int edges, int faces) {

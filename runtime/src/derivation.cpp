@@ -17,14 +17,6 @@
 
 namespace g2d::rt {
 
-long long ageSum(Match m, int nodes, int edges, const Graph& g, int faces) {
-    long long sum = 0;
-    for (int i = 0; i < nodes; ++i) sum += g.nodeAge(m.nodes[i]);
-    for (int i = 0; i < edges; ++i) sum += g.edgeAge(m.edges[i]);
-    for (int i = 0; i < faces; ++i) sum += g.faceAge(m.faces[i]);
-    return sum;
-}
-
 std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng) {
     if (weights.size() <= 1) return 0;
     const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
@@ -297,20 +289,20 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                     if (info.parallel) {
                         result.applications += static_cast<long long>(parallel.run(r, set, rules, g, rng, step, tracer));
                     } else {
-                        const Match m = info.pick == Pick::Oldest ? set.pickOldest(rng) : set.pickRandom(rng);
+                        const Match m = picksOldest(info.pick) ? set.pickOldest(rng) : set.pickRandom(rng);
                         if (!lookahead.guessed(m)) sets.prefetch(g, m, set.nodes(), set.edges());
                         const std::size_t d = chooseDaughter(rules, r, info, m, g, rng, weights);
                         daughter = d;
                         lookahead.ahead(r, info, set, m, rng, sets, rules, g);
                         if (!angles) {
                             if (tracer) tracer->applying(r, d, m, g);
-                            rules.prepare(r, d, m, g, rng, step);
+                            rules.prepareApplication(r, d, m, g, rng, step);
                             rules.commit(g, step);
                         } else {
-                            rules.prepare(r, d, m, g, rng, step);
+                            rules.prepareApplication(r, d, m, g, rng, step);
                             if (!drawing.propose(g, info.shapes[d], m, *angles, rng)) {
                                 // Nothing changes, and the step counts (Algorithm 3's N).
-                                rules.discard();
+                                rules.discardApplications();
                                 ++result.rejectedDrawings;
                                 ++grp.applied;
                                 retireIfSpent(grp);

@@ -187,9 +187,28 @@ int Graph::outDegree(NodeId n) const {
     return d;
 }
 
+namespace {
+// Ids [from, capacity) of one class get `generation`; a column stays empty
+// while every generation is 0.
+void setGenerations(std::vector<long long>& column, std::size_t from, std::size_t capacity, long long generation) {
+    if (from >= capacity || (generation == 0 && column.size() <= from)) return;
+    if (column.size() < capacity) column.resize(capacity, 0);
+    std::fill(column.begin() + static_cast<std::ptrdiff_t>(from), column.begin() + static_cast<std::ptrdiff_t>(capacity), generation);
+}
+}  // namespace
+
+void Graph::setGenerationsFrom(NodeId nodesFrom, EdgeId edgesFrom, FaceId facesFrom, long long generation) {
+    setGenerations(nodeGen_, nodesFrom, nodes_.size(), generation);
+    setGenerations(edgeGen_, edgesFrom, edges_.size(), generation);
+    setGenerations(faceGen_, facesFrom, faces_.size(), generation);
+}
+
+void Graph::setFaceGeneration(FaceId f, long long generation) { setGenerations(faceGen_, f, f + std::size_t{1}, generation); }
+
 std::size_t Graph::memoryBytes() const {
     std::size_t bytes = nodes_.capacity() * sizeof(NodeRec) + edges_.capacity() * sizeof(EdgeRec) +
-                        dirty_.capacity() * sizeof(NodeId) + (z_.capacity() + radius_.capacity()) * sizeof(double);
+                        dirty_.capacity() * sizeof(NodeId) + (z_.capacity() + radius_.capacity()) * sizeof(double) +
+                        (nodeGen_.capacity() + edgeGen_.capacity() + faceGen_.capacity()) * sizeof(long long);
     for (const auto& k : kindNodes_) bytes += k.capacity() * sizeof(NodeId);
     for (const auto& p : pool_) bytes += p.capacity() * sizeof(Value);
     bytes += (nodeStyleList_.capacity() + edgeStyleList_.capacity() + faceStyleList_.capacity()) * sizeof(std::uint32_t) +

@@ -46,7 +46,7 @@ IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);
         const int nn = static_cast<int>(info.nodeKinds.size());
-        sets_.emplace_back(nn, info.edgeCount, info.faceCount, info.pick == Pick::Oldest, info.readsIncidence, info.readDirections);
+        sets_.emplace_back(nn, info.edgeCount, info.faceCount, info.pick, info.readsIncidence, info.readDirections);
         radius_.push_back(info.radius);
         anchors_.push_back(repairAnchors(info));
         byRadius_.push_back(r);

@@ -8,9 +8,9 @@
 
 namespace g2d::rt {
 
-MatchSet::MatchSet(int nodes, int edges, int faces, bool byAge, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
+MatchSet::MatchSet(int nodes, int edges, int faces, Pick pick, std::vector<Incidence> reads, std::vector<std::uint8_t> directions)
     : nn_(nodes), ne_(edges), nf_(faces), width_(static_cast<std::size_t>(nodes + edges + faces)),
-      stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (byAge ? 3 : 0)), byAge_(byAge) {
+      stride_(width_ + 1 + 2 * static_cast<std::size_t>(nodes) + (picksOldest(pick) ? 3 : 0)), pick_(pick), byAge_(picksOldest(pick)) {
     if (nodes < 0) throw std::logic_error("a pattern with a negative node count");
     const IncidenceShape shape = incidenceShape(nodes, reads, directions);
     for (Incidence r : shape.reads) reads_.push_back(static_cast<std::uint8_t>(r));
@@ -41,7 +41,7 @@ std::vector<RepairAnchor> repairAnchors(const RuleInfo& info) {
     return out;
 }
 
-long long MatchSet::ageSum(Id id) const {
+long long MatchSet::oldestKey(Id id) const {
     long long sum;
     std::memcpy(&sum, data(id) + stride_ - 2, sizeof sum);
     return sum;
@@ -80,9 +80,15 @@ void MatchSet::add(const NodeId* nodes, const EdgeId* edges, const FaceId* faces
     }
     if (byAge_) {
         long long sum = 0;
-        for (int i = 0; i < nn_; ++i) sum += g.nodeAge(p[i]);
-        for (int i = 0; i < ne_; ++i) sum += g.edgeAge(p[nn_ + i]);
-        for (int i = 0; i < nf_; ++i) sum += g.faceAge(p[nn_ + ne_ + i]);
+        if (pick_ == Pick::OldestGeneration) {
+            for (int i = 0; i < nn_; ++i) sum += g.nodeGeneration(p[i]);
+            for (int i = 0; i < ne_; ++i) sum += g.edgeGeneration(p[nn_ + i]);
+            for (int i = 0; i < nf_; ++i) sum += g.faceGeneration(p[nn_ + ne_ + i]);
+        } else {
+            for (int i = 0; i < nn_; ++i) sum += g.nodeAge(p[i]);
+            for (int i = 0; i < ne_; ++i) sum += g.edgeAge(p[nn_ + i]);
+            for (int i = 0; i < nf_; ++i) sum += g.faceAge(p[nn_ + ne_ + i]);
+        }
         std::memcpy(p + stride_ - 2, &sum, sizeof sum);
         p[stride_ - 3] = ageBuckets_.insert(id, sum);
     }
@@ -108,7 +114,7 @@ void MatchSet::remove(Id id) {
     p[width_] = kNoId;
     if (byAge_) {
         const std::uint32_t place = p[stride_ - 3];
-        const std::uint32_t moved = ageBuckets_.erase(static_cast<std::uint64_t>(ageSum(id)), place);
+        const std::uint32_t moved = ageBuckets_.erase(static_cast<std::uint64_t>(oldestKey(id)), place);
         if (moved != AgeBuckets::kNoMove) data(moved)[stride_ - 3] = place;
     }
     free_.push_back(id);

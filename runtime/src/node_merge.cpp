@@ -177,7 +177,9 @@ void NodeMerger::repairFace(Graph& g, FaceId f) {
             if (parts[p].size() < 3) continue;
             std::vector<NodeId> corners;
             for (std::size_t k : parts[p]) corners.push_back(nodes[k]);
-            copyFace_(g, f, g.addFace(g.faceKind(f), corners, g.faceAge(f)));
+            const FaceId part = g.addFace(g.faceKind(f), corners, g.faceAge(f));
+            g.setFaceGeneration(part, g.faceGeneration(f));   // a part of f, as old as f
+            copyFace_(g, f, part);
         }
     }
     if (g.cornerCount(f) < 3) g.removeFace(f);   // (4)

@@ -27,7 +27,7 @@ std::size_t ParallelStep::claim(std::size_t rule, const MatchSet& set, RuleSet& 
         shuffle(order_, rng);
     } else {
         sums_.resize(set.size());
-        for (std::size_t i = 0; i < set.size(); ++i) sums_[i] = set.ageSumAt(i);
+        for (std::size_t i = 0; i < set.size(); ++i) sums_[i] = set.oldestKeyAt(i);
         std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return sums_[a] < sums_[b]; });
     }
     const std::uint32_t read = stamp_ * 2, written = stamp_ * 2 + 1;
@@ -71,7 +71,7 @@ void ParallelStep::prepareTaken(std::size_t rule, const MatchSet& set, const std
         const Match m = set.at(i);
         if (tracer) tracer->applying(rule, daughters[i], m, g);
         if (scopes) g.setScope(scopes[i]);
-        rules.prepare(rule, daughters[i], m, g, rng, step);
+        rules.prepareApplication(rule, daughters[i], m, g, rng, step);
     }
     g.setScope(nullptr);
 }

@@ -25,7 +25,7 @@ void PickLookahead::ahead(std::size_t rule, const RuleInfo& info, const MatchSet
                           const IncrementalMatches& sets, const RuleSet& rules, const Graph& g) {
     // A small set's records stay cached anyway: guessing would only cost.
     if (set.size() < kMinMatches) return;
-    if (info.pick == Pick::Oldest) {
+    if (picksOldest(info.pick)) {
         aheadOldest(rule, info, set, picked, rng, sets, rules, g);
         return;
     }

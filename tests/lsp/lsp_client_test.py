@@ -141,7 +141,7 @@ check(split and {ch["name"] for ch in split[0]["children"]} >= {"s", "e", "old",
 items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(5, "lod")})["result"]
 labels = {i["label"] for i in items}
 # An edge: its attributes and the facts edges have (no position; its degree, its ends' bounds).
-check(labels == {"lod", "age", "id", "faces", "length", "direction", "degree", "lo", "hi"}, "completion after old.: %s" % labels)
+check(labels == {"lod", "age", "generation", "id", "faces", "length", "direction", "degree", "lo", "hi"}, "completion after old.: %s" % labels)
 # Each one offered is accepted by `g2d check` where it was offered.
 for label in sorted(labels):
     with open(os.path.join(work, "offered.g2d"), "w") as f:
@@ -150,7 +150,7 @@ for label in sorted(labels):
     check(r.returncode == 0, "completion offered old.%s, which g2d check rejects: %s" % (label, r.stderr))
 items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(6, "pos")})["result"]
 labels = {i["label"] for i in items}
-check(labels == {"size", "pos", "age", "id", "degree", "in_degree", "out_degree", "faces"}, "completion after e.: %s" % labels)
+check(labels == {"size", "pos", "age", "generation", "id", "degree", "in_degree", "out_degree", "faces"}, "completion after e.: %s" % labels)
 items = c.request("textDocument/completion", {"textDocument": doc, "position": {"line": 7, "character": 14}})["result"]
 labels = {i["label"] for i in items}
 check({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} <= labels,
@@ -179,7 +179,7 @@ check(h and "face" in h["contents"]["value"] and "`Room`" in h["contents"]["valu
 items = c.request("textDocument/completion", {"textDocument": face_doc,
                                                "position": {"line": 4, "character": face_line.index("level")}})["result"]
 labels = {i["label"] for i in items}
-check(labels == {"level", "age", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours", "touching", "lo", "hi"},
+check(labels == {"level", "age", "generation", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours", "touching", "lo", "hi"},
       "completion after f.: %s" % labels)
 
 unknown = c.request("textDocument/formatting", {"textDocument": doc, "options": {}})

@@ -61,7 +61,7 @@ void exercise(std::uint64_t seed, int ageSpread) {
         if (b == a) b = nodes[(a + 1) % nodes.size()];
         edges.push_back(g.addEdge(1, a, b, static_cast<long long>(rng.below(static_cast<std::uint64_t>(ageSpread)))));
     }
-    MatchSet set(2, 1, 0, true);
+    MatchSet set(2, 1, 0, Pick::Oldest);
     OldestModel model;
     for (int op = 0; op < 4000; ++op) {
         if (model.live.empty() || rng.below(100) < 60) {

@@ -29,7 +29,8 @@ syn match g2dFuncName "\h\w*" contained
 syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with
 syn keyword g2dModifier ordered parallel directed undirected merge intersect dpo
 syn keyword g2dModifier pick nextgroup=g2dPickPolicy skipwhite
-syn match g2dPickPolicy "\h\w*" contained
+syn match g2dPickPolicy "\h\w*" contained nextgroup=g2dPickMeasure skipwhite
+syn match g2dPickMeasure "\<\(age\|generation\)\>" contained
 " booleans and logic; `not {` is a negative condition
 syn keyword g2dBoolean true false
 syn match g2dLogical "\<\(and\|or\|not\)\>"
@@ -101,6 +102,7 @@ hi def link g2dRuleKeyword   Statement
 hi def link g2dNegative      Statement
 hi def link g2dModifier      StorageClass
 hi def link g2dPickPolicy    Constant
+hi def link g2dPickMeasure   Constant
 hi def link g2dLogical       Operator
 hi def link g2dOperator      Operator
 hi def link g2dArrow         Operator

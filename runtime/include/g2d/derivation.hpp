@@ -39,6 +39,7 @@
 
 #include "g2d/angle_step.hpp"
 #include "g2d/command_list.hpp"
+#include "g2d/generations.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/match_set.hpp"
 #include "g2d/near_queries.hpp"
@@ -235,6 +236,8 @@ public:
     }
     // Evaluates everything the daughter computes, on the graph as it is now
     // (before the step), and keeps it (and the match's ids) until commit().
+    // The scheduler calls prepareApplication, which notes the application's
+    // generation first (when tracked).
     virtual void prepare(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng,
                          long long step) = 0;
     // Applies every prepared application, in order, and forgets them.
@@ -282,6 +285,26 @@ public:
     // Called by commit() after each application it makes, when set (compound
     // scopes take in what each application created).
     std::function<void()> onApplied;
+    // The scheduler's way to prepare and drop applications, and the back
+    // ends' to report each one committed: they keep the thesis tool's
+    // `.generation` (generations.hpp) when the grammar reads it.
+    void prepareApplication(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng, long long step) {
+        if (tracksGenerations) {
+            const RuleInfo& i = info(rule);
+            generations_.prepared(m, static_cast<int>(i.nodeKinds.size()), i.edgeCount, i.faceCount, g);
+        }
+        prepare(rule, daughter, m, g, rng, step);
+    }
+    void discardApplications() {
+        generations_.clear();
+        discard();
+    }
+    void applicationDone(Graph& g) {
+        if (tracksGenerations) generations_.applied(g);
+        if (onApplied) onApplied();
+    }
+    // Whether the grammar reads `.generation` (set by the back end).
+    bool tracksGenerations = false;
     // The spatial index of negative conditions asking for a node near a
     // point (RuleInfo::nearKinds): the searches read it, IncrementalMatches
     // keeps it up to date while a derivation runs.
@@ -289,6 +312,7 @@ public:
 
 private:
     NearQueries near_;
+    GenerationStamps generations_;
 };
 
 // A runaway guard: a derivation stops with an error past this many nodes +
@@ -358,7 +382,6 @@ std::size_t pickDaughter(const std::vector<double>& weights, Rng& rng);
 // the match where they depend on it (`scratch` holds them).
 std::size_t chooseDaughter(RuleSet& rules, std::size_t rule, const RuleInfo& info, Match m, const Graph& g, Rng& rng,
                            std::vector<double>& scratch);
-long long ageSum(Match m, int nodes, int edges, const Graph& g, int faces = 0);
 template <class T>
 void shuffle(std::vector<T>& v, Rng& rng) {
     for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);

@@ -31,6 +31,8 @@ inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
       "the node's radius (G^3: the thickness of its edges; 0 unless set)")                                           \
     X(Age, age, age, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth,                                      \
       "the step that created the element (0: the axiom)")                                                            \
+    X(Generation, generation, generation, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth,                 \
+      "one more than the highest generation among the elements matched by the application that created it (0: the axiom; the thesis tool's .generation)") \
     X(Id, id, id, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, "the element's id (never reused)")     \
     X(Degree, degree, degree, long long, "int", kOnNodes | kOnEdges, kInBoth,                                        \
       "the node's edges, both directions; for an edge, the other edges at its ends (G^3's neighbouring edges)")      \
@@ -99,6 +101,9 @@ inline vec3 pos3(const Graph& g, ElemClass, std::uint32_t id) { return g.pos3(id
 inline double radius(const Graph& g, ElemClass, std::uint32_t id) { return g.radius(id); }
 inline long long age(const Graph& g, ElemClass c, std::uint32_t id) {
     return c == ElemClass::Edge ? g.edgeAge(id) : c == ElemClass::Face ? g.faceAge(id) : g.nodeAge(id);
+}
+inline long long generation(const Graph& g, ElemClass c, std::uint32_t id) {
+    return c == ElemClass::Edge ? g.edgeGeneration(id) : c == ElemClass::Face ? g.faceGeneration(id) : g.nodeGeneration(id);
 }
 inline long long id(const Graph&, ElemClass, std::uint32_t id) { return static_cast<long long>(id); }
 // The topological facts count within a compound's scope while one is set (element_scope.hpp).

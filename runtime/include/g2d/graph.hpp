@@ -167,6 +167,15 @@ public:
         touchNode(n);   // rules read it as a fact, as they read pos
     }
     long long nodeAge(NodeId n) const { return nodes_[n].age; }
+    // The thesis tool's `.generation` (generations.hpp sets it when a
+    // grammar reads it): 0 for the axiom's elements, and wherever unset.
+    long long nodeGeneration(NodeId n) const { return n < nodeGen_.size() ? nodeGen_[n] : 0; }
+    long long edgeGeneration(EdgeId e) const { return e < edgeGen_.size() ? edgeGen_[e] : 0; }
+    long long faceGeneration(FaceId f) const { return f < faceGen_.size() ? faceGen_[f] : 0; }
+    // Every element with an id from these on gets generation `generation`
+    // (what one application created: ids are never reused).
+    void setGenerationsFrom(NodeId nodesFrom, EdgeId edgesFrom, FaceId facesFrom, long long generation);
+    void setFaceGeneration(FaceId f, long long generation);
     const Value& nodeAttr(NodeId n, int i) const { return pool_[nodes_[n].kind][attrIndex(nodes_[n].kind, nodes_[n].slot, i)]; }
     void setNodeAttr(NodeId n, int i, Value v);
     // The same without recording a change (a new node's, or a kept node's
@@ -476,6 +485,7 @@ private:
     // The columns that grow with the graph never copy themselves (grow_array.hpp).
     GrowArray<NodeRec> nodes_;
     std::vector<double> z_, radius_;         // by node id; empty until some node has a nonzero one
+    std::vector<long long> nodeGen_, edgeGen_, faceGen_;   // by id; empty until some element has a nonzero one
     void setColumn(std::vector<double>& column, NodeId n, double v) {
         if (n >= column.size()) {
             if (v == 0.0) return;

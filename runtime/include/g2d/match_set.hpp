@@ -8,8 +8,8 @@
 // node is O(those matches)), and draws
 //   - random: a match uniformly from the whole set, one below(n) draw, O(1);
 //   - oldest: a match uniformly among those with the lowest sum of their
-//     elements' creation steps, one below(k) draw only when k > 1 tie,
-//     O(log distinct sums).
+//     elements' creation steps (or generations: pick.hpp), one below(k)
+//     draw only when k > 1 tie, O(log distinct sums).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -17,6 +17,7 @@
 #include "g2d/age_buckets.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/grow_array.hpp"
+#include "g2d/pick.hpp"
 #include "g2d/prefetch.hpp"
 #include "g2d/rng.hpp"
 
@@ -96,7 +97,9 @@ public:
     // (RepairArea::kOut | kIn; empty: both, wherever it reads any).
     // A match binding a face binds that face's first corner too (see
     // lower::MatchFace), so the lists by node also drop matches of removed faces.
-    MatchSet(int nodes, int edges, int faces, bool byAge, std::vector<Incidence> reads = {}, std::vector<std::uint8_t> directions = {});
+    // `pick`: a set for oldest picks keeps its matches in groups by their
+    // elements' age (or generation) sum.
+    MatchSet(int nodes, int edges, int faces, Pick pick, std::vector<Incidence> reads = {}, std::vector<std::uint8_t> directions = {});
 
     // Adds a match (nodes, edges, then faces); the caller guarantees it is not there yet.
     void add(const std::uint32_t* ids, const Graph& g);
@@ -139,7 +142,7 @@ public:
     int nodes() const { return nn_; }
     int edges() const { return ne_; }
     int faces() const { return nf_; }
-    long long ageSumAt(std::size_t i) const { return ageSum(live_[i]); }
+    long long oldestKeyAt(std::size_t i) const { return oldestKey(live_[i]); }   // its age (or generation) sum
     Match pickRandom(Rng& rng) const;
     Match pickOldest(Rng& rng);
     // For prefetching a likely later pick (PickLookahead): asks for the
@@ -168,7 +171,8 @@ private:
     //   words width_ + 1 + 2i, +1    next / prev in the list of matches
     //                                binding its node i (see below)
     //   3 words after (oldest only)  its place in its age group
-    //                                (AgeBuckets), then its age sum
+    //                                (AgeBuckets), then its age (or
+    //                                generation) sum
     // The per-node lists are doubly linked through those link words and
     // numbered by the word offset of their `next` word; each node heads one
     // list for positions that read incidences and one for the others.
@@ -178,13 +182,14 @@ private:
     std::uint32_t linkOf(Id id, int position) const {
         return static_cast<std::uint32_t>(static_cast<std::size_t>(id) * stride_ + width_ + 1 + 2 * static_cast<std::size_t>(position));
     }
-    long long ageSum(Id id) const;
+    long long oldestKey(Id id) const;
     Match view(Id id) const { return Match{data(id), data(id) + nn_, data(id) + nn_ + ne_}; }
     void remove(Id id);
 
     int nn_, ne_, nf_;
     std::size_t width_, stride_;
-    bool byAge_;
+    Pick pick_;
+    bool byAge_;   // picksOldest(pick_)
     GrowArray<std::uint32_t> rec_;           // stride_ words per id
     GrowArray<Id> live_;
     GrowArray<Id> free_;
