@@ -14,18 +14,19 @@
 
 #include "interp/interpreted_rules.hpp"
 #include "interp/run_program.hpp"
+#include "brute_force_matcher.hpp"
 #include "test_helpers.hpp"
 
 using namespace g2d;
+namespace brute = g2d::test::brute;
 
 namespace {
 
-struct HostEdge {
-    int kind, src, dst;   // kind 0: E (directed), 1: U (undirected)
-};
-struct PatEdge {
-    int kind, src, dst;
-};
+using brute::edgeFits;
+using brute::edgeText;
+using brute::kindName;
+using HostEdge = brute::Edge;   // kind 0: E (directed), 1: U (undirected)
+using PatEdge = brute::Edge;
 struct Cond {             // nodes[a].v > c, or nodes[a].v < nodes[b].v
     int a, b, c;
 };
@@ -40,12 +41,6 @@ struct Case {
     bool nac = false, nacNewNode = false;
     int nacKind = 0, nacFrom = 0, nacTo = 0, nacEdgeKind = 0;
 };
-
-const char* kindName(int k) { return k == 0 ? "A" : k == 1 ? "B" : "*"; }
-
-std::string edgeText(const std::string& a, int kind, const std::string& b) {
-    return a + (kind == 0 ? " -[E]-> " : " -[U]- ") + b;
-}
 
 std::string source(const Case& c) {
     std::ostringstream s;
@@ -75,79 +70,37 @@ std::string source(const Case& c) {
     return s.str();
 }
 
-bool edgeFits(const HostEdge& h, int kind, int src, int dst) {
-    if (h.kind != kind) return false;
-    if (kind == 0) return h.src == src && h.dst == dst;
-    return (h.src == src && h.dst == dst) || (h.src == dst && h.dst == src);
-}
-
-// Every match as (host nodes..., host edges...), by brute force.
-std::set<std::vector<std::uint32_t>> bruteForce(const Case& c) {
-    std::set<std::vector<std::uint32_t>> out;
-    const int hn = static_cast<int>(c.hostKind.size()), pn = static_cast<int>(c.patKind.size());
-    std::vector<int> nodes(static_cast<std::size_t>(pn), -1);
-    std::vector<int> edges(c.patEdges.size(), -1);
-    auto value = [&](int p) {
-        const int h = nodes[static_cast<std::size_t>(p)];
-        return c.patKind[static_cast<std::size_t>(p)] < 0 ? h : c.hostValue[static_cast<std::size_t>(h)];
+// Every match as (host nodes..., host edges...), by brute force, with the
+// case's conditions and negative condition.
+brute::Matches bruteForce(const Case& c) {
+    const int hn = static_cast<int>(c.hostKind.size());
+    brute::Options options;
+    options.nodesHold = [&](const std::vector<int>& nodes) {
+        auto value = [&](int p) {
+            const int h = nodes[static_cast<std::size_t>(p)];
+            return c.patKind[static_cast<std::size_t>(p)] < 0 ? h : c.hostValue[static_cast<std::size_t>(h)];
+        };
+        for (const auto& k : c.conds)
+            if (k.b < 0 ? !(value(k.a) > k.c) : !(value(k.a) < value(k.b))) return false;
+        return true;
     };
-    auto nacHolds = [&] {   // true when the negative condition cannot be matched
+    options.matchHolds = [&](const std::vector<int>& nodes, const std::vector<int>& edges) {   // the negative condition cannot be matched
         if (!c.nac) return true;
         auto used = [&](int e) { return std::find(edges.begin(), edges.end(), e) != edges.end(); };
-        if (!c.nacNewNode) {
+        const int from = nodes[static_cast<std::size_t>(c.nacFrom)];
+        auto edgeTo = [&](int to) {
             for (int e = 0; e < static_cast<int>(c.hostEdges.size()); ++e)
-                if (!used(e) && edgeFits(c.hostEdges[static_cast<std::size_t>(e)], c.nacEdgeKind, nodes[static_cast<std::size_t>(c.nacFrom)],
-                                         nodes[static_cast<std::size_t>(c.nacTo)]))
-                    return false;
-            return true;
-        }
+                if (!used(e) && edgeFits(c.hostEdges[static_cast<std::size_t>(e)], c.nacEdgeKind, from, to)) return true;
+            return false;
+        };
+        if (!c.nacNewNode) return !edgeTo(nodes[static_cast<std::size_t>(c.nacTo)]);
         for (int z = 0; z < hn; ++z) {
             if (std::find(nodes.begin(), nodes.end(), z) != nodes.end()) continue;
-            if (c.hostKind[static_cast<std::size_t>(z)] != c.nacKind) continue;
-            for (int e = 0; e < static_cast<int>(c.hostEdges.size()); ++e)
-                if (!used(e) && edgeFits(c.hostEdges[static_cast<std::size_t>(e)], c.nacEdgeKind, nodes[static_cast<std::size_t>(c.nacFrom)], z))
-                    return false;
+            if (c.hostKind[static_cast<std::size_t>(z)] == c.nacKind && edgeTo(z)) return false;
         }
         return true;
     };
-    std::function<void(std::size_t)> bindEdge = [&](std::size_t i) {
-        if (i == c.patEdges.size()) {
-            if (!nacHolds()) return;
-            std::vector<std::uint32_t> m;
-            for (int n : nodes) m.push_back(static_cast<std::uint32_t>(n));
-            for (int e : edges) m.push_back(static_cast<std::uint32_t>(e));
-            out.insert(m);
-            return;
-        }
-        const auto& pe = c.patEdges[i];
-        for (int e = 0; e < static_cast<int>(c.hostEdges.size()); ++e) {
-            if (std::find(edges.begin(), edges.begin() + static_cast<long>(i), e) != edges.begin() + static_cast<long>(i)) continue;
-            if (!edgeFits(c.hostEdges[static_cast<std::size_t>(e)], pe.kind, nodes[static_cast<std::size_t>(pe.src)],
-                          nodes[static_cast<std::size_t>(pe.dst)]))
-                continue;
-            edges[i] = e;
-            bindEdge(i + 1);
-            edges[i] = -1;
-        }
-    };
-    std::function<void(int)> bindNode = [&](int p) {
-        if (p == pn) {
-            for (const auto& k : c.conds)
-                if (k.b < 0 ? !(value(k.a) > k.c) : !(value(k.a) < value(k.b))) return;
-            bindEdge(0);
-            return;
-        }
-        for (int h = 0; h < hn; ++h) {
-            if (std::find(nodes.begin(), nodes.begin() + p, h) != nodes.begin() + p) continue;
-            const int kind = c.patKind[static_cast<std::size_t>(p)];
-            if (kind >= 0 && c.hostKind[static_cast<std::size_t>(h)] != kind) continue;
-            nodes[static_cast<std::size_t>(p)] = h;
-            bindNode(p + 1);
-            nodes[static_cast<std::size_t>(p)] = -1;
-        }
-    };
-    bindNode(0);
-    return out;
+    return brute::matches({c.hostKind, c.hostEdges}, {c.patKind, c.patEdges}, options);
 }
 
 Case randomCase(std::mt19937& gen) {

@@ -18,9 +18,11 @@
 
 #include "interp/interpreted_rules.hpp"
 #include "interp/run_program.hpp"
+#include "brute_force_matcher.hpp"
 #include "test_helpers.hpp"
 
 using namespace g2d;
+namespace brute = g2d::test::brute;
 
 namespace {
 
@@ -407,9 +409,9 @@ TEST_CASE("incremental matches stay exact while a shared host node changes", "[d
 
 namespace {
 
-struct HostEdge {
-    int kind, src, dst;   // kind 0: E (directed), 1: U (undirected)
-};
+using brute::edgeText;
+using brute::kindName;
+using HostEdge = brute::Edge;   // kind 0: E (directed), 1: U (undirected)
 struct Case {
     std::vector<int> hostKind;              // 0: A, 1: B
     std::vector<HostEdge> hostEdges;
@@ -417,12 +419,6 @@ struct Case {
     std::vector<HostEdge> patEdges;
     bool deleteFirst = false;               // the daughter deletes p0 (typed)
 };
-
-const char* kindName(int k) { return k == 0 ? "A" : k == 1 ? "B" : "*"; }
-
-std::string edgeText(const std::string& a, int kind, const std::string& b) {
-    return a + (kind == 0 ? " -[E]-> " : " -[U]- ") + b;
-}
 
 std::string source(const Case& c) {
     std::ostringstream s;
@@ -442,64 +438,14 @@ std::string source(const Case& c) {
     return s.str();
 }
 
-bool edgeFits(const HostEdge& h, int kind, int src, int dst) {
-    if (h.kind != kind) return false;
-    if (kind == 0) return h.src == src && h.dst == dst;
-    return (h.src == src && h.dst == dst) || (h.src == dst && h.dst == src);
-}
-
 // Every match by brute force: nodes of the same kind distinct except two
 // wildcards, edges distinct, and a deleted node's host degree (a loop
 // once) equal to its pattern edges (a loop once).
 Matches bruteForce(const Case& c) {
-    Matches out;
-    const int hn = static_cast<int>(c.hostKind.size()), pn = static_cast<int>(c.patKind.size());
-    std::vector<int> nodes(static_cast<std::size_t>(pn), -1), edges(c.patEdges.size(), -1);
-    auto hostDegree = [&](int h) {
-        return std::count_if(c.hostEdges.begin(), c.hostEdges.end(), [&](const HostEdge& e) { return e.src == h || e.dst == h; });
-    };
-    auto patDegree = [&](int p) {
-        return std::count_if(c.patEdges.begin(), c.patEdges.end(), [&](const HostEdge& e) { return e.src == p || e.dst == p; });
-    };
-    std::function<void(std::size_t)> bindEdge = [&](std::size_t i) {
-        if (i == c.patEdges.size()) {
-            MatchIds m;
-            for (int n : nodes) m.push_back(static_cast<std::uint32_t>(n));
-            for (int e : edges) m.push_back(static_cast<std::uint32_t>(e));
-            out.insert(m);
-            return;
-        }
-        const auto& pe = c.patEdges[i];
-        for (int e = 0; e < static_cast<int>(c.hostEdges.size()); ++e) {
-            if (std::find(edges.begin(), edges.begin() + static_cast<long>(i), e) != edges.begin() + static_cast<long>(i)) continue;
-            if (!edgeFits(c.hostEdges[static_cast<std::size_t>(e)], pe.kind, nodes[static_cast<std::size_t>(pe.src)],
-                          nodes[static_cast<std::size_t>(pe.dst)]))
-                continue;
-            edges[i] = e;
-            bindEdge(i + 1);
-            edges[i] = -1;
-        }
-    };
-    std::function<void(int)> bindNode = [&](int p) {
-        if (p == pn) {
-            if (c.deleteFirst && hostDegree(nodes[0]) != patDegree(0)) return;
-            bindEdge(0);
-            return;
-        }
-        const int kind = c.patKind[static_cast<std::size_t>(p)];
-        for (int h = 0; h < hn; ++h) {
-            bool clash = false;
-            for (int q = 0; q < p; ++q)
-                if (nodes[static_cast<std::size_t>(q)] == h && (kind >= 0 || c.patKind[static_cast<std::size_t>(q)] >= 0)) clash = true;
-            if (clash) continue;
-            if (kind >= 0 && c.hostKind[static_cast<std::size_t>(h)] != kind) continue;
-            nodes[static_cast<std::size_t>(p)] = h;
-            bindNode(p + 1);
-            nodes[static_cast<std::size_t>(p)] = -1;
-        }
-    };
-    bindNode(0);
-    return out;
+    brute::Options options;
+    options.identifyWildcards = true;
+    options.deletedNode = c.deleteFirst ? 0 : -1;
+    return brute::matches({c.hostKind, c.hostEdges}, {c.patKind, c.patEdges}, options);
 }
 
 Case randomCase(std::mt19937& gen) {
