@@ -255,6 +255,17 @@ private:
     }
 
     ExprContext noElements() const { return ExprContext{}; }
+    // The elements of a match `m` of rule r, as a view (RuleSet::weigh, compoundValues).
+    static ExprContext matchElements(const ir::Rule& r) {
+        ExprContext ctx;
+        ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
+        ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
+        ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
+        ctx.nodeKind = [&r](int i) { return r.nodes[static_cast<std::size_t>(i)].kind; };
+        ctx.edgeKind = [&r](int i) { return r.edges[static_cast<std::size_t>(i)].kind; };
+        ctx.faceKind = [&r](int i) { return r.faces[static_cast<std::size_t>(i)].kind; };
+        return ctx;
+    }
 
     std::string emitStart() {
         const std::string in = "            ";
@@ -338,13 +349,7 @@ private:
             const lower::RuleFacts facts = lower::ruleFacts(prog_, rule);
             if (!facts.info.matchWeighted) continue;
             const std::string rs = str(static_cast<long long>(r));
-            ExprContext ctx;
-            ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
-            ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
-            ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
-            ctx.nodeKind = [&rule](int i) { return rule.nodes[static_cast<std::size_t>(i)].kind; };
-            ctx.edgeKind = [&rule](int i) { return rule.edges[static_cast<std::size_t>(i)].kind; };
-            ctx.faceKind = [&rule](int i) { return rule.faces[static_cast<std::size_t>(i)].kind; };
+            const ExprContext ctx = matchElements(rule);
             out += "    void weigh_" + rs + "(Match m, const Graph& g, std::vector<double>& w) {\n        (void)m;\n        (void)g;\n";
             int first = -1;
             for (std::size_t d = 0; d < facts.matchWeightExprs.size(); ++d) {
@@ -517,13 +522,7 @@ private:
         for (std::size_t c = 0; c < prog_.compounds.size(); ++c) {
             const ir::Rule& r = prog_.rules[static_cast<std::size_t>(prog_.compounds[c].matchRule)];
             if (r.lets.empty()) continue;
-            ExprContext ctx;
-            ctx.node = [](int i) { return "m.nodes[" + str(i) + "]"; };
-            ctx.edge = [](int i) { return "m.edges[" + str(i) + "]"; };
-            ctx.face = [](int i) { return "m.faces[" + str(i) + "]"; };
-            ctx.nodeKind = [&r](int i) { return r.nodes[static_cast<std::size_t>(i)].kind; };
-            ctx.edgeKind = [&r](int i) { return r.edges[static_cast<std::size_t>(i)].kind; };
-            ctx.faceKind = [&r](int i) { return r.faces[static_cast<std::size_t>(i)].kind; };
+            const ExprContext ctx = matchElements(r);
             const std::string in = "                ";
             std::string body, values;
             for (const auto& l : r.lets) {
