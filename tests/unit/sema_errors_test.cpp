@@ -183,7 +183,7 @@ TEST_CASE("wildcards are used only as the thesis allows", "[sema][wildcards]") {
         {"moving a wildcard", "rule R { match { x: P; w: *; x -[E]-> w; } produce { x; w at (0, 0); } }",
          "5:57: wildcard node `w` is left unchanged by the production; it cannot be moved or assigned"},
         {"reading a wildcard's attribute", "rule R { match { x: P; w: *; x -[E]-> w where w.w > 0; } produce { x; } }",
-         "5:49: wildcard node `w` matches any kind, so it has no attribute `w`; only pos, age, id, degree, in_degree, "
+         "5:49: wildcard node `w` matches any kind, so it has no attribute `w`; only pos, age, generation, id, degree, in_degree, "
          "out_degree, faces can be read"},
         {"isolated wildcard", "rule R { match { x: P; w: *; } produce { x; } }",
          "5:24: wildcard node `w` must be an endpoint of an edge or a corner of a face of the match"},
@@ -358,7 +358,7 @@ TEST_CASE("for loops over a face's sides and corners: located errors", "[sema][f
         {"rule R { match { f: F; } produce { for (u, v) in f.sides { m: P at u.pos; n: P at m.pos; } } }",
          "5:83: `m` is created by this loop; expressions can read only the matched elements and the loop's corners"},
         {"rule R { match { f: F; } produce { for (u, v) in f.sides { m: P at u.pos { w = u.w }; } } }",
-         "5:82: wildcard node `u` matches any kind, so it has no attribute `w`; only pos, age, id, degree, in_degree, out_degree, faces can be read"},
+         "5:82: wildcard node `u` matches any kind, so it has no attribute `w`; only pos, age, generation, id, degree, in_degree, out_degree, faces can be read"},
         {"rule R { match { f: F; } produce { for (u, v) in f.sides { e: u -[E]- v; } } }",
          "5:60: elements a loop creates cannot be named (but its nodes)"},
     };
