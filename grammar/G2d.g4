@@ -20,6 +20,7 @@ topDecl
     | sequenceDecl
     | compoundDecl
     | layoutDecl
+    | canvasDecl
     | ruleDecl
     ;
 
@@ -52,6 +53,12 @@ compoundDecl: 'compound' ID '{' matchBlock letStmt* sequenceDecl '}' ;
 // layout angles { canvas_min = (0, 0); canvas_max = (40, 30); }   new nodes
 // are placed by Merrell 2023's drawing step (edges keep their kinds' angles)
 layoutDecl  : 'layout' ID '{' styleProp* '}' ;
+
+// canvas (x0, y0) to (x1, y1);   the SVG's viewBox, exactly, in grammar units
+// (y up). `canvas` and `to` are not keywords (they may still name anything):
+// the predicate lets only the word `canvas` start this declaration, so that a
+// misspelt keyword is still reported as one; sema checks the `to`.
+canvasDecl  : {getCurrentToken()->getText() == "canvas"}? ID lower=expr to=ID upper=expr ';' ;
 
 typeRef     : ID ;
 

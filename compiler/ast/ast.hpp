@@ -220,10 +220,12 @@ struct SequenceDecl { std::vector<Ident> rules; Span span; };
 struct CompoundDecl { RuleDecl match; SequenceDecl body; Span span; };
 // `layout angles { canvas_min = …; … }`
 struct LayoutDecl { Ident name; std::vector<StyleProp> props; Span span; };
+// `canvas LOWER to UPPER;` (`canvas` and `to` are plain names: sema checks `to`)
+struct CanvasDecl { ExprPtr lower; Ident to; ExprPtr upper; Span span; };
 
 struct Decl {
     std::variant<SpaceDecl, ImportDecl, ParamDecl, ConstDecl, EnumDecl, FnDecl, KindDecl, AxiomDecl, LimitDecl,
-                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, CompoundDecl, LayoutDecl, RuleDecl> decl;
+                 PriorityDecl, DefsDecl, MergeDecl, SequenceDecl, CompoundDecl, LayoutDecl, CanvasDecl, RuleDecl> decl;
 };
 
 // One parsed file.

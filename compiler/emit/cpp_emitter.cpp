@@ -118,6 +118,7 @@ public:
         std::string functions = emitFunctions();
         std::string start = emitStart();
         std::string limits = emitLimits();
+        std::string canvas = emitCanvas();
         std::string rules;
         int firstDaughter = 0;
         for (std::size_t r = 0; r < prog_.rules.size(); ++r) {
@@ -143,7 +144,7 @@ public:
                "        if (!p || p->place < 0) return std::nullopt;\n"
                "        const Place& at = kPlaces[p->place];\n"
                "        return SourceLocation{at.file, at.line, at.col, at.endCol, at.lineText};\n    }\n\n";
-        out += start + limits + emitRuleSet() + emitSequenceAndCopies() + emitAttribute() + styles;
+        out += start + limits + canvas + emitRuleSet() + emitSequenceAndCopies() + emitAttribute() + styles;
         out += "private:\n" + functions + rules + emitMembers() + "};\n\n}  // namespace\n\n";
         out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "();\n";
         out += "std::unique_ptr<g2d::rt::GrammarRun> " + options_.factoryName + "() { return std::make_unique<Grammar>(); }\n";
@@ -339,6 +340,18 @@ private:
         }
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n        return out;\n    }\n\n";
         return out;
+    }
+
+    // The grammar's `canvas`, checked where its declaration stands (as the interpreter does).
+    std::string emitCanvas() {
+        std::string out = "    std::optional<ViewBox> canvas() override {\n";
+        if (!prog_.canvas) return out + "        return std::nullopt;\n    }\n\n";
+        out += "        try {\n";
+        const std::string lower = gen_.gen(prog_.canvas->lower, noElements(), out, "            ");
+        const std::string upper = gen_.gen(prog_.canvas->upper, noElements(), out, "            ");
+        out += "            loc_ = " + str(places_.add(prog_.canvas->span)) + ";\n";
+        out += "            return checkedCanvas(" + lower + ", " + upper + ");\n";
+        return out + "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
     }
 
     // Weights that read the match, per application (RuleSet::weigh).

@@ -1,5 +1,6 @@
 #include "interp/interpreted_run.hpp"
 
+#include "g2d/ops.hpp"
 #include "interp/drawing.hpp"
 
 namespace g2d::interp {
@@ -49,6 +50,19 @@ std::map<long long, long long> InterpretedRun::priorityLimits() {
     for (const auto& [prio, cfg] : prog_.priorities)
         if (cfg.limit) out[prio] = std::get<long long>(evaluate(*cfg.limit, f));
     return out;
+}
+
+std::optional<rt::ViewBox> InterpretedRun::canvas() {
+    if (!prog_.canvas) return std::nullopt;
+    const ir::Canvas& c = *prog_.canvas;
+    EvalFrame f = state_.frame(nullptr);
+    const rt::vec2 lower = std::get<rt::vec2>(evaluate(c.lower, f));
+    const rt::vec2 upper = std::get<rt::vec2>(evaluate(c.upper, f));
+    try {
+        return rt::checkedCanvas(lower, upper);
+    } catch (const rt::OpError& e) {
+        throw EvalError(c.span, e.what());
+    }
 }
 
 void InterpretedRun::drawItem(rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) {

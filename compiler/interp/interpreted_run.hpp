@@ -17,6 +17,7 @@ public:
     void start(const std::vector<rt::Value>& params, rt::Rng& rng) override;
     std::optional<long long> stepLimit() override;
     std::map<long long, long long> priorityLimits() override;
+    std::optional<rt::ViewBox> canvas() override;
     rt::Graph& graph() override { return graph_; }
     rt::RuleSet& rules() override { return *rules_; }
     void drawItem(rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) override;

@@ -419,6 +419,13 @@ struct Rule {
     Span span;
 };
 
+// `canvas (x0, y0) to (x1, y1);`: the SVG's viewBox, exactly (rt::ViewBox).
+// Its corners are constant vec2 expressions (parameters may set them).
+struct Canvas {
+    Expr lower, upper;
+    Span span;
+};
+
 struct PriorityConfig {
     std::optional<Expr> limit;
     bool parallel = false;
@@ -479,6 +486,7 @@ struct Program {
     std::optional<Expr> stepLimit;
     std::map<long long, PriorityConfig> priorities;
     std::vector<std::string> svgDefs;
+    std::optional<Canvas> canvas;
     std::vector<Rule> rules;
     // Every style property a per-element assignment sets, in order of first
     // use: the runtime numbers them in this order (rt::StyleStore).

@@ -22,6 +22,8 @@ const std::vector<std::string>& keywords() {
             for (char c : word) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
             if (identifier) out.push_back(word);
         }
+        // Declarations the parser knows by a plain name (G2d.g4: not reserved).
+        out.push_back("canvas");
         return out;
     }();
     return words;

@@ -166,6 +166,7 @@ public:
             for (auto* p : c->styleProp()) d.props.push_back(StyleProp{ident(p->ID()), expr(p->expr()), span(p)});
             return Decl{std::move(d)};
         }
+        if (auto* c = ctx->canvasDecl()) return Decl{CanvasDecl{expr(c->lower), ident(c->to), expr(c->upper), span(c)}};
         if (auto* c = ctx->compoundDecl()) {
             CompoundDecl d;
             d.span = span(c);

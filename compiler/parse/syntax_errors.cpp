@@ -60,11 +60,21 @@ std::string mistakeHint(antlr4::Parser* parser, antlr4::Token* offending, const 
                " …` (expressions read the value before the step)";
     }
     if (text == "," && expectedWords == "`)`") return "; a vector has two or three components: `(x, y)` or `(x, y, z)`";
+    // `to` is a plain name, so the parser asks for "a name" where it is missing.
+    if (expectedWords == "a name") {
+        antlr4::Token* first = nullptr;
+        for (int k = 1; k < 64; ++k) {
+            antlr4::Token* p = neighbour(parser, offending, -k);
+            if (!p || p->getText() == ";" || p->getText() == "}") break;
+            first = p;
+        }
+        if (first && first->getText() == "canvas") return "; a canvas is written `canvas (x0, y0) to (x1, y1);`";
+    }
     if (offending->getType() == G2dLexer::ID && (text == "if" || text == "else"))
         return "; a conditional expression is written `condition ? a : b`";
     if (offending->getType() == G2dLexer::ID && expectedWords.rfind("a declaration", 0) == 0)
         return suggest(text, {"node", "edge", "face", "axiom", "rule", "param", "const", "enum", "fn", "import", "limit",
-                              "priority", "defs", "space", "merge", "sequence"});
+                              "priority", "defs", "space", "merge", "sequence", "canvas"});
     return "";
 }
 
@@ -99,7 +109,7 @@ std::string describeExpected(const antlr4::misc::IntervalSet& expected,
     // At the top level, the parser expects any declaration.
     if (hasLiteral("'rule'") && hasLiteral("'axiom'") && hasLiteral("'node'"))
         return "a declaration (`node`, `edge`, `face`, `axiom`, `rule`, `param`, `const`, `enum`, `fn`, `import`, `limit`, "
-               "`priority`, `defs`, `space`, `merge` or `sequence`)";
+               "`priority`, `defs`, `space`, `merge`, `sequence` or `canvas`)";
     // The tokens that can start an expression are summarised in one word.
     // `merge` is a keyword that may also be a name (a parameter's): where a
     // name is expected, it is one of the names.

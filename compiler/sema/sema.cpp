@@ -1,5 +1,6 @@
 #include "sema/sema.hpp"
 
+#include "sema/canvas_checker.hpp"
 #include "sema/decl_checker.hpp"
 #include "sema/graph_checker.hpp"
 #include "sema/layout_checker.hpp"
@@ -80,6 +81,8 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
             checkMerge(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::LayoutDecl>) {
             checkLayoutDecl(g, ec, d);
+        } else if constexpr (std::is_same_v<T, ast::CanvasDecl>) {
+            checkCanvas(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::PriorityDecl>) {
             checkPriority(g, ec, d);
         } else if constexpr (std::is_same_v<T, ast::DefsDecl>) {

@@ -631,6 +631,7 @@ edge U undirected;
 edge D directed;
 limit 10;
 priority 1 limit 5 parallel;
+canvas (-1, 0) to (half, 2);
 axiom { p: P at vec2(0, 0); q: P at (1, 0); p -[U]- q; q <-[D]- p; }
 rule R priority -1 pick random ordered {
     match { x: P @ (0, 0); w: *; e: x -[U { }]- w where w.degree > 1 && !false || true; }
@@ -676,6 +677,10 @@ SNIPPET_EXPECT = [
     ("edge U undirected;", "undirected", 0, "keyword", True),
     ("edge U undirected;", "U", 0, "entity.name.type", True),
     ("priority 1 limit 5 parallel;", "parallel", 0, "keyword", True),
+    ("canvas (-1, 0) to", "canvas", 0, "keyword.declaration", True),
+    ("canvas (-1, 0) to", "to", 0, "keyword.declaration", True),
+    ("canvas (-1, 0) to", "half", 0, "keyword", False),
+    ("canvas (-1, 0) to", "2", 0, "constant.numeric.integer", True),
     ("axiom {", "vec2", 0, "support.function", True),
     ("axiom {", "vec2", 0, "support.type", False),
     ("axiom {", "<-[", 0, "keyword.operator.arrow", True),
@@ -870,6 +875,8 @@ VIM_EXPECT = [
     ("snippet", "fn pickone", "->", 0, "g2dReturnArrow"),
     ("snippet", "fn pickone", "Side", 0, "g2dReturnKind"),
     ("snippet", "fn pickone", "Right", 0, ""),
+    ("snippet", "canvas (-1, 0) to", "canvas", 0, "g2dDeclKeyword"),
+    ("snippet", "canvas (-1, 0) to", "to", 0, "g2dDeclKeyword"),
     ("snippet", "axiom {", "vec2", 0, "g2dBuiltin"),
     ("snippet", "axiom {", "<-[", 0, "g2dArrow"),
     ("snippet", "axiom {", "D", 0, "g2dArrowKind"),

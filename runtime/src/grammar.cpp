@@ -64,7 +64,9 @@ rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::str
 std::string Grammar::svg() {
     std::vector<rt::DrawItem> items = run_->drawItems();
     if (run_->jsonSchema().space3d) rt::projectDrawing(items, run_->graph(), rt::viewFrom(rt::kDefaultViewFrom));
-    return rt::writeSvg(std::move(items), run_->svgDefs());
+    rt::SvgOptions options;
+    options.viewBox = run_->canvas();   // as g2d run without --viewbox
+    return rt::writeSvg(std::move(items), run_->svgDefs(), options);
 }
 
 std::string Grammar::json() {

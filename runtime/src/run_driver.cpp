@@ -111,6 +111,7 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
     if (progress) *progress = RunProgress{true, 0};
     DerivationOptions options;
     const std::optional<long long> grammarLimit = grammar.stepLimit();
+    out.canvas = grammar.canvas();   // checked even when --viewbox overrides it, as the limit is
     options.steps = settings.steps ? settings.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
     options.perPriority = grammar.priorityLimits();
     options.maxElements = settings.maxElements;
@@ -159,6 +160,12 @@ std::string pngOptionError(const RunRequest& request) {
 
 int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     if (std::string err = pngOptionError(request); !err.empty()) return usageError(request, err);
+    std::optional<ViewBox> viewBox;   // over the grammar's canvas
+    if (request.viewBox) {
+        std::string why;
+        viewBox = parseViewBox(*request.viewBox, why);
+        if (!viewBox) return usageError(request, "--viewbox " + *request.viewBox + ": " + why);
+    }
     if (request.seeds) return runSeedBatch(request, grammar);   // many seeds: one runGrammar per seed, in workers
     std::vector<Value> params;
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
@@ -249,6 +256,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         SvgOptions svgOptions;
         svgOptions.compact = request.svgCompact;
         svgOptions.precision = request.precision;
+        svgOptions.viewBox = viewBox ? viewBox : derived.canvas;   // --viewbox > canvas > fitted
         // Images are named relative to the grammar; the SVG links them from
         // where it is written (a PNG is rendered with the grammar's folder as base).
         const bool png = svgFile && request.svgOut && isPngPath(*request.svgOut);

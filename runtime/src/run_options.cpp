@@ -46,6 +46,10 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
                  "Smaller SVG for huge drawings: each run of alike lines as one <path> (the same picture)");
     app.add_flag("--embed-images", r.embedImages,
                  "Put the images into the SVG (data: URIs) instead of linking them: a file that stands alone");
+    addOptional(app, "--viewbox", r.viewBox,
+                "The SVG's frame, exactly, in graph units with y up: lower left X0,Y0, upper right X1,Y1 "
+                "(over the grammar's `canvas` and the frame fitted to the drawing; outside is clipped)",
+                "X0,Y0,X1,Y1");
     addOptional(app, "--precision", r.precision, "Round SVG coordinates to N decimals (default: exact)", "N")
         ->check(CLI::Range(0, 15));
     CLI::Option* seed =

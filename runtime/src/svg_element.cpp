@@ -196,9 +196,15 @@ bool measureItem(const DrawItem& it, SvgFrame& frame) {
     return shape != Shape::Unknown;
 }
 
-void writeSvgStart(const SvgFrame& frame, const std::vector<std::string>& defs, TextOut& out) {
+void writeSvgStart(const SvgFrame& frame, const std::optional<ViewBox>& fixed, const std::vector<std::string>& defs,
+                   TextOut& out) {
     double x0 = 0, y0 = 0, w = 1, h = 1;
-    if (!frame.empty()) {
+    if (fixed) {   // as given: no margin, no rounding
+        x0 = fixed->x0;
+        y0 = fixed->y0;
+        w = fixed->x1 - fixed->x0;
+        h = fixed->y1 - fixed->y0;
+    } else if (!frame.empty()) {
         const double size = std::max(frame.x1 - frame.x0, frame.y1 - frame.y0);
         const double pad = frame.maxStroke + 0.02 * size;
         x0 = down(frame.x0 - pad);
@@ -214,7 +220,7 @@ void writeSvgStart(const SvgFrame& frame, const std::vector<std::string>& defs, 
     out.write("cm\" viewBox=\"");
     num(out, x0);
     out.write(' ');
-    num(out, -(y0 + h));
+    num(out, fixed ? 0.0 - fixed->y1 : -(y0 + h));   // the top (y flips); y1 itself, as y0 + h may round
     out.write(' ');
     num(out, w);
     out.write(' ');

@@ -53,7 +53,7 @@ std::string writeSvg(std::vector<DrawItem> items, const std::vector<std::string>
     SvgFrame frame;
     for (const auto& it : items) measureItem(it, frame);
     StringOut out;
-    writeSvgStart(frame, defs, out);
+    writeSvgStart(frame, options.viewBox, defs, out);
     SvgBody body(out, options);
     for (std::size_t i : order) body.item(items[i]);
     body.finish();
@@ -88,7 +88,7 @@ void writeSvg(const Graph& g, const ItemMaker& make, const std::vector<std::stri
         return true;
     });
     // Second pass: each item made again and written.
-    writeSvgStart(frame, defs, out);
+    writeSvgStart(frame, options.viewBox, defs, out);
     SvgBody body(out, options);
     order.visit(g, [&](ElemClass cls, std::uint32_t id) {
         if (!written[classIndex(cls)][id]) return;

@@ -155,6 +155,8 @@ items = c.request("textDocument/completion", {"textDocument": doc, "position": {
 labels = {i["label"] for i in items}
 check({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} <= labels,
       "completion in a daughter: missing %s" % ({"Point", "Seg", "levels", "s", "old", "v", "perp_left", "rotate", "produce", "where"} - labels))
+# `canvas` is a declaration the lexer does not reserve: offered all the same.
+check(any(i["label"] == "canvas" and i["detail"] == "keyword" for i in items), "completion offers `canvas`")
 
 # A face of any corner count (`f: Room;`, written like a node): hover and completion know it is a face.
 face_path = os.path.join(work, "faces.g2d")

@@ -24,6 +24,9 @@ syn keyword g2dDeclKeyword import param const limit priority defs axiom style sp
 syn keyword g2dDeclKeyword node edge face enum nextgroup=g2dTypeName skipwhite skipnl
 syn keyword g2dDeclKeyword fn rule nextgroup=g2dFuncName skipwhite skipnl
 syn match g2dTypeName "\h\w*" contained
+" `canvas LOWER to UPPER;`: neither word is reserved, so only a line that starts so
+syn match g2dDeclKeyword "^\s*\zscanvas\>\ze[^;:={}]*\<to\>"
+syn match g2dDeclKeyword "\(^\s*canvas\>[^;:={}]*\)\@<=\<to\>"
 syn match g2dFuncName "\h\w*" contained
 " rules
 syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with

@@ -13,6 +13,7 @@
 #include "g2d/json_writer.hpp"
 #include "g2d/param_parse.hpp"
 #include "g2d/svg_writer.hpp"
+#include "g2d/view_box.hpp"
 
 namespace g2d::rt {
 
@@ -42,6 +43,9 @@ public:
     // The grammar's global limit (nullopt: it sets none) and per-priority limits.
     virtual std::optional<long long> stepLimit() = 0;
     virtual std::map<long long, long long> priorityLimits() = 0;
+    // The grammar's `canvas` (nullopt: it sets none), evaluated after start()
+    // and checked (checkedCanvas: a bad one throws, located).
+    virtual std::optional<ViewBox> canvas() = 0;
     virtual Graph& graph() = 0;
     virtual RuleSet& rules() = 0;
 

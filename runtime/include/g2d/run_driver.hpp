@@ -1,6 +1,6 @@
 #pragma once
 // The run procedure shared by `g2d run` and compiled grammars:
-// RUN [-o OUT.svg|OUT.png [--dpi N | --width PX]] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--embed-images] [--seed N] [-D NAME=VALUE]…
+// RUN [-o OUT.svg|OUT.png [--dpi N | --width PX]] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--embed-images] [--viewbox X0,Y0,X1,Y1] [--seed N] [-D NAME=VALUE]…
 //     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial] [--quiet]
 //     [--seeds A..B [-j N] [--summary FILE]]
 #include <cstdint>
@@ -30,6 +30,7 @@ struct RunRequest {
     bool svgCompact = false;              // runs of alike lines as one <path> each (svg_writer.hpp)
     std::optional<int> precision;         // SVG coordinates rounded to this many decimals
     bool embedImages = false;             // images as data: URIs, not links (image_links.hpp)
+    std::optional<std::string> viewBox;   // "X0,Y0,X1,Y1": the SVG's viewBox, over the grammar's canvas (view_box.hpp)
     std::optional<double> dpi;            // PNG output (-o x.png): pixels per inch (default 96; the SVG's size is in cm)
     std::optional<int> width;             // PNG output: this many pixels wide instead (not with dpi)
     std::uint64_t seed = 1;
@@ -75,6 +76,7 @@ struct RunProgress {
 struct DerivedRun {
     DerivationResult result;
     bool hitDefaultLimit = false;    // stopped by kDefaultStepLimit: the grammar sets no limit
+    std::optional<ViewBox> canvas;   // the grammar's `canvas`, evaluated with the parameters
 };
 
 // Starts the grammar with `params` and derives it with a generator seeded by

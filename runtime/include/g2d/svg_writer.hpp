@@ -30,6 +30,7 @@
 
 #include "g2d/graph.hpp"
 #include "g2d/text_out.hpp"
+#include "g2d/view_box.hpp"
 
 namespace g2d::rt {
 
@@ -48,6 +49,8 @@ struct SvgOptions {
     std::optional<int> precision;   // decimals of coordinates (none: the shortest exact text)
     // What an image's href becomes in the file (image_links.hpp); none: as written.
     std::function<std::string(const std::string&)> imageHref;
+    // The viewBox, exactly (view_box.hpp); none: fitted to the drawing, with a margin.
+    std::optional<ViewBox> viewBox;
 };
 
 // Makes the item of live element `id` of class `cls` in `out` (its storage reused).

@@ -27,9 +27,10 @@ struct SvgFrame {
 // or a tag for another class of element).
 bool measureItem(const DrawItem& it, SvgFrame& frame);
 
-// The document's start (the XML declaration, <svg> with the fitted viewBox,
-// the defs) and end.
-void writeSvgStart(const SvgFrame& frame, const std::vector<std::string>& defs, TextOut& out);
+// The document's start (the XML declaration, <svg> with the viewBox: `fixed`,
+// or else fitted to the frame; the defs) and end.
+void writeSvgStart(const SvgFrame& frame, const std::optional<ViewBox>& fixed, const std::vector<std::string>& defs,
+                   TextOut& out);
 void writeSvgEnd(TextOut& out);
 
 // Writes items in drawing order. In the compact form, runs of consecutive
