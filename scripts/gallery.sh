@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Renders every example to docs/gallery/*.png (several seeds for the random
 # ones; 3D grammars through their --view page in headless Chromium) and
-# writes docs/gallery.md with steps, elements and time per run.
-# Needs the release build (scripts/build.sh) and rsvg-convert (librsvg2-bin,
-# installed here if missing).
+# writes docs/gallery.md with steps, elements and time per run, after the
+# thesis's examples beside the tool's grammars (scripts/gallery_thesis.sh).
+# Needs the release build (scripts/build.sh; or G2D=path/to/g2d) and
+# rsvg-convert (librsvg2-bin, installed here if missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-g2d="$root/build/release/bin/g2d"
+g2d="${G2D:-$root/build/release/bin/g2d}"
 [ -x "$g2d" ] || bash scripts/build.sh release
 if ! command -v rsvg-convert >/dev/null; then
   sudo_cmd=(); [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
@@ -58,7 +59,12 @@ examples=(
   echo "their \`--view\` page in headless Chromium) by \`scripts/gallery.sh\`. Random"
   echo "examples are shown for several seeds. *Elements* = nodes + edges at the end;"
   echo "*time* is the derivation alone (\`--stats\` seconds) of the interpreter, on"
-  echo "the 2-core machine this page was made on."
+  echo "the 2-core machine this page was made on. First, the thesis's examples"
+  echo "beside the original tool's own grammars."
+  echo
+  echo "<!-- thesis:begin -->"
+  G2D="$g2d" bash scripts/gallery_thesis.sh
+  echo "<!-- thesis:end -->"
   echo
 } > "$work/gallery.md"
 
@@ -83,7 +89,8 @@ for entry in "${examples[@]}"; do
         --host-resolver-rules="MAP * ~NOTFOUND" --hide-scrollbars --window-size=480,360 --virtual-time-budget=5000 \
         --screenshot="$out/$name-$seed.png" "file://$work/$name-$seed.html" >/dev/null 2>&1
     else
-      stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" -o "$work/$name-$seed.svg" --stats)
+      # Images embedded: librsvg reads no file outside the SVG's folder.
+      stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" -o "$work/$name-$seed.svg" --embed-images --stats)
       rsvg-convert -w 360 -b white "$work/$name-$seed.svg" -o "$out/$name-$seed.png"
     fi
     read -r steps nodes edges seconds stopped < <(python3 -c 'import json,sys; d=json.loads(sys.argv[1]); print(d["steps"], d["nodes"], d["edges"], d["seconds"], d["stopped"])' "$stats")

@@ -367,6 +367,7 @@ private:
         for (const auto& [key, n] : g_.maxDerivations)
             if (key == "all") { all = n; hasAll = true; }
         if (hasAll && all > 0) out_ << "limit " << all << ";\n";
+        else if (hasAll) out_ << "// The tool's `all: 0`: no global limit (g2d's default stops a runaway).\n";
         else out_ << "limit 500;   // the original tool's default global limit\n";
         for (const auto& [key, n] : g_.maxDerivations)
             if (key != "all" && n > 0) out_ << "priority " << key << " limit " << n << ";\n";
@@ -389,6 +390,8 @@ private:
             return "svg_" + prop + " >= 0 ? svg_" + prop + " : " + fallback;
         };
         out_ << "    style {\n";
+        // The tool drew its graph's parts in the order they were made (docs/import.md).
+        out_ << "        z = age;   // the tool's drawing order: creation order\n";
         if (!kind.tagVaries) {
             out_ << "        tag = " << plain << ";\n";
             if (node) out_ << "        r = " << readOr("r", "0.4") << ";\n";

@@ -38,6 +38,9 @@ done
 [ "$(stats tree.g2d --steps 200)" = "200 803 step_limit" ] || fail "tree 200: $(stats tree.g2d --steps 200)"
 # The façade: 116 steps; 468 elements in the tool less its 18 dangling edges.
 [ "$(stats facade.g2d)" = "116 450 terminal" ] || fail "facade: $(stats facade.g2d)"
+# The painted tree's `all: 0` is no global limit: 150 growth steps, then
+# painting until all is painted (as examples/tree_painting.g2d).
+[ "$(stats tree_painting.g2d)" = "602 1959 terminal" ] || fail "tree_painting: $(stats tree_painting.g2d)"
 
 # Random ones: n leaves take 1 + 3n steps and leave 2 + 2n elements; the square
 # pattern takes 22 + 16(2d + 2 + l) steps for 112 + 48l + 64d elements.

@@ -55,7 +55,7 @@ t = json.load(open(os.path.join(work, "koch.trace.json")))
 check(t["format"] == "g2d-trace-1" and t["grammar"] == "koch_snowflake.g2d" and t["seed"] == 1 and t["stopped"] == "terminal",
       "header: %s" % {k: t[k] for k in ("format", "grammar", "seed", "stopped")})
 check([k["name"] for k in t["kinds"]] == ["Point", "Seg"] and t["kinds"][1]["edge"] and t["kinds"][1]["directed"], "kinds: %s" % t["kinds"])
-check(t["kinds"][0]["style"]["tag"] == "none" and t["kinds"][1]["style"]["stroke_width"] == 0.05, "kind styles: %s" % t["kinds"])
+check(t["kinds"][0]["style"]["tag"] == "none" and t["kinds"][1]["style"]["stroke_width"] == 0.1, "kind styles: %s" % t["kinds"])
 check(t["axiom"] == {"nodes": [[0, 0, -4, 0], [1, 0, 0, 6.93], [2, 0, 4, 0]], "edges": [[0, 1, 0, 1], [1, 1, 1, 2], [2, 1, 2, 0]]},
       "axiom: %s" % t["axiom"])
 check(len(t["steps"]) == 3 and [s["step"] for s in t["steps"]] == [1, 2, 3], "three steps")
