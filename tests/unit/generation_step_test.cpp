@@ -9,7 +9,6 @@
 #include <sstream>
 #include <string>
 
-#include "interp/run_program.hpp"
 #include "test_helpers.hpp"
 
 using namespace g2d;
@@ -27,12 +26,8 @@ std::string arrowhead(const std::string& mode) {
     return s.replace(at, generation.size(), "\n" + mode);
 }
 
-interp::RunResult run(const std::string& source, long long steps, std::uint64_t seed = 1) {
-    const auto compiled = test::compile(source);
-    INFO(test::firstError(compiled));
-    REQUIRE(compiled.program);
-    auto params = interp::defaultParams(*compiled.program);
-    return interp::runProgram(*compiled.program, params, seed, test::verified(steps));
+test::SnippetRun run(const std::string& source, long long steps, std::uint64_t seed = 1) {
+    return test::runSnippet(source, seed, test::verified(steps));
 }
 
 }  // namespace

@@ -7,18 +7,14 @@
 #include <iterator>
 #include <string>
 
-#include "interp/run_program.hpp"
 #include "test_helpers.hpp"
 
 using namespace g2d;
 
 namespace {
 
-interp::RunResult run(const std::string& source, std::uint64_t seed, std::optional<long long> steps = {}) {
-    const CompileResult compiled = test::compile(source);
-    INFO(test::firstError(compiled));
-    REQUIRE(compiled.program);
-    return interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), seed, test::verified(steps));
+test::SnippetRun run(const std::string& source, std::uint64_t seed, std::optional<long long> steps = {}) {
+    return test::runSnippet(source, seed, test::verified(steps));
 }
 
 rt::NodeId nodeAt(const rt::Graph& g, rt::vec2 p) {

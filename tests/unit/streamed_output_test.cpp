@@ -28,15 +28,10 @@ std::string readFile(const std::string& path) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-interp::RunResult runExample(const std::string& name, long long steps) {
-    static std::vector<CompileResult> kept;   // the program outlives the run
-    kept.push_back(test::compile(readFile(std::string(G2D_SOURCE_DIR) + "/examples/" + name)));
-    INFO(name << ": " << test::firstError(kept.back()));
-    REQUIRE(kept.back().program);
-    const ir::Program& prog = *kept.back().program;
+test::SnippetRun runExample(const std::string& name, long long steps) {
     rt::RunSettings settings;
     settings.steps = steps;
-    return interp::runProgram(prog, interp::defaultParams(prog), 1, settings);
+    return test::runSnippet(readFile(std::string(G2D_SOURCE_DIR) + "/examples/" + name), 1, settings);
 }
 
 // The SVG as the driver streams it, and as written from all items at once.

@@ -1,6 +1,6 @@
 #include "test_helpers.hpp"
 
-#include "interp/run_program.hpp"
+#include <stdexcept>
 
 namespace g2d::test {
 
@@ -44,6 +44,15 @@ rt::RunSettings verified(std::optional<long long> steps) {
     s.steps = steps;
     s.verifyMatches = true;
     return s;
+}
+
+SnippetRun runSnippet(const std::string& text, std::uint64_t seed, const rt::RunSettings& settings) {
+    SnippetRun run;
+    run.compiled = std::make_unique<CompileResult>(compile(text));
+    if (!run.compiled->program) throw std::runtime_error("does not compile: " + firstError(*run.compiled));
+    const ir::Program& prog = *run.compiled->program;
+    static_cast<interp::RunResult&>(run) = interp::runProgram(prog, interp::defaultParams(prog), seed, settings);
+    return run;
 }
 
 }  // namespace g2d::test

@@ -1,5 +1,6 @@
 #pragma once
 // Compiling snippets in tests, and reading their diagnostics.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include "g2d/rng.hpp"
 #include "g2d/run_driver.hpp"
 #include "interp/program_state.hpp"
+#include "interp/run_program.hpp"
 
 namespace g2d::test {
 
@@ -35,5 +37,15 @@ InterpreterStart startInterpreter(const ir::Program& prog, rt::Rng& rng);
 // Run settings for tests: after every step, every rule's kept matches are
 // checked against a full search (a std::logic_error on a difference).
 rt::RunSettings verified(std::optional<long long> steps = {});
+
+// An interpreted run of a snippet together with its program: the run points
+// into the program, so the program is a base listed first (destroyed last).
+struct KeptProgram {
+    std::unique_ptr<CompileResult> compiled;
+};
+struct SnippetRun : KeptProgram, interp::RunResult {};
+// Compiles `text` (throws with its first error) and runs it with default
+// parameters.
+SnippetRun runSnippet(const std::string& text, std::uint64_t seed, const rt::RunSettings& settings);
 
 }  // namespace g2d::test
