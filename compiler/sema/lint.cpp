@@ -1,5 +1,7 @@
 #include "sema/lint.hpp"
 
+#include "sema/deleted_node_lint.hpp"
+
 #include <set>
 
 namespace g2d::sema {
@@ -55,6 +57,7 @@ void lintProgram(Globals& g) {
     for (std::size_t i = 0; i < p.consts.size(); ++i)
         if (!g.constUsed[i] && g.constFile[i] == g.mainFile)
             g.diags.warning(p.consts[i].span, "constant `" + p.consts[i].name + "` is never used");
+    warnForgottenNodes(g);
 }
 
 }  // namespace g2d::sema

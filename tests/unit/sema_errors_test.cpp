@@ -218,6 +218,38 @@ TEST_CASE("warnings: unused bindings and rules that can never match", "[sema][wa
                    });
 }
 
+TEST_CASE("warnings: a matched node every daughter deletes, although another rule keeps its kind", "[sema][warnings]") {
+    // The slip: `d;` forgotten, so the door goes, and with it its wall.
+    const std::string kinds = "node Room;\nnode Door { lit: bool = false; }\nnode Lamp;\nedge Wall;\nedge Cable;\n"
+                              "axiom { r: Room; d: Door at (1, 0); r -[Wall]- d; }\n"
+                              "rule Paint { match { d: Door where d.lit; } produce { d { lit = false }; } }\n";
+    auto warnings = [&](const std::string& light) {
+        auto r = compile(kinds + "rule Light { match { r: Room; d: Door where !d.lit; r -[Wall]- d; } " + light + " }\n");
+        REQUIRE(r.program.has_value());
+        std::vector<std::string> out;
+        for (const auto& line : g2d::test::diagnosticLines(r))
+            if (line.find("deleted by every daughter") != std::string::npos) out.push_back(line);
+        return out;
+    };
+    CHECK(warnings("produce { r; l: Lamp at d.pos + (0, 0.5); }") ==
+          std::vector<std::string>{"8:31: warning: `d` is deleted by every daughter; write `d;` to keep it"});
+    CHECK(warnings("produce { r; l: Lamp at d.pos; } produce weight 2 { r; m: Lamp at d.pos + (0, 1); }").size() == 1);
+    // Not when the daughter keeps it, names it as an edge's end, or one daughter keeps it.
+    CHECK(warnings("produce { r; d { lit = true }; l: Lamp at d.pos; }").empty());
+    CHECK(warnings("produce { r; l: Lamp at d.pos; d -[Cable]- l; }").empty());
+    CHECK(warnings("produce { r; l: Lamp at d.pos; } produce { r; d; }").empty());
+    // Not when the deletion is plainly meant: the daughter makes nothing, puts a
+    // door or a wall in its place, or takes its neighbour too.
+    CHECK(warnings("produce { r; }").empty());
+    CHECK(warnings("produce { r; e: Door at d.pos + (1, 0); }").empty());
+    CHECK(warnings("produce { r; l: Lamp at d.pos; r -[Wall]- l; }").empty());
+    CHECK(warnings("produce { l: Lamp at d.pos; }").empty());
+    // Nor when no other rule keeps a door.
+    auto alone = compile("node Room;\nnode Door;\nnode Lamp;\nedge Wall;\naxiom { r: Room; d: Door at (1, 0); r -[Wall]- d; }\n"
+                         "rule Light { match { r: Room; d: Door; r -[Wall]- d; } produce { r; l: Lamp at d.pos; } }\n");
+    CHECK(g2d::test::diagnosticLines(alone).empty());
+}
+
 TEST_CASE("declaration order: parameters, constants and functions see only earlier ones", "[sema][order]") {
     checkCases({
         {"constant used before its declaration", "const w = h * 2;\nconst h = 3;", "5:11: `h` is used before its declaration"},
