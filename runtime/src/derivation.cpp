@@ -156,6 +156,8 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
         if (everything) g.forgetChanges();
         try {
             sets.update(g, newEdgesFrom, newNodesFrom, everything, r, daughter);
+            if (!everything) g.forgetChanges();
+            if (limits.verifyMatches) sets.verify(g, step);   // a full search: conditions run again
         } catch (const DeadlinePassed&) {
             // While finding matches after the step: the step itself is complete.
             result.steps = step;
@@ -163,8 +165,6 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             if (observer) observer(step, g);
             throw timeLimit(limits, step);
         }
-        if (!everything) g.forgetChanges();
-        if (limits.verifyMatches) sets.verify(g, step);
     };
     auto stepDone = [&](long long step) {
         result.steps = step;

@@ -163,6 +163,21 @@ PY
 expect_code 1 "$g2d" run expo.g2d --timeout 2 -o expo.svg --json expo.json --keep-partial
 grep -q '^expo.g2d: error: the derivation ran past the time limit of 2 s at step 4 (raise --timeout)$' err.txt || fail "timeout inside a step: $(cat err.txt)"
 grep -q '"steps": 3, "stopped": "time_limit"' expo.json || fail "timeout inside a step, partial output: $(head -c 300 expo.json)"
+# ... and inside --verify-matches' full search, which runs every condition again:
+# Slow's (2^20 calls, never true) costs nothing in a step's update, as Tick
+# changes only q, but all of the search; the bound trips there.
+python3 - <<'PY'
+with open("verify.g2d", "w") as f:
+    f.write("node P { n: int = 0; }\nnode Q { n: int = 0; }\nfn f0(x: int) -> int = x;\n")
+    for i in range(1, 21):
+        f.write(f"fn f{i}(x: int) -> int = f{i-1}(x) + f{i-1}(x) - x;\n")
+    f.write("axiom { a: P at (0, 0); b: P at (1, 0); q: Q at (2, 0); }\n")
+    f.write("rule Slow { match { p: P where f20(p.n) != p.n; } produce { p; } }\n")
+    f.write("rule Tick { match { q: Q; } produce { q { n = q.n + 1 }; } }\n")
+PY
+expect_code 1 "$g2d" run verify.g2d --steps 1000000 --timeout 0.6 --verify-matches -o verify.svg
+grep -q '^verify.g2d: error: the derivation ran past the time limit of 0.6 s at step [0-9]* (raise --timeout)$' err.txt \
+  || fail "timeout inside --verify-matches: $(cat err.txt)"
 
 # --max-elements: the runaway guard, with the step it tripped at; 0 is a usage error
 expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=6 --max-elements 1000 -o guard.svg
