@@ -29,4 +29,9 @@ expect_code 0 bash "$diff_test" --expect-error "$g2d" div.g2d 1
 expect_code 1 bash "$diff_test" --expect-error "$g2d" fine.g2d 1
 grep -q 'expected a reported error (exit 1), the interpreter exited 0' out.txt || fail "--expect-error on success: $(cat out.txt)"
 expect_code 0 bash "$diff_test" --verify-matches "$g2d" fine.g2d 1 2
+# A warning in the generated code (here one -Wall leaves off) fails the build.
+printf '#!/bin/sh\nexec c++ -Wpadded "$@"\n' > padded-c++ && chmod +x padded-c++
+CXX="$PWD/padded-c++" expect_code 1 bash "$diff_test" "$g2d" fine.g2d 1
+grep -q 'FAIL: g2d build (warnings in the generated code are errors here)' out.txt && grep -q 'Werror=padded' out.txt \
+  || fail "a warning in the generated code passed: $(cat out.txt)"
 finish
