@@ -148,15 +148,15 @@ for bad in 0 -1 nan abc; do
   expect_code 2 "$g2d" run spin.g2d --timeout "$bad" --no-svg
 done
 expect_code 0 "$g2d" run spin.g2d --steps 100 --timeout 60 --no-svg
+# A chain of N functions, each calling the previous twice: f_N costs 2^N calls.
+chain() {
+  echo "fn f0(x: int) -> int = x;"
+  for i in $(seq 1 "$1"); do echo "fn f$i(x: int) -> int = f$((i - 1))(x) + f$((i - 1))(x) - x;"; done
+}
 # ... even inside a step that never finishes (2^59 function calls from step 4 on)
-python3 - <<'PY'
-with open("expo.g2d", "w") as f:
-    f.write("node P { n: int = 0; }\nfn f0(x: int) -> int = x;\n")
-    for i in range(1, 60):
-        f.write(f"fn f{i}(x: int) -> int = f{i-1}(x) + f{i-1}(x) - f{i-1}(x);\n")
-    f.write("axiom { a: P at (0, 0); }\nlimit 20;\n")
-    f.write("rule R { match { p: P; } produce { p at (p.n > 2 ? f59(1) : 0, 0) { n = p.n + 1 }; } }\n")
-PY
+{ echo "node P { n: int = 0; }"; chain 59
+  echo "axiom { a: P at (0, 0); }"; echo "limit 20;"
+  echo "rule R { match { p: P; } produce { p at (p.n > 2 ? f59(1) : 0, 0) { n = p.n + 1 }; } }"; } > expo.g2d
 # (2 s, not less: steps 1-3 take microseconds, but a loaded machine may
 # leave the process unscheduled for a while, and the bound must still trip
 # inside step 4.)
@@ -166,15 +166,10 @@ grep -q '"steps": 3, "stopped": "time_limit"' expo.json || fail "timeout inside 
 # ... and inside --verify-matches' full search, which runs every condition again:
 # Slow's (2^20 calls, never true) costs nothing in a step's update, as Tick
 # changes only q, but all of the search; the bound trips there.
-python3 - <<'PY'
-with open("verify.g2d", "w") as f:
-    f.write("node P { n: int = 0; }\nnode Q { n: int = 0; }\nfn f0(x: int) -> int = x;\n")
-    for i in range(1, 21):
-        f.write(f"fn f{i}(x: int) -> int = f{i-1}(x) + f{i-1}(x) - x;\n")
-    f.write("axiom { a: P at (0, 0); b: P at (1, 0); q: Q at (2, 0); }\n")
-    f.write("rule Slow { match { p: P where f20(p.n) != p.n; } produce { p; } }\n")
-    f.write("rule Tick { match { q: Q; } produce { q { n = q.n + 1 }; } }\n")
-PY
+{ echo "node P { n: int = 0; }"; echo "node Q { n: int = 0; }"; chain 20
+  echo "axiom { a: P at (0, 0); b: P at (1, 0); q: Q at (2, 0); }"
+  echo "rule Slow { match { p: P where f20(p.n) != p.n; } produce { p; } }"
+  echo "rule Tick { match { q: Q; } produce { q { n = q.n + 1 }; } }"; } > verify.g2d
 expect_code 1 "$g2d" run verify.g2d --steps 1000000 --timeout 0.6 --verify-matches -o verify.svg
 grep -q '^verify.g2d: error: the derivation ran past the time limit of 0.6 s at step [0-9]* (raise --timeout)$' err.txt \
   || fail "timeout inside --verify-matches: $(cat err.txt)"
