@@ -123,6 +123,7 @@ ruleOption
     | 'ordered'                     # ruleOrdered
     | 'parallel'                    # ruleParallel
     | word=('merge' | 'intersect' | 'dpo')  # ruleWordOption
+    | 'weight' expr                 # ruleWeight     // chosen among a priority's matching rules by weight
     ;
 matchBlock  : 'match' '{' matchStmt* '}' ;
 matchStmt

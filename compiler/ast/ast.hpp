@@ -157,12 +157,13 @@ struct RuleItem {
 };
 
 struct RuleOption {
-    enum class Kind { Priority, Pick, Ordered, Parallel, Word } kind;
+    enum class Kind { Priority, Pick, Ordered, Parallel, Word, Weight } kind;
     long long priority = 0;
     bool priorityOverflow = false;
     Ident pick;
     Ident pickMeasure;              // `pick oldest generation`: empty when not written
     Ident word;                     // Word: an option named by a plain name (`merge`)
+    ExprPtr weight;                 // Weight: `weight W`
     Span span;
 };
 

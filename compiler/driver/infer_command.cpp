@@ -14,6 +14,10 @@
 namespace g2d {
 
 int runInfer(const InferCommandOptions& options) {
+    if (options.sizeGiven && options.size < 1) {
+        std::fprintf(stderr, "g2d infer: error: --size %d: the target number of vertices must be at least 1\n", options.size);
+        return 1;
+    }
     std::ifstream in(options.example, std::ios::binary);
     if (!in) {
         std::fprintf(stderr, "g2d infer: error: cannot read %s\n", options.example.c_str());
@@ -34,6 +38,8 @@ int runInfer(const InferCommandOptions& options) {
             infer::WriterOptions writer;
             writer.source = options.example;
             writer.iterations = options.iterations;
+            writer.targetVertices = options.size;
+            writer.connected = options.connected;
             rt::AtomicFile file(options.output);
             file.commit(infer::writeGrammar(ex, grammar, writer));
         }

@@ -10,7 +10,10 @@ struct InferCommandOptions {
     std::string example;          // the author's JSON format
     bool stats = false;           // print the numbers as one JSON object instead of the grammar
     std::string output;           // -o: write the grammar as .g2d here (whole or not at all)
-    int iterations = 1000;        // the written grammar's default step limit (Algorithm 3's N)
+    int iterations = 0;           // the written grammar's default step limit (Algorithm 3's N; 0: from the size)
+    int size = 0;                 // --size: the written grammar's target number of vertices (0: 20 × the example's)
+    bool sizeGiven = false;
+    bool connected = false;       // --connected (Appendix A)
     infer::LabelOptions labels;
     infer::InferOptions limits;
 };

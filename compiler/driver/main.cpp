@@ -68,8 +68,15 @@ int runCommandLine(int argc, char** argv) {
     infer->add_option("EXAMPLE", inferOptions.example, "The example: the JSON of Merrell's app, or an SVG drawing (.svg)")->required();
     infer->add_flag("--stats", inferOptions.stats, "Print the numbers (labels, primitives, graphs, rules, time) as JSON");
     infer->add_option("-o,--output", inferOptions.output, "Write the grammar as .g2d source to this file");
-    infer->add_option("--iterations", inferOptions.iterations, "The written grammar's step limit (the parameter `iterations`)")
+    infer->add_option("--iterations", inferOptions.iterations,
+                      "The written grammar's step limit (the parameter `iterations`; default 10 × the size, at least 1000)")
         ->check(CLI::Range(1, 1000000000));
+    auto* sizeOption = infer->add_option("--size", inferOptions.size,
+                                         "The written grammar's target number of vertices (the parameter `target_vertices`; "
+                                         "default 20 × the example's)");
+    infer->add_flag("--connected", inferOptions.connected,
+                    "The output is one connected piece: one starter, once, and no rule that could split it (Appendix A)");
+    infer->add_flag("--no-loops", inferOptions.limits.noLoops, "No loop gluing: rules make no new cycles (Appendix A)");
     infer->add_option("--angle-tolerance", inferOptions.labels.angleTolerance, "Degrees within which edge directions are one")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 45.0));
@@ -122,7 +129,10 @@ int runCommandLine(int argc, char** argv) {
         return g2d::runBuild(buildOptions);
     }
     if (show->parsed()) return g2d::runShow(showOptions);
-    if (infer->parsed()) return g2d::runInfer(inferOptions);
+    if (infer->parsed()) {
+        inferOptions.sizeGiven = sizeOption->count() > 0;
+        return g2d::runInfer(inferOptions);
+    }
     if (lsp->parsed()) {
         std::ios::sync_with_stdio(false);
         return g2d::lsp::runLanguageServer(std::cin, std::cout);

@@ -25,7 +25,7 @@ std::string daughterShapesText(const std::vector<rt::DaughterShape>& shapes, con
         for (const auto& e : s.newEdges)
             edges += (edges.empty() ? "" : ", ") + std::string("{") + num(e.src) + ", " + num(e.dst) + ", " + num(e.kind) + "}";
         out += in + "info.shapes.push_back(DaughterShape{" + ints(s.deletedNodes) + ", " + ints(s.deletedEdges) + ", " + num(s.newNodes) +
-               ", {" + edges + "}});\n";
+               ", {" + edges + "}, " + ints(s.newNodeKinds) + "});\n";
     }
     return out;
 }

@@ -66,8 +66,10 @@ std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
     out += in + "info.weights = {";
     for (std::size_t d = 0; d < i.weights.size(); ++d) out += (d ? ", " : "") + cppLiteral(ir::Value{i.weights[d]}, ir::kFloatType);
     out += "};\n";
+    if (i.choiceWeight != 1) out += in + "info.choiceWeight = " + cppLiteral(ir::Value{i.choiceWeight}, ir::kFloatType) + ";\n";
     out += in + "info.radius = " + str(i.radius) + ";\n";
     out += in + "info.nearKinds = " + vectorLiteral(i.nearKinds) + ";\n";
+    if (!i.joinKinds.empty()) out += in + "info.joinKinds = " + vectorLiteral(i.joinKinds) + ";\n";
     out += in + "info.readsIncidence = " + listOf(i.readsIncidence, incidenceName) + ";\n";
     out += in + "info.readDirections = " + listOf(i.readDirections, byteText) + ";\n";
     out += in + "info.newHostAddsNothing = " + listOf(i.newHostAddsNothing, byteText) + ";\n";
@@ -312,6 +314,11 @@ private:
                 out += in + "    try {\n" + in + "        info.weights[" + str(static_cast<long long>(d)) + "] = checkedWeight(" + w + ");\n" + in +
                        "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
             }
+            if (const ir::Expr* expr = facts.choiceWeightExpr) {
+                const std::string w = gen_.gen(*expr, noElements(), out, in + "    ");
+                out += in + "    try {\n" + in + "        info.choiceWeight = checkedWeight(" + w + ");\n" + in +
+                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
+            }
             if (const ir::Expr* expr = facts.mergeExpr) {
                 const std::string t = gen_.gen(*expr, noElements(), out, in + "    ");
                 out += in + "    try {\n" + in + "        info.mergeTolerance = checkedMergeTolerance(" + t + ");\n" + in +
@@ -352,6 +359,22 @@ private:
         out += "            loc_ = " + str(places_.add(prog_.canvas->span)) + ";\n";
         out += "            return checkedCanvas(" + lower + ", " + upper + ");\n";
         return out + "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
+    }
+
+    // `layout angles`' cost and temperature (RuleSet::drawingCost), checked as the interpreter does.
+    std::string emitDrawingCost() {
+        if (!prog_.angleLayout || !prog_.angleLayout->cost) return "";
+        auto checked = [&](const ir::Expr& expr, const std::string& check) {
+            std::string out = "        try {\n";
+            const std::string v = gen_.gen(expr, noElements(), out, "            ");
+            return out + "            return " + check + "(" + v + ");\n        } catch (const OpError& e) {\n            throw PlacedError(" +
+                   str(places_.add(expr.span)) + ", e.what());\n        }\n    }\n\n";
+        };
+        std::string out = "    bool hasDrawingCost() const override { return true; }\n\n";
+        out += "    double drawingCost(const KindCounts& counts) override {\n        (void)counts;\n";
+        out += checked(*prog_.angleLayout->cost, "checkedCost");
+        if (const auto& t = prog_.angleLayout->temperature) out += "    double drawingTemperature() override {\n" + checked(*t, "checkedTemperature");
+        return out;
     }
 
     // Weights that read the match, per application (RuleSet::weigh).
@@ -454,6 +477,7 @@ private:
         out += "            default: break;\n            }\n            applicationDone(G);\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
         out += "    void discard() override { clearPending(); }\n\n";
         out += angleLayoutOverride(prog_);
+        out += emitDrawingCost();
         out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";
         out += emitPrefetchData(perRule);
         return out;

@@ -152,6 +152,7 @@ std::string ExprGen::gen(const ir::Expr& e, const ExprContext& ctx, std::string&
     case ExprOp::CompoundValue:
         return bind("std::get<" + cppType(e.type) + ">(rt::compoundValue(" + ctx.graph + ", " + std::to_string(e.index) + ", " +
                     std::to_string(e.slot) + "))");
+    case ExprOp::Count: return "counts[" + std::to_string(e.index) + "]";
     case ExprOp::VecX: return bind("(" + gen(e.args[0], ctx, out, in) + ").x");
     case ExprOp::VecY: return bind("(" + gen(e.args[0], ctx, out, in) + ").y");
     case ExprOp::VecZ: return bind("(" + gen(e.args[0], ctx, out, in) + ").z");

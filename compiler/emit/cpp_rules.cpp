@@ -145,11 +145,17 @@ private:
                            const std::string centre = gen_.gen(*o.centre, matchContext(nac), out, next);
                            const std::string radius = gen_.gen(*o.radius, matchContext(nac), out, next);
                            const std::string at = prog_.space3d ? centre : "vec3(" + centre + ", 0.0)";
-                           out += next + "const auto " + l + " = nearQueries().nodesNear(g, " + ri_ + ", " + str(o.near) + ", n[" + str(o.key) + "], " +
-                                  str(o.kind) + ", " + at + ", static_cast<double>(" + radius + "));\n";
+                           if (o.join)   // copied: a later piece's join asks again while this one is walked
+                               out += next + "const std::vector<NodeId> " + l + " = asVector(nearQueries().nodesAround(g, " + str(o.kind) + ", " + at +
+                                      ", static_cast<double>(" + radius + ")));\n";
+                           else
+                               out += next + "const auto " + l + " = nearQueries().nodesNear(g, " + ri_ + ", " + str(o.near) + ", n[" + str(o.key) + "], " +
+                                      str(o.kind) + ", " + at + ", static_cast<double>(" + radius + "));\n";
                            out += next + "for (std::size_t " + c + " = 0; " + c + " < " + l + ".size(); ++" + c + ") {\n";
                            out += body + nd + " = " + l + "[" + c + "];\n";
-                           out += body + "if (true" + notUsed(nd, o.distinctNodes, "n") + ") {\n";
+                           const std::string kinds = o.edgeKinds ? " && (g.edgeKindsAt(" + nd + ") & " + str(static_cast<long long>(o.edgeKinds)) + "u) == " +
+                                                                       str(static_cast<long long>(o.edgeKinds)) + "u" : "";
+                           out += body + "if (true" + notUsed(nd, o.distinctNodes, "n") + kinds + ") {\n";
                            steps(ops, i + 1, nac, onComplete, out, body + "    ");
                            out += body + "}\n" + next + "}\n" + in + "}\n";
                        },
@@ -254,7 +260,8 @@ private:
         out += "        NodeId n[" + arrays() + "];\n";
         out += "        std::fill(std::begin(n), std::end(n), kNoId);\n        std::fill(std::begin(e), std::end(e), kNoId);\n"
                "        std::fill(std::begin(f), std::end(f), kNoId);\n";
-        if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n        (void)g;\n";
+        if (anchor >= 0) out += "        n[" + str(anchor) + "] = host;\n";
+        out += "        (void)g;\n";   // an empty pattern reads nothing
         if (anchor >= 0)
             if (const std::string kinds = hasEdgeKinds(match_.anchorEdgeKinds[static_cast<std::size_t>(anchor)], "host"); !kinds.empty())
                 out += "        if (!(" + kinds + ")) return;\n";
@@ -297,6 +304,7 @@ private:
         out += "};\n";
         out += "    void repair_" + ri_ + "(const Graph& g, const RepairArea& area, MatchSet& set) {\n";
         out += "        NodeId n[" + arrays() + "];\n";
+        if (r_.nodes.empty()) out += "        (void)n;\n        (void)e;\n        (void)f;\n        (void)set;\n";   // an empty pattern
         std::string nacTest = "true";
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) nacTest += " && !nac_" + ri_ + "_" + str(static_cast<int>(k)) + "(g, n, e, f)";
         out += "        for (const NodeId h : area.nodes) {\n            if (!g.nodeAlive(h)) continue;\n";

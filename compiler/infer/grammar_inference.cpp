@@ -209,7 +209,7 @@ void Inference::grow(int g) {
                 if (halves[s] == want) insert(branchGlue(ex_, graph, i, static_cast<int>(p), static_cast<int>(s)));
         }
     }
-    for (int i = 0; i < m; ++i) {
+    for (int i = 0; i < m && !options_.noLoops; ++i) {
         HierarchyGraph child;
         if (loopGlue(ex_, graph, i, child)) insert(std::move(child));
     }

@@ -16,6 +16,7 @@ struct InferOptions {
     int maxGeneration = 20;      // §5.7: graphs of more glues are left over (the author's app: 20)
     int maxHalfEdges = 16;       // §5.7: graphs with more open half-edges are left over
     int maxGraphs = 3000;        // the hierarchy stops growing here; what is queued is left over
+    bool noLoops = false;        // Appendix A: no loop glue, so rules make no new cycles
 };
 
 enum class GraphState {

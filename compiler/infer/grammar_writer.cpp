@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "infer/rule_pieces.hpp"
 #include "infer/rule_sides.hpp"
 
 namespace g2d::infer {
@@ -52,25 +53,16 @@ std::string areaColour(const LabelledExample& ex, int a) {
     return own.empty() ? kPalette[static_cast<std::size_t>(a) % std::size(kPalette)] : own;
 }
 
-// The canvas: the example's own extents centred on its drawing, else its bounding box grown by half on each side.
-std::pair<Point, Point> canvas(const ExampleShape& s) {
+// The example's drawing: its bounding box, each side at least `least` (a straight line still has room across it).
+std::pair<Point, Point> drawingBox(const ExampleShape& s, double least) {
     Point lo{1e300, 1e300}, hi{-1e300, -1e300};
     for (const Point& p : s.vertices) {
         lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
         hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     }
-    const Point mid{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2};
-    double w = hi.x - lo.x, h = hi.y - lo.y;
-    if (s.canvasWidth > 0 && s.canvasHeight > 0) {
-        w = s.canvasWidth;
-        h = s.canvasHeight;
-    } else {
-        // A flat example (one straight line) still needs room across it.
-        const double w0 = w > 0 ? w : h, h0 = h > 0 ? h : w;
-        w = 2 * w0;
-        h = 2 * h0;
-    }
-    return {{mid.x - w / 2, mid.y - h / 2}, {mid.x + w / 2, mid.y + h / 2}};
+    if (s.vertices.empty()) return {{0, 0}, {least, least}};
+    const Point grow{std::max(0.0, least - (hi.x - lo.x)) / 2, std::max(0.0, least - (hi.y - lo.y)) / 2};
+    return {{lo.x - grow.x, lo.y - grow.y}, {hi.x + grow.x, hi.y + grow.y}};
 }
 
 // The example's median edge length: strokes a twentieth of it are visible and do not crowd.
@@ -122,19 +114,66 @@ std::string block(const std::string& keyword, const std::vector<std::string>& li
 }
 
 // match: `from` with the interface as wildcards; produce: the interface kept, then `to`.
-std::string dpoRule(const std::string& name, const RuleSide& from, char fromPrefix, const RuleSide& to, char toPrefix, int interface) {
+// Its pieces, when `from` has several, must lie near each other (rule_pieces.hpp).
+std::string dpoRule(const LabelledExample& ex, const std::string& name, const std::string& options, const RuleSide& from, char fromPrefix,
+                    const RuleSide& to, char toPrefix, int interface) {
     std::vector<std::string> match, produce, edges;
     sideStatements(from, fromPrefix, true, match, edges);
     for (int k = 0; k < interface; ++k) match.push_back("x" + std::to_string(k) + ": *;");
     match.insert(match.end(), edges.begin(), edges.end());
+    for (std::string& c : nearnessConditions(ex, from, to, interface)) match.push_back(std::move(c));
     for (int k = 0; k < interface; ++k) produce.push_back("x" + std::to_string(k) + ";");
     edges.clear();
     sideStatements(to, toPrefix, false, produce, edges);
     produce.insert(produce.end(), edges.begin(), edges.end());
-    return "rule " + name + " dpo {\n" + block("match", match) + block("produce", produce) + "}\n";
+    return "rule " + name + " dpo" + (options.empty() ? "" : " " + options) + " {\n" + block("match", match) + block("produce", produce) + "}\n";
+}
+
+// Merrell's proposal mix (the author's app: starter 1, whole-piece removal 1,
+// rule 10): here per rule, so a new piece is proposed at most 1 in 12 times.
+constexpr double kStarterWeight = 1, kRuleWeight = 10;
+
+// The example's vertices per unit area of its drawing.
+double exampleDensity(const ExampleShape& s) {
+    const double least = typicalLength(s);
+    const auto [lo, hi] = drawingBox(s, least);
+    return std::max<double>(1, static_cast<double>(s.vertices.size())) / ((hi.x - lo.x) * (hi.y - lo.y));
+}
+
+// The output's size, canvas and cost (Merrell §6.3 and Appendix A; docs/infer.md "Size and space").
+std::string sizeAndSpace(const LabelledExample& ex, const WriterOptions& options) {
+    const int target = options.targetVertices > 0 ? options.targetVertices : defaultTargetVertices(ex);
+    const int iterations = options.iterations > 0 ? options.iterations : defaultIterations(target);
+    const double least = typicalLength(ex.shape);
+    const auto [lo, hi] = drawingBox(ex.shape, least);
+    const double aspect = std::clamp((hi.x - lo.x) / (hi.y - lo.y), 2.0 / 3, 3.0 / 2);
+    std::string out;
+    out += "\n// Size and space (-D NAME=VALUE): the cost steers the walk toward target_vertices;\n"
+           "// the canvas holds that many at the example's density (" + num(exampleDensity(ex.shape)) + " vertices per unit area)\n"
+           "// with room to spare, unless canvas_width and canvas_height say otherwise.\n";
+    out += "param target_vertices: int = " + std::to_string(target) + ";   // the example has " + std::to_string(ex.shape.vertices.size()) + "\n";
+    out += "param canvas_width: float = 0;    // 0: sized for target_vertices\n";
+    out += "param canvas_height: float = 0;\n";
+    out += "param iterations: int = " + std::to_string(iterations) + ";\n";
+    out += "const room: float = 2.25 * target_vertices / " + num(exampleDensity(ex.shape)) + ";\n";
+    out += "const width: float = canvas_width > 0 ? canvas_width : sqrt(room * " + num(aspect) + ");\n";
+    out += "const height: float = canvas_height > 0 ? canvas_height : sqrt(room / " + num(aspect) + ");\n";
+    out += "canvas (0, 0) to (width, height);\n";
+    out += "limit iterations;\n";
+    out += "\n// The drawing step (Merrell §6.2) and Metropolis acceptance (§6.3): a proposal that\n"
+           "// raises the cost by d is accepted with probability exp(-d / temperature). Add terms\n"
+           "// to steer the output, e.g. `- 0.5 * count(P0)` for more vertices of primitive P0.\n";
+    out += "layout angles {\n    cost = 0.5 * abs(nodes - target_vertices);\n    temperature = 1;\n}\n";
+    return out;
 }
 
 }  // namespace
+
+int defaultTargetVertices(const LabelledExample& ex) {
+    return 20 * std::max<int>(1, static_cast<int>(ex.shape.vertices.size()));
+}
+
+int defaultIterations(int targetVertices) { return std::clamp(10 * targetVertices, 1000, 1000000000); }
 
 std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& grammar, const WriterOptions& options) {
     std::string out;
@@ -144,11 +183,8 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
     out += "// Inferred by `g2d infer` from " + source + " (Merrell 2023, example-based graph grammars).\n";
     out += "// " + std::to_string(ex.labels.size()) + " edge labels, " + std::to_string(ex.primitives.size()) + " primitives, " +
            std::to_string(static_cast<int>(grammar.rules.size()) - starters) + " rules, " + std::to_string(starters) +
-           " starters. Run: g2d run <file> -o out.svg --seed 1\n";
-    const auto [lo, hi] = canvas(ex.shape);
-    out += "layout angles {\n    canvas_min = (" + num(lo.x) + ", " + num(lo.y) + ");\n    canvas_max = (" + num(hi.x) + ", " + num(hi.y) +
-           ");\n}\n";
-    out += "param iterations: int = " + std::to_string(options.iterations) + ";\nlimit iterations;\n";
+           " starters" + (options.connected ? " (--connected)" : "") + ". Run: g2d run <file> -o out.svg --seed 1\n";
+    out += sizeAndSpace(ex, options);
 
     std::set<int> areas;   // the areas some edge label has on a side
     for (const EdgeLabel& l : ex.labels)
@@ -176,20 +212,33 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
         out += "node P" + std::to_string(k) + " { style { tag = \"none\"; } }   // " + starComment(ex, ex.primitives[k]) + "\n";
 
     out += "\naxiom { }\n";
+    if (options.connected && starters > 0) out += "priority -1 limit 1;   // one starter, once\n";
     for (std::size_t r = 0; r < grammar.rules.size(); ++r) {
         const InferredRule& rule = grammar.rules[r];
         const RuleSides sides = ruleSides(ex, grammar, rule);
         const std::string i = std::to_string(r);
         if (rule.starter()) {   // L is complete: no interface, and R is nothing
+            if (options.connected) {
+                out += "\n// Starter " + i + ": a complete graph from nothing, once (the output is one piece).\n";
+                out += dpoRule(ex, "Start" + i, "priority -1", RuleSide{}, 'w', sides.left, 'v', 0);
+                continue;
+            }
             out += "\n// Starter " + i + ": a complete graph from nothing, and back to nothing.\n";
-            out += dpoRule("Start" + i, RuleSide{}, 'w', sides.left, 'v', 0);
-            out += dpoRule("Stop" + i, sides.left, 'v', RuleSide{}, 'w', 0);
+            out += dpoRule(ex, "Start" + i, "weight " + num(kStarterWeight), RuleSide{}, 'w', sides.left, 'v', 0);
+            out += dpoRule(ex, "Stop" + i, "weight " + num(kStarterWeight), sides.left, 'v', RuleSide{}, 'w', 0);
             continue;
         }
-        out += "\n// Rule " + i + ": " +
-               boundaryString(ex, grammar.hierarchy[static_cast<std::size_t>(rule.left)].graph.boundary) + "\n";
-        out += dpoRule("Rule" + i, sides.left, 'v', sides.right, 'w', sides.interface);
-        out += dpoRule("Rule" + i + "_back", sides.right, 'w', sides.left, 'v', sides.interface);
+        const std::string boundary = boundaryString(ex, grammar.hierarchy[static_cast<std::size_t>(rule.left)].graph.boundary);
+        const std::string weight = "weight " + num(kRuleWeight);
+        out += "\n// Rule " + i + ": " + boundary + "\n";
+        if (options.connected && pieceCount(sides.right, sides.interface) > 1) {
+            // Forward it could split the output; back, it joins pieces (or closes a loop).
+            out += "// (--connected: only back, which joins R's pieces into L; forward could split the output)\n";
+            out += dpoRule(ex, "Rule" + i + "_back", weight, sides.right, 'w', sides.left, 'v', sides.interface);
+            continue;
+        }
+        out += dpoRule(ex, "Rule" + i, weight, sides.left, 'v', sides.right, 'w', sides.interface);
+        out += dpoRule(ex, "Rule" + i + "_back", weight, sides.right, 'w', sides.left, 'v', sides.interface);
     }
     return out;
 }

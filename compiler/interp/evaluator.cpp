@@ -82,6 +82,7 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
     case ExprOp::SelfFact: return fact(e, f, f.selfClass, f.self);
     case ExprOp::Placed: return *(*f.placed)[e.index];
     case ExprOp::CompoundValue: return rt::compoundValue(*f.graph, e.index, e.slot);
+    case ExprOp::Count: return (*f.counts)[e.index];
     case ExprOp::VecX:
     case ExprOp::VecY:
     case ExprOp::VecZ: {

@@ -7,6 +7,7 @@
 #include "g2d/graph.hpp"
 #include "g2d/rng.hpp"
 #include "g2d/value.hpp"
+#include "g2d/drawing_cost.hpp"
 #include "ir/ir.hpp"
 
 namespace g2d::interp {
@@ -32,6 +33,7 @@ struct EvalFrame {
     const std::vector<std::optional<rt::Value>>* placed = nullptr;  // automatic positions, by daughter node
     ir::ElemClass selfClass = ir::ElemClass::Node;    // kind style expressions
     std::uint32_t self = rt::kNoId;
+    const rt::KindCounts* counts = nullptr;           // `layout angles`' cost
 };
 
 rt::Value evaluate(const ir::Expr& e, EvalFrame& f);

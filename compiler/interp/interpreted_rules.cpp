@@ -31,6 +31,14 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
                 throw EvalError(facts.weightExprs[d]->span, e.what());
             }
         }
+        if (facts.choiceWeightExpr) {
+            EvalFrame f = st.frame(nullptr);
+            try {
+                info.choiceWeight = rt::checkedWeight(std::get<double>(evaluate(*facts.choiceWeightExpr, f)));
+            } catch (const rt::OpError& e) {
+                throw EvalError(facts.choiceWeightExpr->span, e.what());
+            }
+        }
         if (facts.mergeExpr) {
             EvalFrame f = st.frame(nullptr);
             try {
@@ -51,6 +59,32 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     boundNodes_.assign(maxNodes, kNoId);
     boundEdges_.assign(maxEdges, kNoId);
     boundFaces_.assign(maxFaces, kNoId);
+}
+
+// ---- `layout angles`' cost ---------------------------------------------------------
+
+bool InterpretedRules::hasDrawingCost() const { return st_.prog->angleLayout && st_.prog->angleLayout->cost; }
+
+double InterpretedRules::drawingCost(const rt::KindCounts& counts) {
+    const ir::Expr& cost = *st_.prog->angleLayout->cost;
+    EvalFrame f = st_.frame(nullptr);
+    f.counts = &counts;
+    try {
+        return rt::checkedCost(std::get<double>(evaluate(cost, f)));
+    } catch (const rt::OpError& e) {
+        throw EvalError(cost.span, e.what());
+    }
+}
+
+double InterpretedRules::drawingTemperature() {
+    const auto& layout = st_.prog->angleLayout;
+    if (!layout || !layout->temperature) return 1;
+    EvalFrame f = st_.frame(nullptr);
+    try {
+        return rt::checkedTemperature(std::get<double>(evaluate(*layout->temperature, f)));
+    } catch (const rt::OpError& e) {
+        throw EvalError(layout->temperature->span, e.what());
+    }
 }
 
 // ---- matching: the lowered match lists, operation by operation -------------------
@@ -109,10 +143,13 @@ bool InterpretedRules::search(const rt::Graph& g, const lower::MatchList& ops, s
                 const double radius = std::holds_alternative<long long>(r) ? static_cast<double>(std::get<long long>(r)) : std::get<double>(r);
                 const rt::vec3 at = std::holds_alternative<rt::vec3>(centre) ? std::get<rt::vec3>(centre)
                                                                              : rt::vec3(std::get<rt::vec2>(centre), 0.0);
-                const auto near =
-                    nearQueries().nodesNear(g, currentIndex_, o.near, boundNodes_[o.key], o.kind, at, radius);
+                // A join's list is copied: a later piece's join asks again while this one is walked.
+                const auto found = o.join ? nearQueries().nodesAround(g, o.kind, at, radius)
+                                          : nearQueries().nodesNear(g, currentIndex_, o.near, boundNodes_[o.key], o.kind, at, radius);
+                const std::vector<NodeId> copy = o.join ? std::vector<NodeId>(found.begin(), found.end()) : std::vector<NodeId>{};
+                const std::span<const NodeId> near = o.join ? std::span<const NodeId>(copy) : found;
                 for (const NodeId h : near) {
-                    if (usedNode(o.distinctNodes, h)) continue;
+                    if (usedNode(o.distinctNodes, h) || (g.edgeKindsAt(h) & o.edgeKinds) != o.edgeKinds) continue;
                     boundNodes_[o.node] = h;
                     const bool stop = search(g, ops, i + 1, onComplete);
                     boundNodes_[o.node] = kNoId;

@@ -32,6 +32,9 @@ public:
     void commit(rt::Graph& g, long long step) override;
     void discard() override { pendingCount_ = 0; }
     const rt::AngleLayoutSpec* angleLayout() const override { return angleLayout_ ? &*angleLayout_ : nullptr; }
+    bool hasDrawingCost() const override;
+    double drawingCost(const rt::KindCounts& counts) override;
+    double drawingTemperature() override;
 
     // The rule being applied when an EvalError escapes (for messages).
     const ir::Rule* currentRule() const { return current_; }

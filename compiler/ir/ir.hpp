@@ -97,6 +97,7 @@ enum class ExprOp {
     Cond,        // args: cond, then, else
     Call,        // builtin, args
     CallFn,      // index into Program::functions, args
+    Count,       // `layout angles`' cost: index = a kind's live elements, or rt::KindCounts::kNodes / kEdges
 };
 
 // The runtime's operator for Add … Ne (rt::binaryOp); nullopt for the others.
@@ -150,8 +151,14 @@ struct EdgeLayout {
 
 // `layout angles { … }`: new nodes are placed by the drawing step.
 struct AngleLayout {
+    bool ownCanvas = true;             // false: the grammar's `canvas` is the drawing's (read at run time)
     double canvasMin[2] = {0, 0}, canvasMax[2] = {0, 0};
     int proposals = 5, samples = 10;   // Merrell's I and J
+    // Metropolis acceptance (rt::metropolisAccepts): the cost reads
+    // parameters, constants and counts (ExprOp::Count); the temperature
+    // parameters and constants. No cost: every drawn proposal is accepted.
+    std::optional<Expr> cost;
+    std::optional<Expr> temperature;
     Span span;
 };
 
@@ -408,6 +415,11 @@ struct Rule {
     bool intersect = false;            // `intersect`: an application that would intersect the model is undone
     bool dpo = false;                  // `dpo`: no dangling edges; kept wildcards may share a host node
     bool parallel = false;
+    // `weight W`: among the rules of its priority that match, a rule is
+    // chosen with probability ∝ W. `weight` is known when compiled;
+    // otherwise weightExpr reads parameters.
+    double weight = 1;
+    std::optional<Expr> weightExpr;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
     std::vector<PatternFace> faces;

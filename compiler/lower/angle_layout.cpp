@@ -25,8 +25,10 @@ rt::DaughterShape daughterShape(const ir::Rule& rule, std::size_t d) {
     out.deletedEdges = dg.deletedEdges;
     // Daughter node -> pattern node (kept) or -1 - k (the k-th new one, in creation order).
     std::vector<int> end(dg.nodes.size());
-    for (std::size_t i = 0; i < dg.nodes.size(); ++i)
+    for (std::size_t i = 0; i < dg.nodes.size(); ++i) {
         end[i] = dg.nodes[i].motherNode >= 0 ? dg.nodes[i].motherNode : -1 - out.newNodes++;
+        if (dg.nodes[i].motherNode < 0) out.newNodeKinds.push_back(dg.nodes[i].kind);
+    }
     for (const auto& e : dg.edges) {
         if (e.motherEdge >= 0) {
             const auto& me = rule.edges[static_cast<std::size_t>(e.motherEdge)];

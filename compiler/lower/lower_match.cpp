@@ -111,7 +111,14 @@ private:
                 break;
             }
             case PlanStep::Op::ScanNodes:
-                if (near_ && s.node == near_->node)
+                if (const auto join = nac || r_.ordered ? std::nullopt : nearJoin(r_.conditions, r_.nodes[static_cast<std::size_t>(s.node)], s.node, [&](int n) {
+                        return std::find(boundNodes.begin(), boundNodes.end(), n) != boundNodes.end();
+                    })) {
+                    ScanNear o{s.node, join->kind, -1, join->key, join->centre, join->radius, distinct(s.node, boundNodes, nac)};
+                    o.join = true;
+                    o.edgeKinds = edgeKindsNeeded(s.node);
+                    out.push_back(std::move(o));
+                } else if (near_ && s.node == near_->node)
                     out.push_back(ScanNear{s.node, near_->kind, nearIndex_, near_->key, near_->centre, near_->radius, distinct(s.node, boundNodes, nac)});
                 else
                     out.push_back(ScanNodes{s.node, nodeKind(s.node, nac), nac ? 0u : edgeKindsNeeded(s.node), distinct(s.node, boundNodes, nac),

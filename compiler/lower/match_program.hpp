@@ -76,14 +76,19 @@ struct MatchFace {
 // spatial index (rt::NearQueries::nodesNear), by id; the conditions that
 // follow test the distance exactly. `near` numbers the rule's such negative
 // conditions (rt::RuleInfo::nearKinds).
+// With `join` (lower::nearJoin), the node of a pattern piece near bound
+// ones: no disk is recorded (a match holds both ends, so repair finds it
+// from either), and `kind` may be -1 (any node).
 struct ScanNear {
     int node;
     int kind;
-    int near;
+    int near;                       // the negative condition's index among the rule's near ones (-1 for a join)
     int key;                        // the node slot the disk is recorded under
     const ir::Expr* centre;
     const ir::Expr* radius;
     std::vector<int> distinctNodes; // earlier node slots
+    bool join = false;
+    std::uint32_t edgeKinds = 0;    // a join's: rt::Graph::edgeKindBit mask the host must have had (0: no test)
 };
 struct Filter {
     const ir::Expr* condition;

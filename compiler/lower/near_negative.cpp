@@ -1,5 +1,6 @@
 #include "lower/near_negative.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace g2d::lower {
@@ -66,7 +67,33 @@ std::optional<NearNegative> distanceTest(const ir::Expr& e, int node) {
     return NearNegative{node, -1, centre, radius, inclusive, 0};
 }
 
+// The nodes `e` reads; an edge or face read counts as node -1 (never bound here).
+void nodesRead(const ir::Expr& e, std::vector<int>& out) {
+    if (e.op == ir::ExprOp::Attr || e.op == ir::ExprOp::Fact) out.push_back(e.elem.cls == ir::ElemClass::Node ? e.elem.index : -1);
+    for (const auto& a : e.args) nodesRead(a, out);
+}
+
 }  // namespace
+
+std::optional<NearNegative> nearJoin(const std::vector<ir::Condition>& conditions, const ir::PatternNode& node, int index,
+                                     const std::function<bool(int)>& bound) {
+    for (const auto& c : conditions) {
+        std::vector<const ir::Expr*> parts;
+        conjuncts(c.expr, parts);
+        for (const ir::Expr* p : parts) {
+            auto test = distanceTest(*p, index);
+            if (!test) continue;
+            std::vector<int> read;
+            nodesRead(*test->centre, read);
+            nodesRead(*test->radius, read);
+            if (read.empty() || !std::all_of(read.begin(), read.end(), [&](int n) { return n >= 0 && bound(n); })) continue;
+            test->kind = node.kind;
+            test->key = read.front();
+            return test;
+        }
+    }
+    return std::nullopt;
+}
 
 std::optional<NearNegative> nearNegative(const ir::Rule& rule, std::size_t index) {
     if (rule.nodes.empty() || index >= rule.nacs.size()) return std::nullopt;

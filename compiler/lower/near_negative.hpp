@@ -6,7 +6,9 @@
 // revisits a match only when a K node comes, goes or moves inside its disk,
 // instead of searching the rule again after every step.
 #include <cstddef>
+#include <functional>
 #include <optional>
+#include <vector>
 
 #include "ir/ir.hpp"
 
@@ -30,5 +32,15 @@ struct NearNegative {
 // no condition reads o's edges or faces (degree, faces), which the index
 // does not follow.
 std::optional<NearNegative> nearNegative(const ir::Rule& rule, std::size_t nac);
+
+// A pattern node joined to others by distance: a conjunct of one of the
+// rule's conditions is `distance(node.pos, P) < R` (or `<=`, either argument
+// order, or `R > distance(…)`) with P and R reading only nodes `bound`
+// accepts (and at least one). Such a node of a piece not yet bound is
+// searched near P (lower::ScanNear, `join`), not among every node of its
+// kind: two pieces of a pattern then cost what their neighbourhoods do.
+// `kind` is the node's (-1: a wildcard), `key` the first bound node P or R reads.
+std::optional<NearNegative> nearJoin(const std::vector<ir::Condition>& conditions, const ir::PatternNode& node, int index,
+                                     const std::function<bool(int)>& bound);
 
 }  // namespace g2d::lower

@@ -27,9 +27,18 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
         out.matchWeightExprs.push_back(d.weightReadsMatch ? expr : nullptr);
         info.matchWeighted = info.matchWeighted || d.weightReadsMatch;
     }
+    info.choiceWeight = r.weightExpr && r.weightExpr->op != ir::ExprOp::Literal ? 0.0 : r.weight;
+    if (r.weightExpr && r.weightExpr->op != ir::ExprOp::Literal) out.choiceWeightExpr = &*r.weightExpr;
     info.radius = repairRadius(r);
     for (std::size_t k = 0; k < r.nacs.size(); ++k)
         if (const auto near = nearNegative(r, k)) info.nearKinds.push_back(near->kind);
+    if (!r.ordered)
+        for (std::size_t i = 0; i < r.nodes.size(); ++i) {
+            const int node = static_cast<int>(i);
+            const auto join = nearJoin(r.conditions, r.nodes[i], node, [&](int n) { return n != node; });
+            if (join && std::find(info.joinKinds.begin(), info.joinKinds.end(), join->kind) == info.joinKinds.end())
+                info.joinKinds.push_back(join->kind);
+        }
     info.readsIncidence = incidenceReaders(r);
     std::vector<bool> directed;
     for (const auto& k : prog.kinds) directed.push_back(k.directed);

@@ -14,6 +14,7 @@ struct RuleFacts {
     rt::RuleInfo info;                          // weights: the known ones, 0 where weightExprs has one
     std::vector<const ir::Expr*> weightExprs;   // per daughter: the weight's expression of parameters, or null
     std::vector<const ir::Expr*> matchWeightExprs;   // per daughter: the weight's expression reading the match, or null
+    const ir::Expr* choiceWeightExpr = nullptr; // the rule's `weight` when it reads parameters (info's is 0 then)
     const ir::Expr* mergeExpr = nullptr;        // the merge tolerance when it reads parameters (info's is 0 then)
 };
 

@@ -138,9 +138,12 @@ std::vector<PlanStep> buildSearchPlan(const std::vector<ir::PatternNode>& nodes,
             for (std::size_t i = 0; i < nodes.size(); ++i) {
                 const int ni = nodeBase + static_cast<int>(i);
                 if (boundNodes.count(ni)) continue;
-                // Typed nodes first, then nodes with their own conditions (they prune
-                // before any walking), then the best connected.
-                const int score = (nodes[i].kind >= 0 ? 1000 : 0) + (ownConditions(ni) ? 100 : 0) + degree(ni);
+                // A node near bound ones first (a spatial lookup: lower::nearJoin;
+                // a match's own nodes only), then typed nodes, then nodes with
+                // their own conditions (they prune before any walking), then the best connected.
+                const bool near = nodeBase == 0 && !boundNodes.empty() &&
+                                  nearJoin(conditions, nodes[i], ni, [&](int n) { return boundNodes.count(n) > 0; });
+                const int score = (near ? 10000 : 0) + (nodes[i].kind >= 0 ? 1000 : 0) + (ownConditions(ni) ? 100 : 0) + degree(ni);
                 if (score > bestScore) { bestScore = score; best = ni; }
             }
             if (best < 0) break;  // only edges with unknown endpoints remain (already reported)

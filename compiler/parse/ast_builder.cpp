@@ -334,6 +334,9 @@ public:
             } else if (auto* w = dynamic_cast<P::RuleWordOptionContext*>(o)) {
                 opt.kind = RuleOption::Kind::Word;
                 opt.word = ident(w->word);
+            } else if (auto* rw = dynamic_cast<P::RuleWeightContext*>(o)) {
+                opt.kind = RuleOption::Kind::Weight;
+                opt.weight = expr(rw->expr());
             } else {
                 throw std::logic_error("a rule option of the grammar the AST builder does not know: " + o->getText());
             }

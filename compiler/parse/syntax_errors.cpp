@@ -141,8 +141,8 @@ std::string describeExpected(const antlr4::misc::IntervalSet& expected,
         if (lit.size() >= 2 && lit.front() == '\'') words.push_back("`" + lit.substr(1, lit.size() - 2) + "`");
     }
     if (words.empty()) return "";
-    if (words.size() > 8) {
-        words.resize(8);
+    if (words.size() > 10) {   // a rule's nine options still read as a list
+        words.resize(10);
         words.push_back("…");
     }
     std::string out;

@@ -67,6 +67,7 @@ struct ExprEnv {
     int selfKind = -1;               // style expressions: bare names read the element's attributes
     int placedNode = -1;             // `at` of a new sketched node: `placed` is its automatic position
     bool compoundValues = false;     // a rule's expression: `C.name` reads compound C's let
+    bool counts = false;             // `layout angles`' cost: `count(K)`, `nodes` and `edges`
     std::vector<LocalVar>* locals = nullptr;      // searched from the back (inner scopes last)
     const std::vector<ElemBinding>* elems = nullptr;
     std::set<ir::ElemRef>* deps = nullptr;        // collects the elements read

@@ -1,5 +1,7 @@
 #include "sema/expr_checker.hpp"
 
+#include "g2d/drawing_cost.hpp"
+
 #include "sema/element_facts.hpp"
 
 #include <algorithm>
@@ -114,6 +116,26 @@ std::optional<Expr> ExprChecker::check(const ast::Expr& e, const ExprEnv& env) {
         e.node);
 }
 
+// `count(K)`: the live elements of node or edge kind K, in a `layout angles` cost.
+std::optional<Expr> ExprChecker::count(const ast::Expr& e, const ast::Call& c, const ExprEnv& env) {
+    if (!env.counts) {
+        g_.diags.error(c.callee.span, "`count(K)` is read only by the cost of `layout angles` (it cannot be used in " + env.context + ")");
+        return std::nullopt;
+    }
+    const auto* kindName = c.args.size() == 1 ? std::get_if<ast::Name>(&c.args[0]->node) : nullptr;
+    const auto kind = kindName ? g_.kinds.find(kindName->name) : g_.kinds.end();
+    if (kind == g_.kinds.end() || g_.prog.kinds[static_cast<std::size_t>(kind->second)].cls == ir::ElemClass::Face) {
+        g_.diags.error(c.args.size() == 1 ? c.args[0]->span : e.span, "`count` takes one node or edge kind, e.g. `count(Wall)`");
+        return std::nullopt;
+    }
+    Expr r;
+    r.op = ExprOp::Count;
+    r.index = kind->second;
+    r.type = ir::kIntType;
+    r.span = e.span;
+    return r;
+}
+
 std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, const ExprEnv& env) {
     const std::string& id = n.name;
     if (env.locals) {
@@ -132,6 +154,14 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
             r.span = e.span;
             return r;
         }
+    }
+    if (env.counts && (id == "nodes" || id == "edges")) {
+        Expr r;
+        r.op = ExprOp::Count;
+        r.index = id == "nodes" ? rt::KindCounts::kNodes : rt::KindCounts::kEdges;
+        r.type = ir::kIntType;
+        r.span = e.span;
+        return r;
     }
     if (env.selfKind >= 0) {
         const auto& attrs = g_.prog.kinds[env.selfKind].attrs;
@@ -432,6 +462,7 @@ bool ExprChecker::checkFormatTemplate(const ast::Expr& templ, std::size_t valueC
 
 std::optional<Expr> ExprChecker::call(const ast::Expr& e, const ast::Call& c, const ExprEnv& env) {
     const std::string& fname = c.callee.name;
+    if (fname == "count" && !g_.functions.count(fname)) return count(e, c, env);
     std::vector<Expr> args;
     bool ok = true;
     for (const auto& a : c.args) {

@@ -29,6 +29,7 @@ private:
     std::optional<ir::Expr> elementMember(const ast::Expr& e, const ElemBinding& b, const ast::Ident& member,
                                           const ExprEnv& env);
     std::optional<ir::Expr> call(const ast::Expr& e, const ast::Call& c, const ExprEnv& env);
+    std::optional<ir::Expr> count(const ast::Expr& e, const ast::Call& c, const ExprEnv& env);
     std::optional<ir::Expr> unary(const ast::Expr& e, const ast::Unary& u, const ExprEnv& env);
     std::optional<ir::Expr> binary(const ast::Expr& e, const ast::Binary& b, const ExprEnv& env);
     std::optional<ir::Expr> conditional(const ast::Expr& e, const ast::Conditional& c, const ExprEnv& env);

@@ -1,5 +1,6 @@
 #include "sema/graph_checker.hpp"
 
+#include <cmath>
 #include <algorithm>
 #include <functional>
 #include <set>
@@ -297,13 +298,43 @@ private:
                 else if (o.word.name == "intersect") rule_.intersect = true;
                 else if (o.word.name == "dpo") rule_.dpo = true;
                 else g_.diags.error(o.word.span, "unknown rule option `" + o.word.name + "`" +
-                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect", "dpo"}));
+                                                     suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect", "dpo", "weight"}));
                 break;
             case ast::RuleOption::Kind::Pick:
                 checkPick(o);
                 break;
+            case ast::RuleOption::Kind::Weight:
+                ruleWeight(*o.weight);
+                break;
             }
         }
+    }
+
+    // `weight W`: a positive number of literals, constants and parameters.
+    void ruleWeight(const ast::Expr& e) {
+        ExprEnv env;
+        env.context = "a rule's weight (it reads literals, constants and parameters)";
+        env.allowRandom = false;
+        env.allowElements = false;
+        env.allowLocals = false;
+        auto w = ec_.checkAs(e, ir::kFloatType, env, "a rule's weight");
+        if (!w) return;
+        std::string error;
+        auto folded = fold(*w, g_.prog, &error);
+        if (!error.empty()) {
+            g_.diags.error(e.span, error + " in a rule's weight");
+            return;
+        }
+        if (folded) {
+            const double x = asNumber(*folded);
+            if (!(x > 0) || !std::isfinite(x)) {
+                g_.diags.error(e.span, "a rule's weight must be positive, but this is " + fmtNumber(x));
+                return;
+            }
+            rule_.weight = x;
+            return;
+        }
+        rule_.weightExpr = std::move(*w);
     }
 
     // `pick random`, `pick oldest`, `pick oldest age`, `pick oldest generation`.

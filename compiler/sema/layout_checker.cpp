@@ -78,17 +78,37 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
                 continue;
             }
             (n == "proposals" ? out.proposals : out.samples) = static_cast<int>(k);
+        } else if (n == "cost") {
+            ExprEnv env = layoutEnv();
+            env.context = "the cost (it reads literals, constants, parameters, `count(K)`, `nodes` and `edges`)";
+            env.counts = true;
+            if (auto v = ec.checkAs(*p.value, ir::kFloatType, env, "the cost")) out.cost = ExprChecker::coerce(std::move(*v), ir::kFloatType);
+        } else if (n == "temperature") {
+            ExprEnv env = layoutEnv();
+            env.context = "the temperature (it reads literals, constants and parameters)";
+            auto v = ec.checkAs(*p.value, ir::kFloatType, env, "the temperature");
+            if (!v) continue;
+            std::string error;
+            if (auto f = fold(*v, g.prog, &error); f && !(asNumber(*f) > 0 && finite(asNumber(*f)))) {
+                g.diags.error(p.value->span, "the temperature must be positive and finite");
+                continue;
+            }
+            out.temperature = ExprChecker::coerce(std::move(*v), ir::kFloatType);
         } else {
             g.diags.error(p.name.span, "unknown property `" + n + "` of `layout angles`" +
-                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples"}));
+                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature"}));
         }
     }
-    if (!haveMin || !haveMax) {
+    if (out.temperature && !out.cost)
+        g.diags.error(seen["temperature"], "a temperature without a `cost` does nothing: every drawn proposal is accepted");
+    if (haveMin != haveMax) {
         if (g.diags.errorCount() > errorsBefore) return;   // a misspelt or bad canvas property, reported
-        g.diags.error(d.span, "`layout angles` needs its canvas: `canvas_min = (x, y);` and `canvas_max = (x, y);`");
+        g.diags.error(d.span, std::string("`layout angles` has `") + (haveMin ? "canvas_min" : "canvas_max") + "` but not `" +
+                                  (haveMin ? "canvas_max" : "canvas_min") + "`");
         return;
     }
-    if (!(out.canvasMin[0] < out.canvasMax[0] && out.canvasMin[1] < out.canvasMax[1]))
+    out.ownCanvas = haveMin;
+    if (out.ownCanvas && !(out.canvasMin[0] < out.canvasMax[0] && out.canvasMin[1] < out.canvasMax[1]))
         g.diags.error(d.span, "the canvas is empty: `canvas_min` must lie below and left of `canvas_max`");
     g.prog.angleLayout = out;
 }
@@ -172,6 +192,15 @@ void checkAngleLayoutUse(Globals& g, const std::vector<const ast::KindDecl*>& ki
     for (const auto* d : kinds)   // a layout block with an error has been reported already
         if (d->cls == ast::KindDecl::Class::Edge && !d->hasLayout)
             g.diags.error(d->span, "with `layout angles`, edge kind `" + d->name.name + "` needs a `layout { angle = …; length = …; }`");
+    const ir::AngleLayout& layout = *g.prog.angleLayout;
+    if (!layout.ownCanvas && !g.prog.canvas)
+        g.diags.error(layout.span, "`layout angles` needs its canvas: declare `canvas (x0, y0) to (x1, y1);` (parameters may set "
+                                   "it) or give `canvas_min = (x, y);` and `canvas_max = (x, y);`");
+    if (layout.ownCanvas && g.prog.canvas) {
+        auto& diag = g.diags.error(layout.span, "the drawing's canvas is given twice: drop `canvas_min` and `canvas_max`, and "
+                                                "`layout angles` draws in the grammar's `canvas`");
+        diag.notes.push_back({g.prog.canvas->span, "the grammar's canvas is here"});
+    }
     if (!g.prog.sequence.empty()) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with a `sequence`");
     if (g.prog.mergeAll) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with `merge within`");
     for (const auto& r : g.prog.rules) {

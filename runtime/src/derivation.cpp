@@ -9,6 +9,7 @@
 #include "g2d/pick_lookahead.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -42,6 +43,41 @@ std::size_t chooseDaughter(RuleSet& rules, std::size_t rule, const RuleInfo& inf
 
 namespace {
 
+// A rule of `group` with a match, with probability ∝ its choiceWeight; one draw.
+std::optional<std::size_t> chooseWeightedRule(const std::vector<std::size_t>& group, RuleSet& rules, IncrementalMatches& sets,
+                                              Rng& rng) {
+    double total = 0;
+    for (std::size_t r : group)
+        if (!sets.of(r).empty()) total += rules.info(r).choiceWeight;
+    if (!(total > 0)) return std::nullopt;
+    const double u = rng.unit() * total;
+    double cumulative = 0;
+    std::optional<std::size_t> last;
+    for (std::size_t r : group) {
+        if (sets.of(r).empty()) continue;
+        cumulative += rules.info(r).choiceWeight;
+        last = r;
+        if (u < cumulative) return r;
+    }
+    return last;   // u rounded up to the total
+}
+
+// A canvas no edge fits in draws nothing: an error, not a run of refusals.
+void checkCanvasFits(const AngleLayoutSpec& spec) {
+    const vec2 size = spec.settings.canvasHi - spec.settings.canvasLo;
+    const EdgeGeometry* least = nullptr;
+    for (const EdgeGeometry& k : spec.kinds) {
+        if (!k.given) continue;
+        if (k.minLength * std::abs(std::cos(k.angle)) <= size.x && k.minLength * std::abs(std::sin(k.angle)) <= size.y) return;
+        if (!least || k.minLength < least->minLength) least = &k;
+    }
+    if (!least) return;   // no edge kinds: nodes alone fit anywhere
+    char text[160];
+    std::snprintf(text, sizeof text, "the canvas, %g x %g, is smaller than the shortest edge of every edge kind (the least is %g long)",
+                  size.x, size.y, least->minLength);
+    throw std::invalid_argument(std::string(text) + ": nothing can be drawn in it");
+}
+
 RunawayError timeLimit(const DerivationOptions& limits, long long step) {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%g s", limits.timeoutSeconds.value_or(0));
@@ -55,6 +91,7 @@ struct Group {
     std::optional<long long> limit;
     long long applied = 0;
     bool generation = false;        // `priority P generation;` (RuleInfo::generation)
+    bool weighted = false;          // some rule's choiceWeight is not 1
     double mergeTolerance = 0;      // a generation's: the largest of its rules'
 };
 
@@ -100,6 +137,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
         grp.priority = p;
         grp.rules.push_back(r);
         grp.generation = grp.generation || rules.info(r).generation;
+        grp.weighted = grp.weighted || rules.info(r).choiceWeight != 1;
         grp.mergeTolerance = std::max(grp.mergeTolerance, rules.info(r).mergeTolerance);
     }
     std::vector<Group> groups;
@@ -113,7 +151,21 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     std::vector<const MatchSet*> generationSets;
     ParallelStep parallel;
     const AngleLayoutSpec* angles = rules.angleLayout();
+    std::optional<AngleLayoutSpec> grammarCanvas;   // the spec in the grammar's `canvas`
+    if (angles && limits.drawingCanvas) {
+        grammarCanvas = *angles;
+        grammarCanvas->settings.canvasLo = {limits.drawingCanvas->x0, limits.drawingCanvas->y0};
+        grammarCanvas->settings.canvasHi = {limits.drawingCanvas->x1, limits.drawingCanvas->y1};
+        angles = &*grammarCanvas;
+    }
+    if (angles) checkCanvasFits(*angles);
     AngleStep drawing;
+    // Metropolis acceptance (drawing_cost.hpp): the counts and cost of the graph as it is.
+    const bool costed = angles && rules.hasDrawingCost();
+    const double temperature = costed ? rules.drawingTemperature() : 1;
+    KindCounts counts = costed ? KindCounts::of(g, angles->kinds.size()) : KindCounts();
+    KindCounts proposedCounts;
+    double cost = costed ? rules.drawingCost(counts) : 0;
     PickLookahead lookahead;
     std::optional<IncrementalMatches> found;   // before the summary, which reads it as it goes
     ResultSummary summary(result, lookahead);
@@ -275,7 +327,12 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
             // Rules of one priority are tried in random order (a group of
             // one needs no copy: shuffling it draws nothing).
             const std::vector<std::size_t>* tryOrder = &grp.rules;
-            if (grp.rules.size() > 1) {
+            if (grp.weighted) {
+                // By weight among the rules that match (nothing drawn when none does).
+                order.clear();
+                if (const auto r = chooseWeightedRule(grp.rules, rules, sets, rng)) order.push_back(*r);
+                tryOrder = &order;
+            } else if (grp.rules.size() > 1) {
                 order = grp.rules;
                 shuffle(order, rng);
                 tryOrder = &order;
@@ -300,18 +357,34 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                             rules.commit(g, step);
                         } else {
                             rules.prepareApplication(r, d, m, g, rng, step);
+                            // A refused proposal changes nothing, and the step
+                            // counts (Algorithm 3's N) but not as an application
+                            // of its priority.
+                            double proposedCost = 0;
+                            if (costed) {
+                                proposedCounts = counts;
+                                countChange(g, info.shapes[d], m, proposedCounts);
+                                proposedCost = rules.drawingCost(proposedCounts);
+                                if (!metropolisAccepts(proposedCost - cost, temperature, rng)) {
+                                    rules.discardApplications();
+                                    ++result.rejectedByCost;
+                                    applied = true;
+                                    break;
+                                }
+                            }
                             if (!drawing.propose(g, info.shapes[d], m, *angles, rng)) {
-                                // Nothing changes, and the step counts (Algorithm 3's N).
                                 rules.discardApplications();
                                 ++result.rejectedDrawings;
-                                ++grp.applied;
-                                retireIfSpent(grp);
                                 applied = true;
                                 break;
                             }
                             if (tracer) tracer->applying(r, d, m, g);
                             rules.commit(g, step);
                             drawing.place(g, newNodesFrom);
+                            if (costed) {
+                                std::swap(counts, proposedCounts);
+                                cost = proposedCost;
+                            }
                         }
                         ++result.applications;
                     }

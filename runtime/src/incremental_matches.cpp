@@ -39,9 +39,13 @@ Effect effectOf(const RuleInfo& applied, std::size_t d, const RuleInfo& reader) 
 
 IncrementalMatches::IncrementalMatches(RuleSet& rules, const Graph& g) : rules_(rules) {
     std::vector<std::vector<int>> nearKinds;
-    for (std::size_t r = 0; r < rules.ruleCount(); ++r)
-        nearKinds.push_back(rules.info(r).globalMatches ? rules.info(r).nearKinds : std::vector<int>{});
-    rules.nearQueries().start(g, nearKinds);
+    std::vector<int> joinKinds;
+    for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
+        const RuleInfo& info = rules.info(r);
+        nearKinds.push_back(info.globalMatches ? info.nearKinds : std::vector<int>{});
+        if (info.globalMatches) joinKinds.insert(joinKinds.end(), info.joinKinds.begin(), info.joinKinds.end());
+    }
+    rules.nearQueries().start(g, nearKinds, joinKinds);
     std::size_t pairs = 0;
     for (std::size_t r = 0; r < rules.ruleCount(); ++r) {
         const RuleInfo& info = rules.info(r);

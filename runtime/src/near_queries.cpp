@@ -23,7 +23,7 @@ double cellFor(double radius) { return radius > 0 && std::isfinite(radius) ? 2 *
 
 }  // namespace
 
-void NearQueries::start(const Graph& g, const std::vector<std::vector<int>>& nearKinds) {
+void NearQueries::start(const Graph& g, const std::vector<std::vector<int>>& nearKinds, const std::vector<int>& joinKinds) {
     *this = NearQueries{};
     rules_.resize(nearKinds.size());
     for (std::size_t r = 0; r < nearKinds.size(); ++r)
@@ -31,10 +31,72 @@ void NearQueries::start(const Graph& g, const std::vector<std::vector<int>>& nea
             rules_[r].emplace_back().kind = kind;
             if (!pointsOf(kind)) points_.emplace_back().kind = kind;
         }
-    if (points_.empty()) return;
+    for (int kind : joinKinds) {
+        if (kind < 0) any_.emplace().kind = -1;
+        else if (!pointsOf(kind)) points_.emplace_back().kind = kind;
+    }
+    if (points_.empty() && !any_) return;
     started_ = true;
     for (const Points& p : points_)
         for (NodeId n : g.nodesOfKind(p.kind)) index(n, p.kind, g.pos3(n));
+    if (any_)
+        for (NodeId n : g.allNodes()) syncAny(g, n);
+}
+
+// Keeps node n's place in the index of every node.
+void NearQueries::syncAny(const Graph& g, NodeId n) {
+    if (n >= inAny_.size()) {
+        inAny_.resize(n + 1 + n / 2, 0);
+        anyAt_.resize(inAny_.size());
+    }
+    const bool alive = g.nodeAlive(n);
+    const vec3 p = alive ? g.pos3(n) : vec3{};
+    if (any_->grid) {
+        if (inAny_[n] && !alive) any_->grid->remove(n, anyAt_[n]);
+        else if (inAny_[n]) any_->grid->move(n, anyAt_[n], p);
+        else if (alive) any_->grid->insert(n, p);
+    }
+    inAny_[n] = alive ? 1 : 0;
+    anyAt_[n] = p;
+}
+
+std::span<const NodeId> NearQueries::nodesAround(const Graph& g, int kind, vec3 centre, double radius) {
+    Points* pts = kind < 0 ? (any_ ? &*any_ : nullptr) : pointsOf(kind);
+    if (kind < 0) {
+        scratch_.clear();
+        if (!started_ || g.scope() || !pts)
+            for (NodeId n : g.allNodes()) scratch_.push_back(n);
+        const std::span<const NodeId> all(scratch_);
+        return started_ && !g.scope() && pts ? around(g, *pts, all, centre, radius, anyAt_) : all;
+    }
+    if (!started_ || g.scope() || !pts) return g.nodesOfKind(kind);
+    return around(g, *pts, g.nodesOfKind(kind), centre, radius, at_);
+}
+
+// The grid's nodes near `centre`; the grid is made at the first finite query, its cell from that radius.
+std::span<const NodeId> NearQueries::around(const Graph& g, Points& pts, std::span<const NodeId> all, vec3 centre, double radius,
+                                            const std::vector<vec3>& at) {
+    if (!(radius >= 0)) return {};   // no distance is below a negative or NaN radius
+    if (!std::isfinite(radius)) {
+        if (pts.kind < 0) {
+            scratch_.clear();
+            for (NodeId n : g.allNodes()) scratch_.push_back(n);
+            return scratch_;
+        }
+        return all;
+    }
+    if (!pts.grid) {
+        pts.grid.emplace(cellFor(radius));
+        if (pts.kind < 0) {
+            for (NodeId n : g.allNodes()) pts.grid->insert(n, at[n]);
+        } else {
+            for (NodeId n : all) pts.grid->insert(n, at[n]);
+        }
+    }
+    pts.grid->within(centre, slack(radius), hits_);
+    scratch_.clear();
+    for (const auto& h : hits_) scratch_.push_back(h.id);
+    return scratch_;
 }
 
 void NearQueries::stop() { *this = NearQueries{}; }
@@ -68,6 +130,7 @@ void NearQueries::sync(const Graph& g) {
     probes_.clear();
     if (!started_) return;
     for (NodeId n : g.changedNodes()) {
+        if (any_) syncAny(g, n);
         const int was = n < kindOf_.size() ? kindOf_[n] : -1;
         const bool alive = g.nodeAlive(n);
         const int kind = alive && pointsOf(g.nodeKind(n)) ? g.nodeKind(n) : -1;

@@ -54,6 +54,16 @@ double checkedMergeTolerance(double t) {
     return t;
 }
 
+double checkedCost(double c) {
+    if (!std::isfinite(c)) throw OpError("the cost must be a finite number, but this is " + formatNumber(c));
+    return c;
+}
+
+double checkedTemperature(double t) {
+    if (!(t > 0) || !std::isfinite(t)) throw OpError("the temperature must be positive and finite, but this is " + formatNumber(t));
+    return t;
+}
+
 long long floatToInt(double x) {
     if (!std::isfinite(x) || x >= 9.2233720368547758e18 || x < -9.2233720368547758e18)
         throw OpError("cannot convert " + formatNumber(x) + " to int: out of range");

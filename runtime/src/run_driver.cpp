@@ -117,6 +117,7 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
     options.maxElements = settings.maxElements;
     options.timeoutSeconds = settings.timeoutSeconds;
     options.verifyMatches = settings.verifyMatches;
+    options.drawingCanvas = out.canvas;
     derive(
         grammar.graph(), grammar.rules(), rng, options, out.result,
         [&](long long s, const Graph& g) {
@@ -318,11 +319,11 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
-                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld}\n",
+                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
                         result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
-                        result.rejectedDrawings);
+                        result.rejectedDrawings, result.rejectedByCost);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;

@@ -73,6 +73,49 @@ assert d["nodes"] and d["faces"], "an empty output"
 assert all(isinstance(l["label"], int) for l in d["links"])
 assert all(isinstance(f["label"], int) for f in d["faces"])
 PY
+# Size and space: --size sets the target the cost steers toward, the canvas follows it.
+expect_code 0 "$g2d" infer "$examples/2D Branches/T.json" --size 60 -o t60.g2d
+has t60.g2d 'param target_vertices: int = 60;   // the example has 4'
+has t60.g2d 'param iterations: int = 1000;'
+has t60.g2d 'cost = 0.5 * abs(nodes - target_vertices);'
+has t60.g2d 'canvas (0, 0) to (width, height);'
+expect_code 0 "$g2d" run t60.g2d --stats --no-svg
+python3 - out.txt <<'PY' || fail "T --size 60: not near the target"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert 45 <= s["nodes"] <= 75, s
+assert s["rejected_by_cost"] > 0, s
+PY
+expect_code 0 "$g2d" run t60.g2d --stats --no-svg -D target_vertices=20
+python3 - out.txt <<'PY' || fail "T -D target_vertices=20: not near the target"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert 12 <= s["nodes"] <= 28, s
+PY
+expect_code 1 "$g2d" infer "$examples/2D Branches/T.json" --size 0 -o zero.g2d
+has err.txt 'g2d infer: error: --size 0: the target number of vertices must be at least 1'
+[ -e zero.g2d ] && fail "--size 0 wrote a grammar"
+# A canvas no edge fits in: an error, nothing written.
+expect_code 1 "$g2d" run t60.g2d -D canvas_width=0.1 -D canvas_height=0.1 -o tiny.svg
+has err.txt 'is smaller than the shortest edge of every edge kind'
+[ -e tiny.svg ] && fail "a canvas too small wrote an SVG"
+
+# --connected: one starter, once; no removals; forward rules that could split left out.
+expect_code 0 "$g2d" infer "$examples/2D Networks/connected box.json" --connected -o cbox.g2d
+has cbox.g2d 'priority -1 limit 1;   // one starter, once'
+grep -q 'rule Stop' cbox.g2d && fail "--connected wrote a Stop rule"
+has cbox.g2d '(--connected: only back'
+expect_code 0 "$g2d" check --werror cbox.g2d
+# Pieces of a rule's side are asked to lie near each other.
+expect_code 0 "$g2d" infer "$examples/2D Networks/connected box.json" -o box.g2d
+grep -q 'where distance(x[0-9]*.pos, x[0-9]*.pos) <= ' box.g2d || fail "connected box: no nearness condition"
+# --no-loops: no loop glue, so no graph closes a loop and none is reduced by one (155 graphs become 1371).
+expect_code 0 "$g2d" infer --stats "$examples/2D Networks/connected triangle.json"
+with_loops=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["graphs"])' out.txt)
+expect_code 0 "$g2d" infer --stats --no-loops "$examples/2D Networks/connected triangle.json"
+without=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["graphs"])' out.txt)
+[ "$without" != "$with_loops" ] || fail "--no-loops changed nothing: $without graphs"
+
 # An output that cannot be written leaves nothing behind.
 expect_code 1 "$g2d" infer "$examples/2D Branches/T.json" -o /nonexistent/dir/t.g2d
 has err.txt 'g2d infer: error:'

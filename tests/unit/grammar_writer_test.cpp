@@ -86,16 +86,33 @@ TEST_CASE("every rule's sides share one interface, each node with the same half-
 TEST_CASE("the triangle's grammar text", "[infer][writer]") {
     const std::string path = kExamples + "/2D Basic Shapes/triangle.json";
     const LabelledExample ex = labelExample(readExampleJson(readFile(path), path));
-    // Vertices (2.5, -5), (5, -2.5), (7.5, -5): a box 5 x 2.5 grown by half on each side;
-    // edges 3.54, 3.54 and 5 long: half the shortest to twice the longest, strokes 0.05 x 3.54.
+    // Vertices (2.5, -5), (5, -2.5), (7.5, -5): a box 5 x 2.5, its height grown to the median edge,
+    // 3.54, so 3 vertices in 17.7 square units; 20 x 3 vertices by default, 10 x 60 = 600 steps
+    // raised to 1000; edges 3.54, 3.54 and 5 long: half the shortest to twice the longest, strokes 0.05 x 3.54;
+    // starters weigh 1 (Merrell's proposal mix).
     const std::string golden = R"(// Inferred by `g2d infer` from triangle.json (Merrell 2023, example-based graph grammars).
 // 3 edge labels, 3 primitives, 0 rules, 1 starters. Run: g2d run <file> -o out.svg --seed 1
-layout angles {
-    canvas_min = (0, -6.25);
-    canvas_max = (10, -1.25);
-}
+
+// Size and space (-D NAME=VALUE): the cost steers the walk toward target_vertices;
+// the canvas holds that many at the example's density (0.169706 vertices per unit area)
+// with room to spare, unless canvas_width and canvas_height say otherwise.
+param target_vertices: int = 60;   // the example has 3
+param canvas_width: float = 0;    // 0: sized for target_vertices
+param canvas_height: float = 0;
 param iterations: int = 1000;
+const room: float = 2.25 * target_vertices / 0.169706;
+const width: float = canvas_width > 0 ? canvas_width : sqrt(room * 1.41421);
+const height: float = canvas_height > 0 ? canvas_height : sqrt(room / 1.41421);
+canvas (0, 0) to (width, height);
 limit iterations;
+
+// The drawing step (Merrell §6.2) and Metropolis acceptance (§6.3): a proposal that
+// raises the cost by d is accepted with probability exp(-d / temperature). Add terms
+// to steer the output, e.g. `- 0.5 * count(P0)` for more vertices of primitive P0.
+layout angles {
+    cost = 0.5 * abs(nodes - target_vertices);
+    temperature = 1;
+}
 
 // Edge labels: brush, the areas left and right, the direction.
 edge E0 directed {
@@ -122,7 +139,7 @@ node P2 { style { tag = "none"; } }   // E1 out 135°, E2 in 180°
 axiom { }
 
 // Starter 0: a complete graph from nothing, and back to nothing.
-rule Start0 dpo {
+rule Start0 dpo weight 1 {
     match { }
     produce {
         v0: P0;
@@ -133,7 +150,7 @@ rule Start0 dpo {
         v1 -[E1]-> v2;
     }
 }
-rule Stop0 dpo {
+rule Stop0 dpo weight 1 {
     match {
         v0: P0;
         v1: P2;

@@ -40,6 +40,7 @@ struct DaughterShape {
         int kind = -1;
     };
     std::vector<NewEdge> newEdges;
+    std::vector<int> newNodeKinds;     // per new node, in creation order (the cost's counts)
 };
 
 class AngleStep {

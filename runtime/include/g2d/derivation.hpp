@@ -39,12 +39,14 @@
 
 #include "g2d/angle_step.hpp"
 #include "g2d/command_list.hpp"
+#include "g2d/drawing_cost.hpp"
 #include "g2d/generations.hpp"
 #include "g2d/graph.hpp"
 #include "g2d/match_set.hpp"
 #include "g2d/near_queries.hpp"
 #include "g2d/pick.hpp"
 #include "g2d/rng.hpp"
+#include "g2d/view_box.hpp"
 
 namespace g2d::rt {
 
@@ -58,6 +60,10 @@ struct RuleInfo {
     // in one step (ParallelStep::runGeneration).
     bool generation = false;
     std::vector<double> weights;      // one per daughter, all > 0 (0 for those read from the match)
+    // `weight W` of the rule (> 0): a priority whose rules' weights are not
+    // all 1 chooses among its matching rules by weight (one Rng::unit draw)
+    // instead of trying them in a random order.
+    double choiceWeight = 1;
     // Some daughter's weight reads the match: RuleSet::weigh gives them per application.
     bool matchWeighted = false;
     // The pattern's shape, for incremental matching: the kinds of its nodes
@@ -113,6 +119,9 @@ struct RuleInfo {
     // through RuleSet::nearQueries(), and repair revisits the matches whose
     // disks a changed node of the kind lies in.
     std::vector<int> nearKinds;
+    // The kinds of pattern nodes a search may find near bound ones
+    // (lower::nearJoin; -1: any node): NearQueries indexes them.
+    std::vector<int> joinKinds;
     // With `layout angles` (RuleSet::angleLayout): per daughter, what it
     // does to the graph, for the drawing step (angle_step.hpp).
     std::vector<DaughterShape> shapes;
@@ -248,6 +257,16 @@ public:
     // `layout angles` (angle_step.hpp): each application is drawn before it
     // is committed. Null: positions come from the rules.
     virtual const AngleLayoutSpec* angleLayout() const { return nullptr; }
+    // Its cost and temperature (`layout angles { cost = …; temperature = …; }`,
+    // drawing_cost.hpp). The cost of `counts` throws (placed at the cost)
+    // when it is not finite; the temperature (1 unless given) when it is not
+    // positive and finite.
+    virtual bool hasDrawingCost() const { return false; }
+    virtual double drawingCost(const KindCounts& counts) {
+        (void)counts;
+        return 0;
+    }
+    virtual double drawingTemperature() { return 1; }
     // Asks for the cache lines a rewrite of `m` reads beyond the graph's
     // records (generated code: the matched elements' attribute records), for
     // a likely later pick (PickLookahead). Reads the elements' records, which
@@ -330,12 +349,15 @@ struct DerivationOptions {
     // (IncrementalMatches::verify; std::logic_error on a difference). Costs a
     // full search per step: for tests, and for users who suspect the engine.
     bool verifyMatches = false;
+    // `layout angles` without a canvas of its own draws in the grammar's `canvas`.
+    std::optional<ViewBox> drawingCanvas;
 };
 
 struct DerivationResult {
     long long steps = 0;
     long long applications = 0;   // rewrites applied (a parallel step applies many)
     long long rejectedDrawings = 0;   // `layout angles`: steps whose drawing was rejected (nothing applied)
+    long long rejectedByCost = 0;     // `layout angles` with a cost: proposals the Metropolis test refused (nothing applied)
     StopReason stopped = StopReason::Terminal;
     double seconds = 0;
     // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.

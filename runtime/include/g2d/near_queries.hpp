@@ -29,7 +29,9 @@ class NearQueries {
 public:
     // Follows `g` for the rules' conditions (`nearKinds` per rule; empty for
     // a rule whose matches are not kept over the whole graph).
-    void start(const Graph& g, const std::vector<std::vector<int>>& nearKinds);
+    // `joinKinds`: the kinds positive searches look up near a point
+    // (RuleInfo::joinKinds, -1: any node), indexed alike.
+    void start(const Graph& g, const std::vector<std::vector<int>>& nearKinds, const std::vector<int>& joinKinds = {});
     bool started() const { return started_; }
     void stop();   // forgets everything (the derivation is over)
     // After a step, before its changes are forgotten: brings the index up to
@@ -42,6 +44,12 @@ public:
     // Valid until the next call.
     std::span<const NodeId> nodesNear(const Graph& g, std::size_t rule, int near, NodeId key, int kind, vec3 centre,
                                       double radius);
+
+    // The nodes of `kind` (-1: any) within `radius` of `centre` (at least),
+    // by id, recording nothing: a pattern piece joined to bound nodes by
+    // distance (lower::nearJoin). Every such node when the kind is not
+    // indexed, or in a compound scope. Valid until the next call.
+    std::span<const NodeId> nodesAround(const Graph& g, int kind, vec3 centre, double radius);
 
     // Appends the keys of `rule`'s disks that a node synced last lies in.
     void touchedKeys(std::size_t rule, std::vector<NodeId>& out);
@@ -80,6 +88,9 @@ private:
     Points* pointsOf(int kind);
     void index(NodeId n, int kind, vec3 p);
     void unindex(NodeId n);
+    void syncAny(const Graph& g, NodeId n);
+    std::span<const NodeId> around(const Graph& g, Points& pts, std::span<const NodeId> all, vec3 centre, double radius,
+                                   const std::vector<vec3>& at);
     void record(Disks& d, NodeId key, vec3 centre, double radius);
     void remove(Disks& d, std::uint32_t disk);
 
@@ -88,10 +99,16 @@ private:
     std::vector<std::vector<Disks>> rules_;   // per rule, per condition
     std::vector<int> kindOf_;                 // by node id: the kind it is indexed under (-1: none)
     std::vector<vec3> at_;                    // by node id: where it is indexed
+    std::optional<Points> any_;               // every node, for joins of wildcards
+    std::vector<char> inAny_;                 // by node id: indexed in any_
+    std::vector<vec3> anyAt_;                 // by node id: where, in any_
     std::vector<Probe> probes_;               // the last sync's changed places
     std::vector<NodeId> scratch_;
     std::vector<SpatialGrid::Hit> hits_;
     std::vector<std::uint32_t> ids_;
 };
+
+// A copy of a lookup's nodes (generated joins keep theirs while searching on).
+inline std::vector<NodeId> asVector(std::span<const NodeId> nodes) { return {nodes.begin(), nodes.end()}; }
 
 }  // namespace g2d::rt

@@ -86,6 +86,9 @@ double checkedMatchWeight(double w);
 void checkSomeWeight(const std::vector<double>& weights);
 // A merge tolerance (`merge within`), when a parameter gives it: finite, not negative.
 double checkedMergeTolerance(double t);
+// `layout angles`' cost (finite) and temperature (positive, finite).
+double checkedCost(double c);
+double checkedTemperature(double t);
 
 long long floatToInt(double x);                 // truncation; throws when out of range
 long long floorToInt(double x);
