@@ -274,7 +274,8 @@ TEST_CASE("a rejected drawing changes nothing and still counts as a step", "[ang
 }
 
 TEST_CASE("a drawing that never fits the canvas leaves the graph empty", "[angle-layout]") {
-    auto r = derive(squareGrammar("(0.5, 0.5)", 5));
+    // The sides along x fit (1 long in 1.5), a square (1 high in 0.5) never does.
+    auto r = derive(squareGrammar("(1.5, 0.5)", 5));
     const auto& d = r.run.derivation;
     CHECK(d.steps == 5);
     CHECK(d.stopped == rt::StopReason::StepLimit);
@@ -283,6 +284,14 @@ TEST_CASE("a drawing that never fits the canvas leaves the graph empty", "[angle
     CHECK(r.run.graph().nodeCount() == 0);
     CHECK(r.run.graph().edgeCount() == 0);
     CHECK(r.run.graph().faceCount() == 0);
+}
+
+TEST_CASE("a canvas no edge fits in is an error before the first step", "[angle-layout]") {
+    const CompileResult compiled = test::compile(squareGrammar("(0.5, 0.5)", 5));
+    REQUIRE(compiled.program);
+    CHECK_THROWS_WITH(interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1, rt::RunSettings{}),
+                      "the canvas, 0.5 x 0.5, is smaller than the shortest edge of every edge kind (the least is 1 long): "
+                      "nothing can be drawn in it");
 }
 
 TEST_CASE("the same seed gives the same drawing, another seed another", "[angle-layout]") {
