@@ -42,6 +42,7 @@ std::string angleLayoutOverride(const ir::Program& prog) {
            "        static const AngleLayoutSpec spec{\n"
            "            DrawingSettings{" + num(s.proposals) + ", " + num(s.samples) + ", vec2(" + num(s.canvasLo.x) + ", " + num(s.canvasLo.y) +
            "), vec2(" + num(s.canvasHi.x) + ", " + num(s.canvasHi.y) + "), " + num(s.separation) + "},\n"
+           "            " + (spec->connected ? "true" : "false") + ",\n"
            "            {\n" + kinds + "            }};\n"
            "        return &spec;\n    }\n\n";
 }

@@ -163,7 +163,9 @@ std::string sizeAndSpace(const LabelledExample& ex, const WriterOptions& options
     out += "\n// The drawing step (Merrell §6.2) and Metropolis acceptance (§6.3): a proposal that\n"
            "// raises the cost by d is accepted with probability exp(-d / temperature). Add terms\n"
            "// to steer the output, e.g. `- 0.5 * count(P0)` for more vertices of primitive P0.\n";
-    out += "layout angles {\n    cost = 0.5 * abs(nodes - target_vertices);\n    temperature = 1;\n}\n";
+    out += "layout angles {\n    cost = 0.5 * abs(nodes - target_vertices);\n    temperature = 1;\n";
+    if (options.connected) out += "    connected = true;   // no application may split the output (Appendix A)\n";
+    out += "}\n";
     return out;
 }
 
@@ -231,12 +233,6 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
         const std::string boundary = boundaryString(ex, grammar.hierarchy[static_cast<std::size_t>(rule.left)].graph.boundary);
         const std::string weight = "weight " + num(kRuleWeight);
         out += "\n// Rule " + i + ": " + boundary + "\n";
-        if (options.connected && pieceCount(sides.right, sides.interface) > 1) {
-            // Forward it could split the output; back, it joins pieces (or closes a loop).
-            out += "// (--connected: only back, which joins R's pieces into L; forward could split the output)\n";
-            out += dpoRule(ex, "Rule" + i + "_back", weight, sides.right, 'w', sides.left, 'v', sides.interface);
-            continue;
-        }
         out += dpoRule(ex, "Rule" + i, weight, sides.left, 'v', sides.right, 'w', sides.interface);
         out += dpoRule(ex, "Rule" + i + "_back", weight, sides.right, 'w', sides.left, 'v', sides.interface);
     }

@@ -154,6 +154,7 @@ struct AngleLayout {
     bool ownCanvas = true;             // false: the grammar's `canvas` is the drawing's (read at run time)
     double canvasMin[2] = {0, 0}, canvasMax[2] = {0, 0};
     int proposals = 5, samples = 10;   // Merrell's I and J
+    bool connected = false;            // `connected = true;` (rt::ConnectedGuard)
     // Metropolis acceptance (rt::metropolisAccepts): the cost reads
     // parameters, constants and counts (ExprOp::Count); the temperature
     // parameters and constants. No cost: every drawn proposal is accepted.

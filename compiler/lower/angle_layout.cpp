@@ -8,6 +8,7 @@ std::optional<rt::AngleLayoutSpec> angleLayoutSpec(const ir::Program& prog) {
     rt::AngleLayoutSpec spec;
     spec.settings.proposals = l.proposals;
     spec.settings.samples = l.samples;
+    spec.connected = l.connected;
     spec.settings.canvasLo = rt::vec2(l.canvasMin[0], l.canvasMin[1]);
     spec.settings.canvasHi = rt::vec2(l.canvasMax[0], l.canvasMax[1]);
     for (const auto& k : prog.kinds) {

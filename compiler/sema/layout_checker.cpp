@@ -78,6 +78,9 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
                 continue;
             }
             (n == "proposals" ? out.proposals : out.samples) = static_cast<int>(k);
+        } else if (n == "connected") {
+            auto v = constant(g, ec, p, ir::kBoolType);
+            if (v) out.connected = std::get<bool>(*v);
         } else if (n == "cost") {
             ExprEnv env = layoutEnv();
             env.context = "the cost (it reads literals, constants, parameters, `count(K)`, `nodes` and `edges`)";
@@ -96,7 +99,7 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
             out.temperature = ExprChecker::coerce(std::move(*v), ir::kFloatType);
         } else {
             g.diags.error(p.name.span, "unknown property `" + n + "` of `layout angles`" +
-                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature"}));
+                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature", "connected"}));
         }
     }
     if (out.temperature && !out.cost)

@@ -1,5 +1,6 @@
 #include "g2d/derivation.hpp"
 
+#include "g2d/connected_guard.hpp"
 #include "g2d/deadline.hpp"
 #include "g2d/incremental_matches.hpp"
 #include "g2d/intersection_guard.hpp"
@@ -160,6 +161,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
     }
     if (angles) checkCanvasFits(*angles);
     AngleStep drawing;
+    ConnectedGuard connectedGuard;
     // Metropolis acceptance (drawing_cost.hpp): the counts and cost of the graph as it is.
     const bool costed = angles && rules.hasDrawingCost();
     const double temperature = costed ? rules.drawingTemperature() : 1;
@@ -371,6 +373,12 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
                                     applied = true;
                                     break;
                                 }
+                            }
+                            if (angles->connected && !connectedGuard.keepsConnected(g, info.shapes[d], m)) {
+                                rules.discardApplications();
+                                ++result.rejectedSplits;
+                                applied = true;
+                                break;
                             }
                             if (!drawing.propose(g, info.shapes[d], m, *angles, rng)) {
                                 rules.discardApplications();

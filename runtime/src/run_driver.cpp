@@ -319,11 +319,11 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
-                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld}\n",
+                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld, \"rejected_splits\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
                         result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
-                        result.rejectedDrawings, result.rejectedByCost);
+                        result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;

@@ -100,11 +100,11 @@ expect_code 1 "$g2d" run t60.g2d -D canvas_width=0.1 -D canvas_height=0.1 -o tin
 has err.txt 'is smaller than the shortest edge of every edge kind'
 [ -e tiny.svg ] && fail "a canvas too small wrote an SVG"
 
-# --connected: one starter, once; no removals; forward rules that could split left out.
+# --connected: one starter, once; no removals; no application may split the output.
 expect_code 0 "$g2d" infer "$examples/2D Networks/connected box.json" --connected -o cbox.g2d
 has cbox.g2d 'priority -1 limit 1;   // one starter, once'
 grep -q 'rule Stop' cbox.g2d && fail "--connected wrote a Stop rule"
-has cbox.g2d '(--connected: only back'
+has cbox.g2d 'connected = true;'
 expect_code 0 "$g2d" check --werror cbox.g2d
 # Pieces of a rule's side are asked to lie near each other.
 expect_code 0 "$g2d" infer "$examples/2D Networks/connected box.json" -o box.g2d

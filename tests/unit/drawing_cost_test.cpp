@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "g2d/connected_guard.hpp"
 #include "g2d/drawing_cost.hpp"
 #include "interp/run_program.hpp"
 #include "test_helpers.hpp"
@@ -148,4 +149,43 @@ TEST_CASE("the Metropolis test accepts a cost rise d with probability exp(-d / T
     constexpr int kTries = 20000;
     for (int i = 0; i < kTries; ++i) accepted += rt::metropolisAccepts(1.5, 2.0, rng) ? 1 : 0;
     CHECK(static_cast<double>(accepted) / kTries == Approx(std::exp(-0.75)).margin(0.015));
+}
+
+TEST_CASE("connected = true refuses an application that splits what it touches or deletes the last node", "[drawing_cost]") {
+    // A path a - b - c - d, and an edge d - a closing it into a cycle on demand.
+    rt::Graph g({rt::KindInfo{rt::ElemClass::Node, false}, rt::KindInfo{rt::ElemClass::Edge, true}});
+    std::vector<rt::NodeId> n;
+    for (int i = 0; i < 4; ++i) n.push_back(g.addNode(0, {static_cast<double>(i), 0}, 0));
+    std::vector<rt::EdgeId> e;
+    for (int i = 0; i < 3; ++i) e.push_back(g.addEdge(1, n[i], n[i + 1], 0));
+    rt::ConnectedGuard guard;
+    auto deletesEdge = [&](rt::EdgeId which) {
+        rt::DaughterShape shape;
+        shape.deletedEdges = {0};
+        const rt::NodeId nodes[] = {g.source(which), g.target(which)};
+        const rt::EdgeId edges[] = {which};
+        return guard.keepsConnected(g, shape, rt::Match{nodes, edges, nullptr});
+    };
+    CHECK_FALSE(deletesEdge(e[1]));   // b - c cut: {a, b} and {c, d}
+    CHECK_FALSE(deletesEdge(e[0]));   // a alone
+    const rt::EdgeId closing = g.addEdge(1, n[3], n[0], 0);
+    CHECK(deletesEdge(e[1]));         // the cycle still joins b and c
+    CHECK(deletesEdge(closing));
+    {
+        // A new node joined to b and d by new edges keeps them together when b - c and c - d go with c.
+        rt::DaughterShape shape;
+        shape.deletedNodes = {2};
+        shape.newNodes = 1;
+        shape.newNodeKinds = {0};
+        shape.newEdges = {{0, -1, 1}, {-1, 1, 1}};
+        const rt::NodeId nodes[] = {n[1], n[3], n[2]};
+        CHECK(guard.keepsConnected(g, shape, rt::Match{nodes, nullptr, nullptr}));
+    }
+    {
+        // Deleting every node empties the graph: refused.
+        rt::DaughterShape shape;
+        shape.deletedNodes = {0, 1, 2, 3};
+        const rt::NodeId nodes[] = {n[0], n[1], n[2], n[3]};
+        CHECK_FALSE(guard.keepsConnected(g, shape, rt::Match{nodes, nullptr, nullptr}));
+    }
 }

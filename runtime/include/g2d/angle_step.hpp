@@ -27,6 +27,7 @@ struct EdgeGeometry {
 
 struct AngleLayoutSpec {
     DrawingSettings settings;
+    bool connected = false;            // `connected = true;`: no application may split what it touches (connected_guard.hpp)
     std::vector<EdgeGeometry> kinds;   // by kind index (nodes' and faces' unused)
 };
 

@@ -358,6 +358,7 @@ struct DerivationResult {
     long long applications = 0;   // rewrites applied (a parallel step applies many)
     long long rejectedDrawings = 0;   // `layout angles`: steps whose drawing was rejected (nothing applied)
     long long rejectedByCost = 0;     // `layout angles` with a cost: proposals the Metropolis test refused (nothing applied)
+    long long rejectedSplits = 0;     // `layout angles { connected = true; }`: proposals refused for splitting what they touch
     StopReason stopped = StopReason::Terminal;
     double seconds = 0;
     // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.
