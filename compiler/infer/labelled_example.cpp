@@ -5,6 +5,7 @@
 #include <map>
 #include <tuple>
 
+#include "infer/direction_groups.hpp"
 #include "infer/straighten.hpp"
 
 namespace g2d::infer {
@@ -18,16 +19,6 @@ double wrap360(double a) {
     a = std::fmod(a + 180.0, 360.0);
     if (a < 0) a += 360.0;
     return a - 180.0;
-}
-// Into [0, 180): the direction of an undirected line.
-double wrap180(double a) {
-    a = std::fmod(a, 180.0);
-    if (a < 0) a += 180.0;
-    return a >= 180.0 ? 0.0 : a;
-}
-double lineDistance(double a, double b) {   // between two line directions, [0, 90]
-    const double d = std::fabs(wrap180(a - b));
-    return std::min(d, 180.0 - d);
 }
 
 std::string at(const ExampleShape& s, int v) {
@@ -64,37 +55,6 @@ void checkPlane(const ExampleShape& s) {
     }
 }
 
-// Directions within the tolerance become one: each edge joins the first
-// group whose first edge is that close, and a group's direction is its edges'
-// mean (as lines, so 179° and 1° are 2° apart).
-std::vector<double> directionGroups(const std::vector<double>& line, double tolerance,
-                                    std::vector<int>& groupOf) {
-    std::vector<double> first;
-    std::vector<std::pair<double, double>> sum;   // of (cos 2a, sin 2a)
-    groupOf.assign(line.size(), -1);
-    for (std::size_t e = 0; e < line.size(); ++e) {
-        int g = -1;
-        for (std::size_t k = 0; k < first.size() && g < 0; ++k)
-            if (lineDistance(first[k], line[e]) <= tolerance) g = static_cast<int>(k);
-        if (g < 0) {
-            g = static_cast<int>(first.size());
-            first.push_back(line[e]);
-            sum.emplace_back(0, 0);
-        }
-        groupOf[e] = g;
-        sum[static_cast<std::size_t>(g)].first += std::cos(2 * line[e] * kPi / 180);
-        sum[static_cast<std::size_t>(g)].second += std::sin(2 * line[e] * kPi / 180);
-    }
-    std::vector<double> mean;
-    for (std::size_t k = 0; k < first.size(); ++k) {
-        const double m = wrap180(degrees(std::atan2(sum[k].second, sum[k].first)) / 2);
-        // A direction that is a whole number of degrees to within rounding is that number.
-        const double whole = std::round(m);
-        mean.push_back(wrap180(std::abs(m - whole) < 1e-6 ? whole : m));
-    }
-    return mean;
-}
-
 }  // namespace
 
 double LabelledExample::direction(int half) const {
@@ -119,15 +79,20 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
 
     std::vector<double> oriented, line;   // per edge: from -> to direction, and as a line
     std::vector<double> length;
+    std::vector<DirectedEdge> directed;
     for (const ExampleEdge& e : shape.edges) {
         const Point a = V[static_cast<std::size_t>(e.from)], b = V[static_cast<std::size_t>(e.to)];
         const double d = degrees(std::atan2(b.y - a.y, b.x - a.x));
         oriented.push_back(wrap360(d));
         line.push_back(wrap180(d));
         length.push_back(std::hypot(b.x - a.x, b.y - a.y));
+        directed.push_back({e.from, e.to, d, length.back()});
     }
-    std::vector<int> groupOf;
-    std::vector<double> groups = directionGroups(line, options.angleTolerance, groupOf);
+    DirectionOptions directionOptions;
+    directionOptions.tolerance = options.angleTolerance;
+    const DirectionGroups found = groupDirections(directed, directionOptions);
+    const std::vector<int>& groupOf = found.groupOf;
+    std::vector<double> groups = found.direction;
     straighten(shape, groupOf, groups);
 
     // Labels: (brush, left, right, direction[, length of a rigid edge]).

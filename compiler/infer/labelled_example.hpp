@@ -3,8 +3,9 @@
 // label (brush, left area, right area, direction θ in [0°, 180°)), cutting
 // it gives two half-edges, and every vertex is a primitive: its half-edges
 // in counter-clockwise order. Directions within a tolerance are one
-// direction (the paper assumes exact self-similarity; drawn examples are a
-// pixel or a degree off).
+// direction unless the example tells them apart (direction_groups.hpp: the
+// paper assumes exact self-similarity; drawn examples are a pixel or a
+// degree off).
 #include <string>
 #include <vector>
 
@@ -45,7 +46,7 @@ struct LabelledExample {
 };
 
 struct LabelOptions {
-    double angleTolerance = 10;   // degrees: directions closer than this are one
+    double angleTolerance = 10;   // degrees: directions closer than this are one, unless told apart
 };
 
 // Throws InputError (crossing or overlapping edges, two edges of a vertex in

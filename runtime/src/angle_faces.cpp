@@ -1,11 +1,14 @@
 // Faces of a planar straight-line drawing whose edges name the face kinds on
 // their sides (angle_faces.hpp): half-edges sorted round each vertex, one
-// walk per cycle, each walk cut into simple cycles at repeated vertices.
+// walk per cycle, each walk cut into simple cycles at repeated vertices;
+// the clockwise ones inside a face are its holes (ring_nesting.hpp).
 #include "g2d/angle_faces.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include "g2d/ring_nesting.hpp"
 
 namespace g2d::rt {
 
@@ -88,24 +91,47 @@ int vote(const HalfEdges& g, const std::vector<int>& cycle) {
     return best;
 }
 
-// Keeps a simple cycle (distinct origins) when it is a bounded face.
-void keep(const HalfEdges& g, const std::vector<vec2>& position, std::vector<int> cycle,
-          std::vector<std::pair<int, TracedFace>>& faces) {
-    if (cycle.size() < 3) return;   // a spike u->v->u
-    const int kind = vote(g, cycle);
-    if (kind < 0) return;
+// A simple cycle (distinct origins) of the walks, by its least half-edge.
+struct Cycle {
+    std::vector<int> halves;   // from the least half-edge
+    Ring ring;                 // its origins and signed area
+    int kind = -1;
+};
+
+void record(const HalfEdges& g, const std::vector<vec2>& position, std::vector<int> halves, std::vector<Cycle>& cycles) {
+    if (halves.size() < 3) return;   // a spike u->v->u
+    Cycle c;
+    c.kind = vote(g, halves);
     // Shoelace about the first corner: less cancellation far from the origin.
-    const vec2 p0 = position[g.origin[cycle[0]]];
-    double area = 0;
-    for (int h : cycle) {
+    const vec2 p0 = position[g.origin[halves[0]]];
+    for (int h : halves) {
         const vec2 a = position[g.origin[h]] - p0, b = position[g.target[h]] - p0;
-        area += a.x * b.y - a.y * b.x;
+        c.ring.area += a.x * b.y - a.y * b.x;
     }
-    if (!(area > 0)) return;
-    std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
-    TracedFace face{kind, {}};
-    for (int h : cycle) face.corners.push_back(g.origin[h]);
-    faces.emplace_back(cycle[0], std::move(face));
+    std::rotate(halves.begin(), std::min_element(halves.begin(), halves.end()), halves.end());
+    for (int h : halves) c.ring.corners.push_back(g.origin[h]);
+    c.halves = std::move(halves);
+    cycles.push_back(std::move(c));
+}
+
+// Bounded faces: counter-clockwise cycles with a kind, each with the
+// clockwise cycles it is the innermost around (its holes).
+std::vector<TracedFace> facesOf(const std::vector<vec2>& position, std::vector<Cycle> cycles) {
+    std::sort(cycles.begin(), cycles.end(), [](const Cycle& a, const Cycle& b) { return a.halves[0] < b.halves[0]; });
+    std::vector<Ring> rings;
+    for (const Cycle& c : cycles) rings.push_back(c.ring);
+    const std::vector<int> around = enclosingRings(position, rings);
+    std::vector<int> faceOf(cycles.size(), -1);
+    std::vector<TracedFace> faces;
+    for (std::size_t i = 0; i < cycles.size(); ++i) {
+        if (!(cycles[i].ring.area > 0) || cycles[i].kind < 0) continue;
+        faceOf[i] = static_cast<int>(faces.size());
+        faces.push_back(TracedFace{cycles[i].kind, std::move(cycles[i].ring.corners), {}});
+    }
+    for (std::size_t i = 0; i < cycles.size(); ++i)
+        if (around[i] >= 0 && faceOf[static_cast<std::size_t>(around[i])] >= 0)
+            faces[static_cast<std::size_t>(faceOf[static_cast<std::size_t>(around[i])])].holes.push_back(std::move(cycles[i].ring.corners));
+    return faces;
 }
 
 }  // namespace
@@ -113,7 +139,7 @@ void keep(const HalfEdges& g, const std::vector<vec2>& position, std::vector<int
 std::vector<TracedFace> traceFaces(const std::vector<vec2>& position, const std::vector<SidedEdge>& edges) {
     const HalfEdges g = build(position, edges);
     const int halves = static_cast<int>(g.valid.size());
-    std::vector<std::pair<int, TracedFace>> faces;   // (least half-edge, face)
+    std::vector<Cycle> cycles;
     std::vector<char> seen(halves, 0);
     // The walk so far: walkHalf[k] leaves walkVertex[k]; at[v] is v's index
     // in walkVertex, -1 when v is not on it. A half-edge reaching a vertex
@@ -130,7 +156,7 @@ std::vector<TracedFace> traceFaces(const std::vector<vec2>& position, const std:
             walkHalf.push_back(h);
             const int v = g.target[h];
             if (const int i = at[v]; i >= 0) {
-                keep(g, position, std::vector<int>(walkHalf.begin() + i, walkHalf.end()), faces);
+                record(g, position, std::vector<int>(walkHalf.begin() + i, walkHalf.end()), cycles);
                 for (size_t k = i + 1; k < walkVertex.size(); ++k) at[walkVertex[k]] = -1;
                 walkVertex.resize(i + 1);
                 walkHalf.resize(i);
@@ -142,11 +168,7 @@ std::vector<TracedFace> traceFaces(const std::vector<vec2>& position, const std:
         } while (h != start);
         at[g.origin[start]] = -1;   // the walk ends where it began: only that vertex is left on it
     }
-    std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<TracedFace> out;
-    out.reserve(faces.size());
-    for (auto& f : faces) out.push_back(std::move(f.second));
-    return out;
+    return facesOf(position, std::move(cycles));
 }
 
 }  // namespace g2d::rt

@@ -38,12 +38,17 @@ void drawItem(const Graph& g, ElemClass cls, std::uint32_t id, const std::vector
     item.cls = cls;
     item.id = id;
     item.corners.clear();
+    item.holes.clear();
     item.props.clear();
     item.depth = 0;
     item.turnedAway = false;
     if (cls == ElemClass::Face) {
         CornerId c = g.firstCorner(id);
         for (int i = 0; i < g.cornerCount(id); ++i, c = g.nextCorner(c)) item.corners.push_back(g.pos(g.cornerNode(c)));
+        for (const std::vector<NodeId>& ring : g.faceHoles(id)) {
+            item.holes.emplace_back();
+            for (NodeId n : ring) item.holes.back().push_back(g.pos(n));
+        }
         item.a = item.b = g.centroid(id);
         resolve(item, g.faceKind(id), g.faceStyle(id), g, enumValueNames, kindStyle);
     } else if (cls == ElemClass::Edge) {

@@ -25,7 +25,14 @@ std::size_t addDrawnFaces(Graph& g, RuleSet& rules, const AngleLayoutSpec& spec,
     for (const TracedFace& f : faces) {
         corners.clear();
         for (int v : f.corners) corners.push_back(host[static_cast<std::size_t>(v)]);
-        rules.addFaceWithDefaults(g, f.kind, corners, age);
+        const FaceId id = rules.addFaceWithDefaults(g, f.kind, corners, age);
+        if (f.holes.empty()) continue;
+        std::vector<std::vector<NodeId>> holes;
+        for (const std::vector<int>& ring : f.holes) {
+            holes.emplace_back();
+            for (int v : ring) holes.back().push_back(host[static_cast<std::size_t>(v)]);
+        }
+        g.setFaceHoles(id, std::move(holes));
     }
     return faces.size();
 }

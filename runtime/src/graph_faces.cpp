@@ -2,6 +2,7 @@
 // intrusive doubly linked lists, the face's cycle and the node's corners.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "g2d/geometry3.hpp"
 #include "g2d/graph.hpp"
@@ -59,8 +60,16 @@ void Graph::removeFace(FaceId f) {
     CornerId c = rec.firstCorner;
     for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) unlinkAtNode(c);
     retire(rec, faces_, faceStyleList_, f);
+    if (f < faceHoles_.size()) faceHoles_[f].clear();
     touchFace(f);
     --liveFaces_;
+}
+
+void Graph::setFaceHoles(FaceId f, std::vector<std::vector<NodeId>> rings) {
+    if (!faceAlive(f)) throw std::logic_error("holes for a dead face");
+    if (rings.empty() && f >= faceHoles_.size()) return;
+    if (f >= faceHoles_.size()) faceHoles_.resize(faces_.size());
+    faceHoles_[f] = std::move(rings);
 }
 
 // A face's corners changed: its own facts, its anchor's matches, and (for
@@ -147,6 +156,8 @@ int Graph::insertBetween(NodeId a, NodeId b, NodeId m) {
 
 void Graph::removeFacesAt(NodeId n) {
     while (firstCornerAt(n) != kNoId) removeFace(cornerFace(firstCornerAt(n)));
+    for (auto& rings : faceHoles_)   // empty but after a drawing's faces were added
+        std::erase_if(rings, [n](const std::vector<NodeId>& ring) { return std::find(ring.begin(), ring.end(), n) != ring.end(); });
 }
 
 int Graph::sideFaceCount(NodeId u, NodeId v) const {

@@ -101,6 +101,22 @@ std::vector<std::uint32_t> multigraphKeys(const Graph& g) {
     return keys;
 }
 
+// A face's holes (`layout angles`' islands) as `"holes": [[node, ...], ...]`;
+// nothing for a face without, so other outputs keep their bytes.
+void writeHoles(TextOut& out, std::span<const std::vector<NodeId>> holes) {
+    if (holes.empty()) return;
+    out.write(", \"holes\": [");
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+        out.write(h ? ", [" : "[");
+        for (std::size_t i = 0; i < holes[h].size(); ++i) {
+            if (i) out.write(", ");
+            out.integer(holes[h][i]);
+        }
+        out.write(']');
+    }
+    out.write(']');
+}
+
 }  // namespace
 
 std::string jsonString(const std::string& s) {
@@ -191,7 +207,9 @@ void writeJson(const Graph& g, const JsonSchema& schema, const std::vector<std::
                 if (i) out.write(", ");
                 out.integer(g.cornerNode(c));
             }
-            out.write("], \"age\": ");
+            out.write(']');
+            writeHoles(out, g.faceHoles(f));
+            out.write(", \"age\": ");
             out.integer(g.faceAge(f));
             writeAttributes(out, attr, schema, ElemClass::Face, "face", f, k);
             out.write('}');

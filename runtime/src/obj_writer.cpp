@@ -6,8 +6,40 @@
 #include <vector>
 
 #include "g2d/ops.hpp"
+#include "g2d/polygon_triangles.hpp"
 
 namespace g2d::rt {
+
+namespace {
+
+// A face with holes as the triangles that cover it (OBJ has no holes).
+void writeTriangles(const Graph& g, FaceId f, const std::vector<std::uint32_t>& index, TextOut& out) {
+    std::vector<NodeId> nodes;
+    std::vector<vec2> points;
+    std::vector<int> outer;
+    std::vector<std::vector<int>> holes;
+    auto corner = [&](NodeId n) {
+        nodes.push_back(n);
+        points.push_back(g.pos(n));
+        return static_cast<int>(nodes.size()) - 1;
+    };
+    CornerId c = g.firstCorner(f);
+    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) outer.push_back(corner(g.cornerNode(c)));
+    for (const std::vector<NodeId>& ring : g.faceHoles(f)) {
+        holes.emplace_back();
+        for (NodeId n : ring) holes.back().push_back(corner(n));
+    }
+    for (const auto& t : triangulate(points, outer, holes)) {
+        out.write('f');
+        for (int k : t) {
+            out.write(' ');
+            out.integer(index[nodes[static_cast<std::size_t>(k)]]);
+        }
+        out.write('\n');
+    }
+}
+
+}  // namespace
 
 void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
     out.write("# g2d: ");
@@ -42,6 +74,10 @@ void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
         out.write(schema.kindNames[k]);
         out.write('\n');
         for (FaceId f : faces) {
+            if (!g.faceHoles(f).empty()) {
+                writeTriangles(g, f, index, out);
+                continue;
+            }
             out.write('f');
             CornerId c = g.firstCorner(f);
             for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) {

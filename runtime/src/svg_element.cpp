@@ -258,6 +258,27 @@ void SvgBody::point(vec2 p, char between) {
     coord(p.y);
 }
 
+// A face with holes: one path of its rings, the holes left unfilled by
+// `evenodd` (and by `nonzero` too: they run the other way round).
+void SvgBody::ringsPath(const DrawItem& it) {
+    out_.write("<path d=\"");
+    auto ring = [&](const std::vector<vec2>& corners) {
+        for (std::size_t i = 0; i < corners.size(); ++i) {
+            out_.write(i == 0 ? "M" : " L");
+            point(corners[i], ',');
+        }
+        out_.write(" Z");
+    };
+    ring(it.corners);
+    for (const std::vector<vec2>& hole : it.holes) {
+        out_.write(' ');
+        ring(hole);
+    }
+    out_.write('"');
+    passThrough(out_, it, {{"fill", "#d9d9d9"}, {"stroke", "none"}, {"fill-rule", "evenodd"}});
+    out_.write("/>\n");
+}
+
 void SvgBody::item(const DrawItem& it) {
     const Shape shape = shapeOf(it);
     if (shape == Shape::None || shape == Shape::Unknown) return;
@@ -268,6 +289,10 @@ void SvgBody::item(const DrawItem& it) {
     const vec2 c = centre(it);
     switch (shape) {
     case Shape::Polygon: {
+        if (!it.holes.empty()) {
+            ringsPath(it);
+            break;
+        }
         out.write("<polygon points=\"");
         bool first = true;
         for (const vec2& p : it.corners) {

@@ -1,5 +1,6 @@
 // Faces traced from a planar drawing whose edges name the kinds on their
-// sides (angle_faces.hpp): kinds, corner order, spikes, holes, pinches.
+// sides (angle_faces.hpp): kinds, corner order, spikes, holes, pinches,
+// and which face each hole (an island's outside) belongs to.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -89,8 +90,12 @@ TEST_CASE("a triangle hole is its own face and its outside is not", "[angle-face
     REQUIRE(faces.size() == 2);
     CHECK(faces[0].kind == 0);
     CHECK(faces[0].corners == Corners{0, 1, 2, 3});
+    // The triangle's outside, clockwise from its least half-edge (5->4), is
+    // the square's hole.
+    CHECK(faces[0].holes == std::vector<Corners>{{5, 4, 6}});
     CHECK(faces[1].kind == 1);
     CHECK(faces[1].corners == Corners{4, 5, 6});
+    CHECK(faces[1].holes.empty());
 }
 
 TEST_CASE("a bridge to a triangle hole is cut away", "[angle-faces]") {
@@ -103,7 +108,72 @@ TEST_CASE("a bridge to a triangle hole is cut away", "[angle-faces]") {
     const auto faces = traceFaces(p, edges);
     REQUIRE(faces.size() == 2);
     CHECK(faces[0].corners == Corners{0, 1, 2, 3});
+    CHECK(faces[0].holes == std::vector<Corners>{{5, 4, 6}});   // cut off the square's walk
     CHECK(faces[1].corners == Corners{4, 5, 6});
+}
+
+namespace {
+
+// A square of side `side` from `at`, counter-clockwise, `inside` on its left
+// and `outside` on its right; its corners appended to `p`.
+void addSquare(std::vector<vec2>& p, std::vector<SidedEdge>& edges, vec2 at, double side, int inside, int outside) {
+    const int v = static_cast<int>(p.size());
+    p.insert(p.end(), {at, {at.x + side, at.y}, {at.x + side, at.y + side}, {at.x, at.y + side}});
+    for (int i = 0; i < 4; ++i) edges.push_back({v + i, v + (i + 1) % 4, inside, outside});
+}
+
+}  // namespace
+
+TEST_CASE("islands are holes of the innermost face around them, each clockwise", "[angle-faces]") {
+    // A 10-square (kind 0) holding two islands: a 2-square (kind 1) and a
+    // 4-square (kind 2) that holds a 1-square (kind 3); a 1-square outside all.
+    std::vector<vec2> p;
+    std::vector<SidedEdge> edges;
+    addSquare(p, edges, {0, 0}, 10, 0, -1);   // corners 0-3
+    addSquare(p, edges, {1, 1}, 2, 1, 0);     // 4-7
+    addSquare(p, edges, {5, 5}, 4, 2, 0);     // 8-11
+    addSquare(p, edges, {6, 6}, 1, 3, 2);     // 12-15
+    addSquare(p, edges, {20, 0}, 1, 4, -1);   // 16-19
+    const auto faces = traceFaces(p, edges);
+    REQUIRE(faces.size() == 5);
+    CHECK(faces[0].holes == std::vector<Corners>{{5, 4, 7, 6}, {9, 8, 11, 10}});
+    CHECK(faces[1].holes.empty());
+    CHECK(faces[2].holes == std::vector<Corners>{{13, 12, 15, 14}});
+    CHECK(faces[3].holes.empty());
+    CHECK(faces[4].holes.empty());
+    for (const TracedFace& f : faces)
+        for (const Corners& hole : f.holes) CHECK(signedArea(p, hole) < 0);
+}
+
+TEST_CASE("an island in a region that is no face is no hole", "[angle-faces]") {
+    // A frame: an outer square whose inside has no kind, but for a ring of
+    // kind 0 around an inner square with no kind; an island in the middle.
+    std::vector<vec2> p;
+    std::vector<SidedEdge> edges;
+    addSquare(p, edges, {0, 0}, 10, 0, -1);
+    addSquare(p, edges, {2, 2}, 6, -1, 0);    // the frame's inner side: no kind inside
+    addSquare(p, edges, {4, 4}, 2, 1, -1);    // in the unkinded middle
+    const auto faces = traceFaces(p, edges);
+    REQUIRE(faces.size() == 2);
+    CHECK(faces[0].kind == 0);
+    CHECK(faces[0].holes == std::vector<Corners>{{5, 4, 7, 6}});   // the middle, not the island
+    CHECK(faces[1].kind == 1);
+    CHECK(faces[1].holes.empty());
+}
+
+TEST_CASE("a hole touching its face at a corner is cut off the walk", "[angle-faces]") {
+    // A triangle inside a square, sharing the square's corner 2.
+    const std::vector<vec2> p{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 3}, {3, 2}};
+    auto edges = squareEdges(0);
+    edges.push_back({2, 4, 1, 0});   // counter-clockwise round the triangle
+    edges.push_back({4, 5, 1, 0});
+    edges.push_back({5, 2, 1, 0});
+    const auto faces = traceFaces(p, edges);
+    REQUIRE(faces.size() == 2);
+    CHECK(faces[0].corners == Corners{0, 1, 2, 3});
+    REQUIRE(faces[0].holes.size() == 1);
+    CHECK(signedArea(p, faces[0].holes[0]) == -1.5);
+    CHECK(faces[1].kind == 1);
 }
 
 TEST_CASE("faces come in the order of their least half-edge", "[angle-faces]") {

@@ -15,6 +15,7 @@
 #include "front/compile.hpp"
 #include "g2d/angle_drawing.hpp"
 #include "infer/example_json.hpp"
+#include "infer/example_svg.hpp"
 #include "infer/grammar_writer.hpp"
 #include "infer_examples.hpp"
 #include "interp/run_program.hpp"
@@ -38,10 +39,46 @@ double wrap(double d) {
     return d;
 }
 
+// A vertex's star as drawn: the directions of its edges (degrees, ascending).
+using Star = std::vector<double>;
+
 struct Output {
     std::size_t nodes = 0, faces = 0;
     std::vector<std::pair<double, double>> positions;   // sorted
+    std::vector<Star> stars;                            // per node, as drawn
 };
+
+Star starOf(rt::vec2 at, const std::vector<rt::vec2>& others) {
+    Star star;
+    for (rt::vec2 o : others) star.push_back(degreesOf(o - at));
+    std::sort(star.begin(), star.end());
+    return star;
+}
+
+// Equal up to `slack` degrees, the first direction of either taken anywhere
+// in the other (a direction near 180° may sort first or last).
+bool sameStar(const Star& a, const Star& b, double slack) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t r = 0; r < b.size(); ++r) {
+        bool same = true;
+        for (std::size_t i = 0; i < a.size() && same; ++i) same = std::abs(wrap(a[i] - b[(i + r) % b.size()])) < slack;
+        if (same) return true;
+    }
+    return a.empty();
+}
+
+// The stars of the example as drawn (its vertices before straightening).
+std::vector<Star> exampleStars(const infer::ExampleShape& shape) {
+    std::vector<std::vector<rt::vec2>> ends(shape.vertices.size());
+    auto at = [&](int v) { return rt::vec2{shape.vertices[static_cast<std::size_t>(v)].x, shape.vertices[static_cast<std::size_t>(v)].y}; };
+    for (const infer::ExampleEdge& e : shape.edges) {
+        ends[static_cast<std::size_t>(e.from)].push_back(at(e.to));
+        ends[static_cast<std::size_t>(e.to)].push_back(at(e.from));
+    }
+    std::vector<Star> stars;
+    for (std::size_t v = 0; v < shape.vertices.size(); ++v) stars.push_back(starOf(at(static_cast<int>(v)), ends[v]));
+    return stars;
+}
 
 // Checks one output against the example; returns its summary.
 Output checkOutput(const infer::LabelledExample& ex, const ir::Program& prog, const rt::Graph& g) {
@@ -76,6 +113,9 @@ Output checkOutput(const infer::LabelledExample& ex, const ir::Program& prog, co
     // Every vertex star is its primitive's: the half-edges by direction.
     for (rt::NodeId n = 0; n < g.nodeCapacity(); ++n) {
         if (!g.nodeAlive(n)) continue;
+        std::vector<rt::vec2> others;
+        for (rt::EdgeId e : g.incident(n)) others.push_back(g.pos(g.source(e) == n ? g.target(e) : g.source(e)));
+        out.stars.push_back(starOf(g.pos(n), others));
         const int primitive = indexOf(prog.kinds[static_cast<std::size_t>(g.nodeKind(n))].name);
         std::vector<std::pair<double, int>> star;
         for (rt::EdgeId e : g.incident(n)) {
@@ -182,4 +222,32 @@ TEST_CASE("a drawn example a pixel off is straightened so that its loops close",
     const infer::LabelledExample ex = infer::labelExample(shape);
     CHECK(ex.snappedEdges > 0);
     CHECK(anyDrawn(generate(ex, "triangle.json")));
+}
+
+TEST_CASE("directions 8 degrees apart that the example draws exactly stay apart, and outputs have only its stars", "[infer][generation]") {
+    // Two parallelograms, sides at 0° and 45°, and at 0° and 53.13° (3-4-5),
+    // each slanted side drawn twice exactly. Within the 10° tolerance, yet
+    // the example keeps them apart: joined at 49°, every output vertex would
+    // have a star the example does not have.
+    const std::string svg = R"svg(<svg xmlns="http://www.w3.org/2000/svg">
+  <title>slants</title>
+  <g stroke="black" fill="#d2b48c">
+    <polygon points="0,0 80,0 120,-40 40,-40"/>
+    <polygon points="200,0 280,0 310,-40 230,-40"/>
+  </g>
+</svg>
+)svg";
+    const infer::ExampleShape shape = infer::readExampleSvg(svg, "slants.svg");
+    const infer::LabelledExample ex = infer::labelExample(shape);
+    std::set<long long> directions;
+    for (const infer::EdgeLabel& l : ex.labels) directions.insert(std::llround(l.theta * 100));
+    CHECK(directions == std::set<long long>{0, 4500, 5313});
+    const std::vector<Star> stars = exampleStars(shape);
+    const std::vector<Output> outputs = generate(ex, "slants.svg");
+    CHECK(anyDrawn(outputs));
+    for (const Output& o : outputs)
+        for (const Star& star : o.stars) {
+            INFO("an output vertex with edges at " << Catch::Detail::stringify(star));
+            CHECK(std::any_of(stars.begin(), stars.end(), [&](const Star& s) { return sameStar(star, s, 0.01); }));
+        }
 }

@@ -3,11 +3,13 @@
 // graph hierarchy and the rules of Algorithms 1 and 2.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "infer/example_json.hpp"
 #include "infer_examples.hpp"
@@ -245,6 +247,50 @@ TEST_CASE("labels and primitives of the author's 45 examples", "[infer][examples
         CHECK(static_cast<int>(ex.primitives.size()) == expected.at(key).second);
     }
     CHECK(files == 45);
+}
+
+namespace {
+
+// Separate segments from (x, y) in direction `degrees`, `length` long (example units).
+LabelledExample segments(const std::vector<std::tuple<double, double, double, double>>& drawn) {
+    ExampleShape s;
+    s.source = "segments";
+    s.brushes = {{"Line", "", false, 0, 0}};
+    for (const auto& [x, y, degrees, length] : drawn) {
+        const int v = static_cast<int>(s.vertices.size());
+        s.vertices.push_back({x, y});
+        s.vertices.push_back({x + length * std::cos(degrees * M_PI / 180), y + length * std::sin(degrees * M_PI / 180)});
+        s.edges.push_back({v, v + 1, 0, -1, -1, "edge " + std::to_string(v / 2)});
+    }
+    return labelExample(s);
+}
+
+std::set<long long> directionsOf(const LabelledExample& ex) {   // hundredths of a degree
+    std::set<long long> out;
+    for (const EdgeLabel& l : ex.labels) out.insert(std::llround(l.theta * 100));
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("the angle tolerance joins drawing noise, never directions the example tells apart", "[infer]") {
+    // A single edge 5° off joins the direction: noise.
+    CHECK(directionsOf(segments({{0, 0, 0, 2}, {0, 1, 0, 2}, {0, 2, 5, 2}})).size() == 1);
+    // Each drawn exactly twice, 8° apart: two directions.
+    CHECK(directionsOf(segments({{0, 0, 45, 2}, {3, 0, 45, 2}, {6, 0, 53, 2}, {9, 0, 53, 2}})) == std::set<long long>{4500, 5300});
+    // ... but not when a pixel at the end of their edges (1/40 unit over 2
+    // units: 0.72° each) could make the difference.
+    CHECK(directionsOf(segments({{0, 0, 0, 2}, {0, 1, 0, 2}, {0, 2, 0.3, 2}, {0, 3, 0.3, 2}})).size() == 1);
+    // Two edges leaving one vertex 8° apart would lie on one ray: two
+    // directions, where one was an error ("two edges in one direction").
+    ExampleShape wedge;
+    wedge.source = "wedge";
+    wedge.brushes = {{"Line", "", false, 0, 0}};
+    wedge.vertices = {{0, 0}, {2 * std::cos(M_PI / 4), 2 * std::sin(M_PI / 4)}, {2 * std::cos(53 * M_PI / 180), 2 * std::sin(53 * M_PI / 180)}};
+    wedge.edges = {{0, 1, 0, -1, -1, "edge 0"}, {0, 2, 0, -1, -1, "edge 1"}};
+    const LabelledExample ex = labelExample(wedge);
+    CHECK(directionsOf(ex) == std::set<long long>{4500, 5300});
+    CHECK(ex.primitives.size() == 3);
 }
 
 TEST_CASE("the triangle needs one starter rule and nothing else, as the author's tool finds", "[infer][examples]") {

@@ -23,6 +23,7 @@ struct SidedEdge {
 struct TracedFace {
     int kind = -1;
     std::vector<int> corners;   // counter-clockwise (positive signed area), distinct
+    std::vector<std::vector<int>> holes;   // clockwise rings inside it (islands), each distinct
 };
 
 // The bounded faces of the drawing (`position` per vertex, `edges` planar:
@@ -39,13 +40,20 @@ struct TracedFace {
 // - Kept: simple cycles with positive signed area, >= 3 corners and kind
 //   >= 0. A component's outer boundary and a hole's boundary run clockwise
 //   (negative area), so they are never faces; the hole is its own face.
+// - Holes: a clockwise cycle is a hole of the face whose cycle is the
+//   innermost counter-clockwise one around it (ring_nesting.hpp): an island
+//   in the face, or a part of the face's boundary cut off at a repeated
+//   vertex (pinched or joined by a bridge). None when that cycle is no face
+//   (kind -1) or there is none (the unbounded face). A hole's corners start
+//   at its least half-edge's start vertex; holes in the order of those.
 // - Order: by each face's least half-edge (edge index * 2, + 1 for
 //   to->from); its corners start at that half-edge's start vertex. So the
 //   result depends on the input only, not on the walk.
 // - Edges with an end out of range, from == to, or an end at a non-finite
 //   position are left out (as if absent); nothing throws.
 //
-// O(E log E) for E edges (the angular sort).
+// O(E log E) for E edges (the angular sort), plus the holes' nesting:
+// O(H x corners of the faces around them) for H clockwise cycles.
 std::vector<TracedFace> traceFaces(const std::vector<vec2>& position, const std::vector<SidedEdge>& edges);
 
 }  // namespace g2d::rt

@@ -7,7 +7,8 @@
 namespace g2d::rt {
 
 // Adds the bounded faces traceFaces finds (angle_faces.hpp), with their
-// kinds' default attributes (RuleSet::addFaceWithDefaults), at `age`.
+// kinds' default attributes (RuleSet::addFaceWithDefaults), at `age`,
+// and their holes (Graph::setFaceHoles).
 // Returns how many.
 std::size_t addDrawnFaces(Graph& g, RuleSet& rules, const AngleLayoutSpec& spec, long long age);
 

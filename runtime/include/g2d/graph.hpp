@@ -232,6 +232,15 @@ public:
     void faceReshaped(FaceId f);
     void removeCorner(CornerId c);
     void moveCorner(CornerId c, NodeId n);
+    // A face's holes: rings of nodes inside it, clockwise, that it does not
+    // cover (an island of the drawing). Only `layout angles`' drawn faces
+    // have them, set after the derivation, for the writers; a face's facts
+    // (area, centroid, ...) are its outer ring's. Removing the face drops
+    // them, and removing a node drops the rings it is on.
+    void setFaceHoles(FaceId f, std::vector<std::vector<NodeId>> rings);
+    std::span<const std::vector<NodeId>> faceHoles(FaceId f) const {
+        return f < faceHoles_.size() ? std::span<const std::vector<NodeId>>(faceHoles_[f]) : std::span<const std::vector<NodeId>>();
+    }
     bool faceAlive(FaceId f) const { return f < faces_.size() && faces_[f].alive; }
     std::size_t faceCount() const { return liveFaces_; }
     std::size_t faceCapacity() const { return faces_.size(); }   // ids are below this
@@ -506,6 +515,7 @@ private:
     GrowArray<CornerRec> corners_;
     GrowArray<NodeCorners> nodeCorners_;
     std::vector<FaceId> dirtyFaces_;
+    std::vector<std::vector<std::vector<NodeId>>> faceHoles_;   // by face id; empty until a face has holes
 };
 
 template <class Rec>

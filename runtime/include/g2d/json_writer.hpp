@@ -2,7 +2,9 @@
 // Writes a graph in NetworkX's node-link format (readable by
 // networkx.node_link_graph): a directed multigraph whose nodes carry kind,
 // pos, age and attributes, and whose links carry source, target, key, kind,
-// directed, age and attributes. Numbers print as the shortest round-trip
+// directed, age and attributes; faces (when the grammar has face kinds)
+// carry id, kind, corners, holes (if any: rings of node ids inside the face
+// that it does not cover), age and attributes. Numbers print as the shortest round-trip
 // decimal, so every back end writes the same bytes.
 #include <functional>
 #include <string>

@@ -6,7 +6,9 @@
 //
 // Properties with a meaning of their own:
 //   tag     circle | line | rect | path | image | text | polyline | none
-//           (default: circle for nodes, line for edges)
+//           (default: circle for nodes, line for edges, polygon for faces;
+//           a face with holes, Graph::faceHoles, is one path of its rings
+//           with fill-rule evenodd)
 //   r       circle radius (default 0.1)
 //   width, height   rect and image size, centred on the node
 //   rotate  degrees, counter-clockwise, about the node (rect, image, text)
@@ -39,6 +41,7 @@ struct DrawItem {
     std::uint32_t id = 0;
     vec2 a{0, 0}, b{0, 0};                 // node position, or edge endpoints (a face: its corner mean)
     std::vector<vec2> corners;             // a face's corners, in order
+    std::vector<std::vector<vec2>> holes;  // a face's holes (Graph::faceHoles), each a ring
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
     double depth = 0;                      // 3D: the distance from the viewer (farther drawn first)
     bool turnedAway = false;               // 3D: a face seen from its back (drawn before those seen from the front)

@@ -45,6 +45,7 @@ public:
 private:
     void coord(double x);
     void point(vec2 p, char between);
+    void ringsPath(const DrawItem& it);
     void continueRun(const DrawItem& it);
 
     TextOut& out_;
