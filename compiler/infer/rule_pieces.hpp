@@ -23,10 +23,12 @@ int pieceCount(const RuleSide& side, int interface);
 bool keepsConnected(const RuleSides& sides);
 
 // The conditions that keep a match of `match` (a side of several pieces)
-// local: for each piece after the first, `where distance(xA.pos, xB.pos) <= D;`
-// with xA an interface node of the first piece and xB one of that piece, and
-// D the longest the other side, `daughter`, can draw the path between them
-// (its labels' longest lengths along the path that allows the least).
+// local: for each piece after the first, `where distance(xB.pos, xA.pos + C) <= D
+// and distance(xA.pos, xB.pos - C) <= D;` with xA an interface node of the
+// first piece and xB one of that piece: the other side, `daughter`, draws
+// the path between them as C (each edge's direction times its middle
+// length) give or take D (half of each length range), along the path that
+// allows the least.
 // Empty for a side of one piece.
 std::vector<std::string> nearnessConditions(const LabelledExample& ex, const RuleSide& match, const RuleSide& daughter, int interface);
 

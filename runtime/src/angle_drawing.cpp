@@ -221,7 +221,8 @@ bool acceptable(const AngleGraph& g, const DrawingSettings& st, const System& s,
     std::fill(moved.begin(), moved.end(), 0);
     for (int v : s.freeVertices) moved[v] = 1;
     for (int e : s.edges) moved[g.edges[e].from] = moved[g.edges[e].to] = 1;
-    return drawingIsPlanar(pos, g.edges, st.separation, moved) && (!st.consistentAreas || areasConsistent(pos, g.edges, moved));
+    return drawingIsPlanar(pos, g.edges, st.separation, moved, g.surroundings) &&
+           (!st.consistentAreas || areasConsistent(pos, g.edges, moved));
 }
 
 }  // namespace

@@ -194,9 +194,39 @@ bool planarByGrid(const Checker& ck, const std::vector<Item>& items, const std::
 
 }  // namespace
 
-bool drawingIsPlanar(const std::vector<vec2>& position, const std::vector<AngleEdge>& edges, double separation,
-                     const std::vector<char>& moved) {
-    const int nv = static_cast<int>(position.size());
+namespace {
+
+// The part's positions and items, then the surroundings near its tested items, fixed.
+void addSurroundings(const FixedSurroundings& around, const std::vector<int>& tests, double sep, std::vector<vec2>& position,
+                     std::vector<Item>& items) {
+    vec2 lo{HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL};
+    for (int t : tests)
+        for (int v : {items[static_cast<std::size_t>(t)].a, items[static_cast<std::size_t>(t)].b}) {
+            lo = {std::min(lo.x, position[static_cast<std::size_t>(v)].x), std::min(lo.y, position[static_cast<std::size_t>(v)].y)};
+            hi = {std::max(hi.x, position[static_cast<std::size_t>(v)].x), std::max(hi.y, position[static_cast<std::size_t>(v)].y)};
+        }
+    std::vector<FixedSegment> found;
+    around.near({lo.x - sep, lo.y - sep}, {hi.x + sep, hi.y + sep}, found);
+    auto end = [&](int known, vec2 at) {
+        if (known >= 0) return known;
+        position.push_back(at);
+        return static_cast<int>(position.size()) - 1;
+    };
+    for (const FixedSegment& f : found) {
+        const int a = end(f.endA, f.a);
+        const int b = f.a == f.b && f.endA == f.endB ? a : end(f.endB, f.b);
+        items.push_back({a, b});
+    }
+}
+
+}  // namespace
+
+bool drawingIsPlanar(const std::vector<vec2>& partPosition, const std::vector<AngleEdge>& edges, double separation,
+                     const std::vector<char>& moved, const FixedSurroundings* surroundings) {
+    std::vector<vec2> withSurroundings;
+    if (surroundings) withSurroundings = partPosition;
+    const std::vector<vec2>& position = surroundings ? withSurroundings : partPosition;
+    const int nv = static_cast<int>(partPosition.size());
     const double sep = separation > 0 && std::isfinite(separation) ? separation : 0.0;
     for (const vec2& p : position)
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
@@ -223,6 +253,10 @@ bool drawingIsPlanar(const std::vector<vec2>& position, const std::vector<AngleE
             tests.push_back(i);
         }
     if (tests.empty()) return true;
+    if (surroundings) {
+        addSurroundings(*surroundings, tests, sep, withSurroundings, items);
+        tested.resize(items.size(), 0);
+    }
     constexpr std::size_t kScanMax = 32;   // beyond this many, a grid is cheaper than scans
     return tests.size() <= kScanMax ? planarByScan(ck, items, tests, tested) : planarByGrid(ck, items, tests, tested);
 }

@@ -160,7 +160,7 @@ void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits,
         angles = &*grammarCanvas;
     }
     if (angles) checkCanvasFits(*angles);
-    AngleStep drawing;
+    AngleStep drawing(limits.wholeDrawings);
     ConnectedGuard connectedGuard;
     // Metropolis acceptance (drawing_cost.hpp): the counts and cost of the graph as it is.
     const bool costed = angles && rules.hasDrawingCost();

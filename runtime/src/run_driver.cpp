@@ -117,6 +117,7 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
     options.maxElements = settings.maxElements;
     options.timeoutSeconds = settings.timeoutSeconds;
     options.verifyMatches = settings.verifyMatches;
+    options.wholeDrawings = settings.wholeDrawings;
     options.drawingCanvas = out.canvas;
     derive(
         grammar.graph(), grammar.rules(), rng, options, out.result,

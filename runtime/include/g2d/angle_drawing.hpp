@@ -31,12 +31,29 @@ struct AngleEdge {
     int left = -1, right = -1;  // the area on either side of from -> to (-1: none), for consistentAreas
 };
 
+// What lies around a part of a drawing, fixed: AngleStep draws only the
+// part a change can move and asks its spatial index for the rest.
+struct FixedSegment {
+    vec2 a, b;          // an isolated node: a == b
+    int endA = -1;      // the part's vertex at a (a fixed one), or -1: a node outside the part
+    int endB = -1;
+};
+class FixedSurroundings {
+public:
+    virtual ~FixedSurroundings() = default;
+    // Appends every fixed edge and isolated node outside the part whose box meets [lo, hi].
+    virtual void near(vec2 lo, vec2 hi, std::vector<FixedSegment>& out) const = 0;
+};
+
 // The graph after the proposed change.
 struct AngleGraph {
     std::vector<vec2> position;   // per vertex: its position (a free vertex's is only a guess)
     std::vector<char> free;       // per vertex: 1 if it may move (the change's new vertices); missing: 0
     std::vector<AngleEdge> edges; // every edge of the graph
     std::vector<char> created;    // per edge: 1 if the change made it (solved even between fixed vertices); missing: 0
+    // Null: the graph is the whole drawing. Otherwise it is a part, which
+    // holds every edge at a vertex that may be freed, and the rest is here.
+    const FixedSurroundings* surroundings = nullptr;
 };
 
 struct DrawingSettings {
@@ -77,8 +94,9 @@ DrawingResult drawAngleGraph(const AngleGraph& graph, const DrawingSettings& set
 // the drawing non-planar. Only pairs involving a vertex of `moved` (or its
 // edges) are tested when `moved` is not empty (all zero: nothing is tested);
 // every pair otherwise. A few moved vertices cost one scan of the edges.
+// `surroundings`: the edges and nodes around a part, tested against it too.
 bool drawingIsPlanar(const std::vector<vec2>& position, const std::vector<AngleEdge>& edges, double separation,
-                     const std::vector<char>& moved = {});
+                     const std::vector<char>& moved = {}, const FixedSurroundings* surroundings = nullptr);
 
 // Whether every connected component that contains a `moved` vertex, or whose
 // bounding box meets one that does, lies in a region of the area its edges

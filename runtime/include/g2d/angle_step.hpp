@@ -10,6 +10,7 @@
 // What an application does to the graph is static per daughter
 // (DaughterShape, decided by the compiler's lowering), so the derivation
 // needs nothing from a back end but the prepared match.
+#include <memory>
 #include <vector>
 
 #include "g2d/angle_drawing.hpp"
@@ -44,23 +45,46 @@ struct DaughterShape {
     std::vector<int> newNodeKinds;     // per new node, in creation order (the cost's counts)
 };
 
+// Draws each proposal. Without areas to keep consistent, only the part of
+// the graph the change can move is built (the vertices within I - 1 edges of
+// the change, and their edges: every vertex the step may free is among
+// them), and the rest comes from a spatial index of the graph's edges kept
+// up to date after each commit: a proposal then costs what its
+// neighbourhood does, at any size of the graph, and is drawn exactly as the
+// whole graph would draw it (same system, same draws, same tests).
 class AngleStep {
 public:
+    // `whole`: always build the system from the whole graph (the reference
+    // the part must equal; for tests).
+    explicit AngleStep(bool whole = false) : whole_(whole) {}
     // Draws the graph `shape` would make of `g` at `m`. Returns whether a
     // drawing was accepted; its positions wait for place().
     bool propose(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, Rng& rng);
-    // After the commit: the new nodes (ids from newNodesFrom) and freed old ones take their positions.
-    void place(Graph& g, NodeId newNodesFrom) const;
+    // After the commit: the new nodes (ids from newNodesFrom) and freed old
+    // ones take their positions, and the index follows the step's changes
+    // (g's change list, not yet forgotten).
+    void place(Graph& g, NodeId newNodesFrom);
 
     long long rejected() const { return rejected_; }
 
 private:
+    class Index;
+    void markDeleted(const Graph& g, const DaughterShape& shape, Match m);
+    void unmarkDeleted();
+    void buildWhole(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, AngleGraph& ag);
+    void buildPart(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, AngleGraph& ag);
+    AngleEdge edgeOf(const AngleLayoutSpec& spec, int kind, int from, int to) const;
+
+    bool whole_;
     std::vector<int> index_;           // host node id -> vertex (-1: not in the drawing)
     std::vector<NodeId> host_;         // vertex -> host node id (kNoId: a new node)
-    std::vector<char> deletedNode_, deletedEdge_;
+    std::vector<char> deletedNode_, deletedEdge_, inPart_;   // by host id (inPart_: edges)
+    std::vector<NodeId> goneNodes_;
+    std::vector<EdgeId> goneEdges_, partEdges_;
     DrawingResult result_;
     int firstNew_ = 0;                 // vertices from here on are the new nodes
     long long rejected_ = 0;
+    std::shared_ptr<Index> grid_;      // made at the first part drawn
 };
 
 }  // namespace g2d::rt

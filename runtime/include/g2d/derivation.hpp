@@ -351,6 +351,9 @@ struct DerivationOptions {
     bool verifyMatches = false;
     // `layout angles` without a canvas of its own draws in the grammar's `canvas`.
     std::optional<ViewBox> drawingCanvas;
+    // `layout angles`: build every proposal's system from the whole graph,
+    // not from the part it can move (AngleStep; for tests: the two must agree).
+    bool wholeDrawings = false;
 };
 
 struct DerivationResult {

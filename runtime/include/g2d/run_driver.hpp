@@ -65,6 +65,7 @@ struct RunSettings {
     std::size_t maxElements = kDefaultMaxElements;
     std::optional<double> timeoutSeconds;
     bool verifyMatches = false;
+    bool wholeDrawings = false;           // DerivationOptions::wholeDrawings (tests)
 };
 
 // How far a derivation got (kept up to date while it runs, for errors).
