@@ -134,6 +134,23 @@ def speed_table(g2d, folders, only):
     print(f"\nslowest: {worst:.2f} s (target: 2 s; the paper: 44 s for Factory's 20k)")
 
 
+def per_iteration(g2d, example, sizes=(50, 5000)):
+    """The compiled grammar's time per iteration once the output has about T vertices: the
+    time of iterations 10T..12T (best of 3 of each run), for each T."""
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        grammar, exe = os.path.join(tmp, "g.g2d"), os.path.join(tmp, "g")
+        subprocess.run([g2d, "infer", example, "-o", grammar], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([g2d, "build", grammar, "-o", exe], check=True, stdout=subprocess.DEVNULL)
+        for t in sizes:
+            def best(steps):
+                return min((run([exe, "--no-svg", "--stats", "--seed", "1", "-D", f"target_vertices={t}",
+                                 "--steps", str(steps)]) for _ in range(3)), key=lambda s: s["seconds"])
+            a, b = best(10 * t), best(12 * t)
+            out[t] = ((b["seconds"] - a["seconds"]) / (2 * t), b["nodes"])
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--g2d", default=os.path.join(ROOT, "build", "release", "bin", "g2d"))
@@ -152,6 +169,12 @@ def main():
         json.dump(rows, open(a.json, "w"), indent=1)
     if a.speed:
         speed_table(a.g2d, a.examples, a.only)
+        print("\n| example | µs per iteration at about 50 vertices | at about 5,000 | ratio |")
+        print("|---|---|---|---|")
+        for name in ("2D Branches/branches.json", "2D Basic Shapes/star hollow.json", "2D Networks/4-way hollow.json"):
+            r = per_iteration(a.g2d, os.path.join(MERRELL, name))
+            (small, n1), (large, n2) = r[50], r[5000]
+            print(f"| {name} | {small * 1e6:.1f} ({n1} vertices) | {large * 1e6:.1f} ({n2} vertices) | {large / small:.2f} |", flush=True)
 
 
 if __name__ == "__main__":

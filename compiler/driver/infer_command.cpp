@@ -1,6 +1,7 @@
 #include "driver/infer_command.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,11 @@ namespace g2d {
 int runInfer(const InferCommandOptions& options) {
     if (options.sizeGiven && options.size < 1) {
         std::fprintf(stderr, "g2d infer: error: --size %d: the target number of vertices must be at least 1\n", options.size);
+        return 1;
+    }
+    if (options.unitGiven && !(options.labels.lengthUnit > 0 && std::isfinite(options.labels.lengthUnit))) {
+        std::fprintf(stderr, "g2d infer: error: --length-unit %g: lengths are whole multiples of it, so it must be positive\n",
+                     options.labels.lengthUnit);
         return 1;
     }
     std::ifstream in(options.example, std::ios::binary);

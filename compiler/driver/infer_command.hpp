@@ -13,6 +13,7 @@ struct InferCommandOptions {
     int iterations = 0;           // the written grammar's default step limit (Algorithm 3's N; 0: from the size)
     int size = 0;                 // --size: the written grammar's target number of vertices (0: 20 × the example's)
     bool sizeGiven = false;
+    bool unitGiven = false;       // --length-unit
     bool connected = false;       // --connected (Appendix A)
     infer::LabelOptions labels;
     infer::InferOptions limits;

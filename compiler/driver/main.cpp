@@ -77,6 +77,8 @@ int runCommandLine(int argc, char** argv) {
     infer->add_flag("--connected", inferOptions.connected,
                     "The output is one connected piece: one starter, once, and no rule that could split it (Appendix A)");
     infer->add_flag("--no-loops", inferOptions.limits.noLoops, "No loop gluing: rules make no new cycles (Appendix A)");
+    auto* unitOption = infer->add_option("--length-unit", inferOptions.labels.lengthUnit,
+                                         "Lengths of every non-rigid edge label are whole multiples of this (grid units; tiles, stairs)");
     infer->add_option("--angle-tolerance", inferOptions.labels.angleTolerance, "Degrees within which edge directions are one")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 45.0));
@@ -131,6 +133,7 @@ int runCommandLine(int argc, char** argv) {
     if (show->parsed()) return g2d::runShow(showOptions);
     if (infer->parsed()) {
         inferOptions.sizeGiven = sizeOption->count() > 0;
+        inferOptions.unitGiven = unitOption->count() > 0;
         return g2d::runInfer(inferOptions);
     }
     if (lsp->parsed()) {

@@ -37,7 +37,7 @@ std::string angleLayoutOverride(const ir::Program& prog) {
     std::string kinds;
     for (const auto& k : spec->kinds)
         kinds += "            {" + std::string(k.given ? "true" : "false") + ", " + num(k.angle) + ", " + num(k.minLength) + ", " +
-                 num(k.maxLength) + ", " + num(k.left) + ", " + num(k.right) + "},\n";
+                 num(k.maxLength) + ", " + num(k.left) + ", " + num(k.right) + ", " + num(k.unit) + "},\n";
     return "    const AngleLayoutSpec* angleLayout() const override {\n"
            "        static const AngleLayoutSpec spec{\n"
            "            DrawingSettings{" + num(s.proposals) + ", " + num(s.samples) + ", vec2(" + num(s.canvasLo.x) + ", " + num(s.canvasLo.y) +

@@ -118,6 +118,8 @@ void readBrushes(DataReader& r, int version, ExampleShape& out) {
             brush.minLength = fieldNumber(o, "Min Length", 0);
             brush.maxLength = fieldNumber(o, "Max Length", 0);
             brush.color = fieldString(o, "color");
+            if (fieldBool(o, "Rigid Tiled")) brush.unit = fieldNumber(o, "Tile Length", 0);
+            if (brush.unit < 0) r.fail(at, "the edge label's Tile Length must be positive");
             if (brush.minLength < 0 || brush.maxLength < brush.minLength)
                 r.fail(at, "the edge label's length range is empty");
         } else {

@@ -18,6 +18,7 @@ struct EdgeBrush {
     bool rigid = false;      // its edges keep their length from the example
     double minLength = 0;    // the allowed length range; both 0: not given
     double maxLength = 0;
+    double unit = 0;         // > 0: lengths are whole multiples of it (the app's Rigid Tiled, Tile Length)
 };
 
 struct AreaLabel {

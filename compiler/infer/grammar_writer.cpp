@@ -204,6 +204,7 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
         const std::string& colour = ex.shape.brushes[static_cast<std::size_t>(l.brush)].color;
         out += "edge E" + std::to_string(i) + " directed {\n    label: int = " + std::to_string(i) + ";\n";
         out += "    layout { angle = radians(" + exact(l.theta) + "); min_length = " + exact(l.minLength) + "; max_length = " + exact(l.maxLength) + ";";
+        if (l.unit > 0) out += " unit = " + exact(l.unit) + ";";
         if (l.left >= 0) out += " left = A" + std::to_string(l.left) + ";";
         if (l.right >= 0) out += " right = A" + std::to_string(l.right) + ";";
         out += " }\n    style { stroke = " + quoted(colour.empty() ? "#202020" : colour) + "; stroke_width = " + width + "; }\n}\n";

@@ -145,6 +145,12 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
             label.minLength = std::round(brushLo[b] / 2 * 1e6) / 1e6;
             label.maxLength = std::round(brushHi[b] * 2 * 1e6) / 1e6;
         }
+        // Tiled lengths: the brush's unit, else the one asked for; the range holds at least one multiple.
+        label.unit = brush.rigid ? 0 : brush.unit > 0 ? brush.unit : options.lengthUnit;
+        if (label.unit > 0) {
+            label.minLength = std::max(label.minLength, label.unit);
+            label.maxLength = std::max(label.maxLength, std::ceil(label.minLength / label.unit - 1e-9) * label.unit);
+        }
     }
 
     // Stars: each vertex's half-edges counter-clockwise; equal stars are one primitive.

@@ -18,6 +18,7 @@ struct EdgeLabel {
     int left = -1, right = -1;   // area labels left and right of direction theta; -1: none
     double theta = 0;            // degrees, [0, 180)
     double minLength = 0, maxLength = 0;   // the allowed lengths (rigid: equal)
+    double unit = 0;                       // > 0: lengths are whole multiples of it
     std::vector<int> edges;      // the example edges with this label
 };
 
@@ -47,6 +48,7 @@ struct LabelledExample {
 
 struct LabelOptions {
     double angleTolerance = 10;   // degrees: directions closer than this are one, unless told apart
+    double lengthUnit = 0;        // > 0: every non-rigid label's lengths are whole multiples of it
 };
 
 // Throws InputError (crossing or overlapping edges, two edges of a vertex in

@@ -145,6 +145,7 @@ struct StyleProp {
 struct EdgeLayout {
     double angle = 0;                  // radians: the direction from source to target
     double minLength = 0, maxLength = 0;
+    double unit = 0;                   // > 0: lengths are whole multiples of it (`unit = U;`)
     int left = -1, right = -1;         // face kinds on either side, traced after the run (-1: none)
     Span span;
 };

@@ -13,7 +13,8 @@ std::optional<rt::AngleLayoutSpec> angleLayoutSpec(const ir::Program& prog) {
     spec.settings.canvasHi = rt::vec2(l.canvasMax[0], l.canvasMax[1]);
     for (const auto& k : prog.kinds) {
         rt::EdgeGeometry e;
-        if (k.layout) e = rt::EdgeGeometry{true, k.layout->angle, k.layout->minLength, k.layout->maxLength, k.layout->left, k.layout->right};
+        if (k.layout)
+            e = rt::EdgeGeometry{true, k.layout->angle, k.layout->minLength, k.layout->maxLength, k.layout->left, k.layout->right, k.layout->unit};
         spec.kinds.push_back(e);
     }
     return spec;

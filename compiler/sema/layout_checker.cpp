@@ -1,6 +1,7 @@
 #include "sema/layout_checker.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "diag/suggest.hpp"
@@ -151,9 +152,9 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
             (n == "left" ? out.left : out.right) = k->second;
             continue;
         }
-        if (n != "angle" && n != "length" && n != "min_length" && n != "max_length") {
+        if (n != "angle" && n != "length" && n != "min_length" && n != "max_length" && n != "unit") {
             g.diags.error(p.name.span, "unknown layout property `" + n + "`" +
-                                           suggest(n, {"angle", "length", "min_length", "max_length", "left", "right"}));
+                                           suggest(n, {"angle", "length", "min_length", "max_length", "unit", "left", "right"}));
             continue;
         }
         auto v = constant(g, ec, p, ir::kFloatType);
@@ -163,7 +164,13 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
             g.diags.error(p.value->span, "`" + n + "` must be finite");
             continue;
         }
-        if (n == "angle") out.angle = x, angle = true;
+        if (n == "unit") {
+            if (!(x > 0)) {
+                g.diags.error(p.value->span, "`unit` must be positive: lengths are whole multiples of it");
+                continue;
+            }
+            out.unit = x;
+        } else if (n == "angle") out.angle = x, angle = true;
         else if (n == "length") out.minLength = out.maxLength = x, minL = maxL = true;
         else if (n == "min_length") out.minLength = x, minL = true;
         else out.maxLength = x, maxL = true;
@@ -179,6 +186,16 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     if (!(out.maxLength > 0) || out.minLength < 0 || out.minLength > out.maxLength) {
         g.diags.error(d.name.span, "the lengths of `" + d.name.name + "` must satisfy 0 <= min_length <= max_length, max_length > 0");
         return;
+    }
+    if (out.unit > 0) {
+        // Some whole multiple (at least one unit) must lie in the range.
+        const double first = std::max(1.0, std::ceil(out.minLength / out.unit - 1e-9)) * out.unit;
+        if (!(first <= out.maxLength * (1 + 1e-9))) {
+            char text[160];
+            std::snprintf(text, sizeof text, "is a whole multiple of its unit %g between %g and %g", out.unit, out.minLength, out.maxLength);
+            g.diags.error(d.name.span, "no length of `" + d.name.name + "` " + text);
+            return;
+        }
     }
     kind.layout = out;
 }

@@ -8,7 +8,8 @@
 //     when its solution is unique (K_A has no column): one sample, no draw;
 //     otherwise for each sample (j = 1..J):
 //       1. per non-rigid edge of E, by ascending edge index: a target length
-//          Rng::uniform(minLength, maxLength);
+//          Rng::uniform(minLength, maxLength), or for an edge with a unit
+//          Rng::below(the count of its multiples in range), the multiple;
 //       2. per component made only of free vertices, by ascending least
 //          vertex: Rng::uniform for the x of its bounding box's low corner,
 //          then one for its y (the box then lies in the canvas when it fits);
@@ -55,6 +56,21 @@ struct System {
     Eigen::CompleteOrthogonalDecomposition<MatrixXd> lengthFit;   // of K_A's length rows
     bool lengthsMove = false;            // some sampled length varies in x̂ + K_A Λ
 };
+
+// A length in range that is a whole multiple of the edge's unit, uniformly
+// among them (one Rng::below draw); the range's low end when none fits.
+double unitMultiple(const AngleEdge& ed, Rng& rng) {
+    const double lo = std::max(1.0, std::ceil(ed.minLength / ed.unit - kSlack)), hi = std::floor(ed.maxLength / ed.unit + kSlack);
+    if (!(hi >= lo)) return ed.minLength;
+    return ed.unit * (lo + static_cast<double>(rng.below(static_cast<std::uint64_t>(hi - lo) + 1)));
+}
+
+// Whether a length is a whole multiple of the edge's unit (or the edge has none).
+bool onUnit(const AngleEdge& ed, double len) {
+    if (!(ed.unit > 0)) return true;
+    const double k = len / ed.unit;
+    return std::abs(k - std::round(k)) <= kSlack * std::max(1.0, k) && std::round(k) >= 1;
+}
 
 int find(std::vector<int>& parent, int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -176,7 +192,7 @@ void sample(const AngleGraph& g, const DrawingSettings& st, const System& s, Rng
         VectorXd target(p);
         for (Index k = 0; k < p; ++k) {
             const AngleEdge& ed = g.edges[s.sampled[static_cast<std::size_t>(k)]];
-            target(k) = rng.uniform(ed.minLength, ed.maxLength);
+            target(k) = ed.unit > 0 ? unitMultiple(ed, rng) : rng.uniform(ed.minLength, ed.maxLength);
         }
         // The least-squares Λ of least norm: lengths the system ties (a
         // rectangle's opposite sides) get the mean of their targets.
@@ -212,7 +228,7 @@ bool acceptable(const AngleGraph& g, const DrawingSettings& st, const System& s,
         const vec2 d = pos[ed.to] - pos[ed.from], u{std::cos(ed.angle), std::sin(ed.angle)};
         const double len = d.x * u.x + d.y * u.y, off = d.x * u.y - d.y * u.x;
         const double lengthSlack = kSlack * std::max(1.0, std::abs(ed.maxLength));
-        if (!(len > 0 && len >= ed.minLength - lengthSlack && len <= ed.maxLength + lengthSlack)) return false;
+        if (!(len > 0 && len >= ed.minLength - lengthSlack && len <= ed.maxLength + lengthSlack) || !onUnit(ed, len)) return false;
         // Exact by construction up to rounding; a miss means a near-inconsistent system.
         if (!(std::abs(off) <= kSlack * s.scale)) return false;
     }

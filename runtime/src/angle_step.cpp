@@ -109,7 +109,7 @@ private:
 
 AngleEdge AngleStep::edgeOf(const AngleLayoutSpec& spec, int kind, int from, int to) const {
     const EdgeGeometry& e = spec.kinds[static_cast<std::size_t>(kind)];
-    return AngleEdge{from, to, e.angle, e.minLength, e.maxLength, e.left, e.right};
+    return AngleEdge{from, to, e.angle, e.minLength, e.maxLength, e.left, e.right, e.unit};
 }
 
 void AngleStep::markDeleted(const Graph& g, const DaughterShape& shape, Match m) {

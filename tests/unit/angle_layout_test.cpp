@@ -461,3 +461,44 @@ TEST_CASE("a layout without `layout angles` is a warning and changes nothing", "
         if (n != 0) CHECK(r.run.graph().pos(n).y == 7.0);   // placed by `at`, not drawn
     CHECK(r.run.graph().faceCount() == 0);
 }
+
+TEST_CASE("an edge kind with a unit is drawn only at whole multiples of it, freed edges too", "[angle-layout]") {
+    // Rectangles whose sides are whole multiples of 0.5 between 0.5 and 3,
+    // and a bridge of whole units between two of them, drawn level by
+    // freeing corners (whose sides then stretch, still by whole halves).
+    const std::string grammar = R"(
+canvas (0, 0) to (14, 14);
+node Corner { style { tag = "none"; } }
+layout angles { }
+edge R directed { layout { angle = 0; min_length = 0.5; max_length = 3; unit = 0.5; } }
+edge U directed { layout { angle = radians(90); min_length = 0.5; max_length = 3; unit = 0.5; } }
+edge L directed { layout { angle = radians(180); min_length = 0.5; max_length = 3; unit = 0.5; } }
+edge D directed { layout { angle = radians(270); min_length = 0.5; max_length = 3; unit = 0.5; } }
+edge Bridge directed { layout { angle = 0; min_length = 1; max_length = 4; unit = 1; } }
+axiom { }
+limit 300;
+rule Square dpo weight 1 {
+    match { }
+    produce { a: Corner; b: Corner; c: Corner; d: Corner; a -[R]-> b; b -[U]-> c; c -[L]-> d; d -[D]-> a; }
+}
+rule Join dpo weight 4 {
+    match { x: Corner; p: Corner; q: Corner; z: Corner; e: x -[R]-> p; f: q -[R]-> z; where distance(p.pos, q.pos) <= 4; not { p -[Bridge]-> q; } }
+    produce { x; p; q; z; e; f; p -[Bridge]-> q; }
+}
+)";
+    int bridges = 0, sides = 0;
+    for (std::uint64_t seed : {1, 2, 3}) {
+        const auto r = derive(grammar, seed);
+        const rt::Graph& g = r.run.graph();
+        for (rt::EdgeId e : liveEdges(g)) {
+            const bool bridge = r.compiled.program->kinds[static_cast<std::size_t>(g.edgeKind(e))].name == "Bridge";
+            const rt::vec2 v = g.pos(g.target(e)) - g.pos(g.source(e));
+            const double k = std::hypot(v.x, v.y) / (bridge ? 1.0 : 0.5);
+            INFO("edge " << e << (bridge ? " (a bridge)" : "") << ": " << k << " units");
+            CHECK(std::abs(k - std::round(k)) < 1e-9);
+            (bridge ? bridges : sides)++;
+        }
+    }
+    CHECK(bridges > 0);
+    CHECK(sides > 0);
+}

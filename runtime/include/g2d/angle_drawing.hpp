@@ -29,6 +29,7 @@ struct AngleEdge {
     double minLength = 0;       // the allowed lengths: minLength <= s <= maxLength,
     double maxLength = 0;       // and s > 0; minLength == maxLength: a rigid edge
     int left = -1, right = -1;  // the area on either side of from -> to (-1: none), for consistentAreas
+    double unit = 0;            // > 0: the length must be a whole multiple of it (tiles, stairs)
 };
 
 // What lies around a part of a drawing, fixed: AngleStep draws only the

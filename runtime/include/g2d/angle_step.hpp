@@ -24,6 +24,7 @@ struct EdgeGeometry {
     bool given = false;
     double angle = 0, minLength = 0, maxLength = 0;
     int left = -1, right = -1;     // face kinds traced on either side (-1: none)
+    double unit = 0;               // > 0: lengths are whole multiples of it
 };
 
 struct AngleLayoutSpec {
