@@ -132,6 +132,7 @@ std::string dpoRule(const LabelledExample& ex, const std::string& name, const st
 // Merrell's proposal mix (the author's app: starter 1, whole-piece removal 1,
 // rule 10): here per rule, so a new piece is proposed at most 1 in 12 times.
 constexpr double kStarterWeight = 1, kRuleWeight = 10;
+constexpr double kClearance = 0.02;   // of the example's median edge
 
 // The example's vertices per unit area of its drawing.
 double exampleDensity(const ExampleShape& s) {
@@ -164,6 +165,8 @@ std::string sizeAndSpace(const LabelledExample& ex, const WriterOptions& options
            "// raises the cost by d is accepted with probability exp(-d / temperature). Add terms\n"
            "// to steer the output, e.g. `- 0.5 * count(P0)` for more vertices of primitive P0.\n";
     out += "layout angles {\n    cost = 0.5 * abs(nodes - target_vertices);\n    temperature = 1;\n";
+    // Merrell's brush Thickness (0.05 units beside edges of 2-4): pieces keep apart by more than a stroke.
+    out += "    clearance = " + num(roundSignificant(kClearance * typicalLength(ex.shape), 2)) + ";\n";
     if (options.connected) out += "    connected = true;   // no application may split the output (Appendix A)\n";
     out += "}\n";
     return out;

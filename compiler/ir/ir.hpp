@@ -156,6 +156,7 @@ struct AngleLayout {
     double canvasMin[2] = {0, 0}, canvasMax[2] = {0, 0};
     int proposals = 5, samples = 10;   // Merrell's I and J
     bool connected = false;            // `connected = true;` (rt::ConnectedGuard)
+    double clearance = 0;              // `clearance = C;`: the least distance between a node and an edge not at it (0: 1e-6)
     // Metropolis acceptance (rt::metropolisAccepts): the cost reads
     // parameters, constants and counts (ExprOp::Count); the temperature
     // parameters and constants. No cost: every drawn proposal is accepted.

@@ -9,6 +9,7 @@ std::optional<rt::AngleLayoutSpec> angleLayoutSpec(const ir::Program& prog) {
     spec.settings.proposals = l.proposals;
     spec.settings.samples = l.samples;
     spec.connected = l.connected;
+    if (l.clearance > 0) spec.settings.separation = l.clearance;
     spec.settings.canvasLo = rt::vec2(l.canvasMin[0], l.canvasMin[1]);
     spec.settings.canvasHi = rt::vec2(l.canvasMax[0], l.canvasMax[1]);
     for (const auto& k : prog.kinds) {

@@ -79,6 +79,15 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
                 continue;
             }
             (n == "proposals" ? out.proposals : out.samples) = static_cast<int>(k);
+        } else if (n == "clearance") {
+            auto v = constant(g, ec, p, ir::kFloatType);
+            if (!v) continue;
+            const double c = asNumber(*v);
+            if (!(c >= 0) || !finite(c)) {
+                g.diags.error(p.value->span, "`clearance` must be a distance: finite and not negative");
+                continue;
+            }
+            out.clearance = c;
         } else if (n == "connected") {
             auto v = constant(g, ec, p, ir::kBoolType);
             if (v) out.connected = std::get<bool>(*v);
@@ -100,7 +109,7 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
             out.temperature = ExprChecker::coerce(std::move(*v), ir::kFloatType);
         } else {
             g.diags.error(p.name.span, "unknown property `" + n + "` of `layout angles`" +
-                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature", "connected"}));
+                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature", "connected", "clearance"}));
         }
     }
     if (out.temperature && !out.cost)

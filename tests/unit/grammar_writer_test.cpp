@@ -112,6 +112,7 @@ limit iterations;
 layout angles {
     cost = 0.5 * abs(nodes - target_vertices);
     temperature = 1;
+    clearance = 0.071;
 }
 
 // Edge labels: brush, the areas left and right, the direction.
