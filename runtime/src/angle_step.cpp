@@ -144,10 +144,10 @@ vec2 firstGuess(const Graph& g, const std::vector<NodeId>& gone, const AngleLayo
 }
 }  // namespace
 
-void AngleStep::buildWhole(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, AngleGraph& ag) {
-    // The graph after the change: the surviving nodes (fixed), then the new ones (free).
-    for (NodeId n = 0; n < g.nodeCapacity(); ++n) {
-        if (!g.nodeAlive(n) || deletedNode_[n]) continue;
+// The fixed vertices (host nodes, ascending), then the new ones, free, where the deleted ones were.
+void AngleStep::addVertices(const Graph& g, const std::vector<NodeId>& fixed, const DaughterShape& shape, const AngleLayoutSpec& spec,
+                            AngleGraph& ag) {
+    for (NodeId n : fixed) {
         index_[n] = static_cast<int>(host_.size());
         host_.push_back(n);
         ag.position.push_back(g.pos(n));
@@ -160,6 +160,14 @@ void AngleStep::buildWhole(const Graph& g, const DaughterShape& shape, Match m, 
         ag.position.push_back(guess);
         ag.free.push_back(1);
     }
+}
+
+void AngleStep::buildWhole(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, AngleGraph& ag) {
+    // The graph after the change: the surviving nodes (fixed), then the new ones (free).
+    std::vector<NodeId> fixed;
+    for (NodeId n = 0; n < g.nodeCapacity(); ++n)
+        if (g.nodeAlive(n) && !deletedNode_[n]) fixed.push_back(n);
+    addVertices(g, fixed, shape, spec, ag);
     for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
         if (!g.edgeAlive(e) || deletedEdge_[e]) continue;
         const int s = index_[g.source(e)], t = index_[g.target(e)];
@@ -208,19 +216,7 @@ void AngleStep::buildPart(const Graph& g, const DaughterShape& shape, Match m, c
         }
     }
     std::sort(seen.begin(), seen.end());
-    for (NodeId n : seen) {
-        index_[n] = static_cast<int>(host_.size());
-        host_.push_back(n);
-        ag.position.push_back(g.pos(n));
-        ag.free.push_back(0);
-    }
-    firstNew_ = static_cast<int>(host_.size());
-    const vec2 guess = firstGuess(g, goneNodes_, spec);
-    for (int k = 0; k < shape.newNodes; ++k) {
-        host_.push_back(kNoId);
-        ag.position.push_back(guess);
-        ag.free.push_back(1);
-    }
+    addVertices(g, seen, shape, spec, ag);
     std::sort(partEdges_.begin(), partEdges_.end());
     for (EdgeId e : partEdges_) {
         ag.edges.push_back(edgeOf(spec, g.edgeKind(e), index_[g.source(e)], index_[g.target(e)]));

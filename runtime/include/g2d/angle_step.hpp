@@ -72,6 +72,8 @@ private:
     class Index;
     void markDeleted(const Graph& g, const DaughterShape& shape, Match m);
     void unmarkDeleted();
+    void addVertices(const Graph& g, const std::vector<NodeId>& fixed, const DaughterShape& shape, const AngleLayoutSpec& spec,
+                     AngleGraph& ag);
     void buildWhole(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, AngleGraph& ag);
     void buildPart(const Graph& g, const DaughterShape& shape, Match m, const AngleLayoutSpec& spec, AngleGraph& ag);
     AngleEdge edgeOf(const AngleLayoutSpec& spec, int kind, int from, int to) const;
