@@ -136,7 +136,7 @@ def speed_table(g2d, folders, only):
 
 def per_iteration(g2d, example, sizes=(50, 5000)):
     """The compiled grammar's time per iteration once the output has about T vertices: the
-    time of iterations 10T..12T (best of 3 of each run), for each T."""
+    time of iterations 10T..10T + W, W = max(2T, 4000) (best of 5 of each run), for each T."""
     out = {}
     with tempfile.TemporaryDirectory() as tmp:
         grammar, exe = os.path.join(tmp, "g.g2d"), os.path.join(tmp, "g")
@@ -145,9 +145,10 @@ def per_iteration(g2d, example, sizes=(50, 5000)):
         for t in sizes:
             def best(steps):
                 return min((run([exe, "--no-svg", "--stats", "--seed", "1", "-D", f"target_vertices={t}",
-                                 "--steps", str(steps)]) for _ in range(3)), key=lambda s: s["seconds"])
-            a, b = best(10 * t), best(12 * t)
-            out[t] = ((b["seconds"] - a["seconds"]) / (2 * t), b["nodes"])
+                                 "--steps", str(steps), "-D", f"iterations={steps}"]) for _ in range(5)), key=lambda s: s["seconds"])
+            window = max(2 * t, 4000)
+            a, b = best(10 * t), best(10 * t + window)
+            out[t] = ((b["seconds"] - a["seconds"]) / window, b["nodes"])
     return out
 
 
@@ -171,7 +172,8 @@ def main():
         speed_table(a.g2d, a.examples, a.only)
         print("\n| example | µs per iteration at about 50 vertices | at about 5,000 | ratio |")
         print("|---|---|---|---|")
-        for name in ("2D Branches/branches.json", "2D Basic Shapes/star hollow.json", "2D Networks/4-way hollow.json"):
+        for name in ("2D Branches/branches.json", "2D Basic Shapes/star hollow.json", "2D Networks/4-way hollow.json",
+                     "2D Basic Shapes/square hollow.json", "2D Networks/4-way filled.json"):
             r = per_iteration(a.g2d, os.path.join(MERRELL, name))
             (small, n1), (large, n2) = r[50], r[5000]
             print(f"| {name} | {small * 1e6:.1f} ({n1} vertices) | {large * 1e6:.1f} ({n2} vertices) | {large / small:.2f} |", flush=True)
