@@ -307,23 +307,16 @@ private:
         for (const auto& r : prog_.rules) {
             const lower::RuleFacts facts = lower::ruleFacts(prog_, r);
             out += in + "{\n" + ruleInfo(facts.info, in + "    ");
-            for (std::size_t d = 0; d < facts.weightExprs.size(); ++d) {
-                const ir::Expr* expr = facts.weightExprs[d];
-                if (!expr) continue;
-                const std::string w = gen_.gen(*expr, noElements(), out, in + "    ");
-                out += in + "    try {\n" + in + "        info.weights[" + str(static_cast<long long>(d)) + "] = checkedWeight(" + w + ");\n" + in +
-                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
-            }
-            if (const ir::Expr* expr = facts.choiceWeightExpr) {
-                const std::string w = gen_.gen(*expr, noElements(), out, in + "    ");
-                out += in + "    try {\n" + in + "        info.choiceWeight = checkedWeight(" + w + ");\n" + in +
-                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
-            }
-            if (const ir::Expr* expr = facts.mergeExpr) {
-                const std::string t = gen_.gen(*expr, noElements(), out, in + "    ");
-                out += in + "    try {\n" + in + "        info.mergeTolerance = checkedMergeTolerance(" + t + ");\n" + in +
-                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr->span)) + ", e.what());\n" + in + "    }\n";
-            }
+            // `target = check(expr);`, a failure placed at the expression.
+            auto checked = [&](const ir::Expr& expr, const std::string& target, const std::string& check) {
+                const std::string v = gen_.gen(expr, noElements(), out, in + "    ");
+                out += in + "    try {\n" + in + "        " + target + " = " + check + "(" + v + ");\n" + in +
+                       "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr.span)) + ", e.what());\n" + in + "    }\n";
+            };
+            for (std::size_t d = 0; d < facts.weightExprs.size(); ++d)
+                if (const ir::Expr* expr = facts.weightExprs[d]) checked(*expr, "info.weights[" + str(static_cast<long long>(d)) + "]", "checkedWeight");
+            if (const ir::Expr* expr = facts.choiceWeightExpr) checked(*expr, "info.choiceWeight", "checkedWeight");
+            if (const ir::Expr* expr = facts.mergeExpr) checked(*expr, "info.mergeTolerance", "checkedMergeTolerance");
             out += in + "    infos_.push_back(std::move(info));\n" + in + "}\n";
         }
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";

@@ -22,31 +22,10 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
     for (const auto& r : st.prog->rules) {
         lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);
         rt::RuleInfo& info = facts.info;
-        for (std::size_t d = 0; d < facts.weightExprs.size(); ++d) {
-            if (!facts.weightExprs[d]) continue;
-            EvalFrame f = st.frame(nullptr);
-            try {
-                info.weights[d] = rt::checkedWeight(std::get<double>(evaluate(*facts.weightExprs[d], f)));
-            } catch (const rt::OpError& e) {
-                throw EvalError(facts.weightExprs[d]->span, e.what());
-            }
-        }
-        if (facts.choiceWeightExpr) {
-            EvalFrame f = st.frame(nullptr);
-            try {
-                info.choiceWeight = rt::checkedWeight(std::get<double>(evaluate(*facts.choiceWeightExpr, f)));
-            } catch (const rt::OpError& e) {
-                throw EvalError(facts.choiceWeightExpr->span, e.what());
-            }
-        }
-        if (facts.mergeExpr) {
-            EvalFrame f = st.frame(nullptr);
-            try {
-                info.mergeTolerance = rt::checkedMergeTolerance(std::get<double>(evaluate(*facts.mergeExpr, f)));
-            } catch (const rt::OpError& e) {
-                throw EvalError(facts.mergeExpr->span, e.what());
-            }
-        }
+        for (std::size_t d = 0; d < facts.weightExprs.size(); ++d)
+            if (facts.weightExprs[d]) info.weights[d] = checkedNumber(*facts.weightExprs[d], nullptr, rt::checkedWeight);
+        if (facts.choiceWeightExpr) info.choiceWeight = checkedNumber(*facts.choiceWeightExpr, nullptr, rt::checkedWeight);
+        if (facts.mergeExpr) info.mergeTolerance = checkedNumber(*facts.mergeExpr, nullptr, rt::checkedMergeTolerance);
         infos_.push_back(std::move(info));
         matchWeights_.push_back(facts.matchWeightExprs);
         auto& rewrites = rewrites_.emplace_back();
@@ -66,24 +45,22 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
 bool InterpretedRules::hasDrawingCost() const { return st_.prog->angleLayout && st_.prog->angleLayout->cost; }
 
 double InterpretedRules::drawingCost(const rt::KindCounts& counts) {
-    const ir::Expr& cost = *st_.prog->angleLayout->cost;
-    EvalFrame f = st_.frame(nullptr);
-    f.counts = &counts;
-    try {
-        return rt::checkedCost(std::get<double>(evaluate(cost, f)));
-    } catch (const rt::OpError& e) {
-        throw EvalError(cost.span, e.what());
-    }
+    return checkedNumber(*st_.prog->angleLayout->cost, &counts, rt::checkedCost);
 }
 
 double InterpretedRules::drawingTemperature() {
     const auto& layout = st_.prog->angleLayout;
-    if (!layout || !layout->temperature) return 1;
+    return layout && layout->temperature ? checkedNumber(*layout->temperature, nullptr, rt::checkedTemperature) : 1;
+}
+
+// A number of parameters and constants (and a cost's counts), as `check` accepts it; its failure is placed at `e`.
+double InterpretedRules::checkedNumber(const ir::Expr& e, const rt::KindCounts* counts, double (*check)(double)) const {
     EvalFrame f = st_.frame(nullptr);
+    f.counts = counts;
     try {
-        return rt::checkedTemperature(std::get<double>(evaluate(*layout->temperature, f)));
-    } catch (const rt::OpError& e) {
-        throw EvalError(layout->temperature->span, e.what());
+        return check(std::get<double>(evaluate(e, f)));
+    } catch (const rt::OpError& err) {
+        throw EvalError(e.span, err.what());
     }
 }
 

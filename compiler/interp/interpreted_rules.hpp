@@ -35,6 +35,7 @@ public:
     bool hasDrawingCost() const override;
     double drawingCost(const rt::KindCounts& counts) override;
     double drawingTemperature() override;
+    double checkedNumber(const ir::Expr& e, const rt::KindCounts* counts, double (*check)(double)) const;
 
     // The rule being applied when an EvalError escapes (for messages).
     const ir::Rule* currentRule() const { return current_; }

@@ -1,7 +1,6 @@
 #include "g2d/connected_guard.hpp"
 
 #include <algorithm>
-#include <deque>
 
 namespace g2d::rt {
 
@@ -41,61 +40,57 @@ bool ConnectedGuard::keepsConnected(const Graph& g, const DaughterShape& shape, 
     std::vector<std::pair<int, int>> added;   // new edges between vertices
     for (const auto& e : shape.newEdges) added.push_back({vertexOf(e.src), vertexOf(e.dst)});
 
+    // One breadth-first search from all the touched nodes at once: each
+    // vertex is owned by the front that reached it first, fronts that meet
+    // join, and a set of joined fronts with nothing left to visit is a piece
+    // without the others.
     bool ok = left > 0;
-    std::vector<int> visited;
+    visited_.clear();
     if (ok && touched_.size() > 1) {
         const int fronts = static_cast<int>(touched_.size());
-        parent_.resize(static_cast<std::size_t>(fronts));
-        std::vector<std::deque<int>> queue(static_cast<std::size_t>(fronts));
+        parent_.assign(static_cast<std::size_t>(fronts), 0);
+        pending_.assign(static_cast<std::size_t>(fronts), 1);   // per set root: vertices queued
+        queue_.clear();
         for (int f = 0; f < fronts; ++f) {
             parent_[static_cast<std::size_t>(f)] = f;
             owner_[static_cast<std::size_t>(touched_[static_cast<std::size_t>(f)])] = f;
-            visited.push_back(touched_[static_cast<std::size_t>(f)]);
-            queue[static_cast<std::size_t>(f)].push_back(touched_[static_cast<std::size_t>(f)]);
+            visited_.push_back(touched_[static_cast<std::size_t>(f)]);
+            queue_.push_back(touched_[static_cast<std::size_t>(f)]);
         }
         int sets = fronts;
         auto reach = [&](int f, int w) {
             const int o = owner_[static_cast<std::size_t>(w)];
             if (o < 0) {
                 owner_[static_cast<std::size_t>(w)] = f;
-                visited.push_back(w);
-                queue[static_cast<std::size_t>(f)].push_back(w);
-            } else if (rootOf(o) != rootOf(f)) {
-                parent_[static_cast<std::size_t>(rootOf(o))] = rootOf(f);
+                visited_.push_back(w);
+                queue_.push_back(w);
+                ++pending_[static_cast<std::size_t>(rootOf(f))];
+            } else if (const int ro = rootOf(o), rf = rootOf(f); ro != rf) {
+                parent_[static_cast<std::size_t>(ro)] = rf;
+                pending_[static_cast<std::size_t>(rf)] += pending_[static_cast<std::size_t>(ro)];
                 --sets;
             }
         };
-        while (sets > 1) {
-            for (int f = 0; f < fronts && sets > 1; ++f) {
-                auto& q = queue[static_cast<std::size_t>(f)];
-                if (q.empty()) continue;
-                const int v = q.front();
-                q.pop_front();
-                if (v < cap)
-                    for (EdgeId e : g.incident(static_cast<NodeId>(v))) {
-                        if (deletedEdge_[e]) continue;
-                        const NodeId w = g.source(e) == static_cast<NodeId>(v) ? g.target(e) : g.source(e);
-                        if (!deletedNode_[w]) reach(f, static_cast<int>(w));
-                    }
-                for (const auto& [a, b] : added) {
-                    if (a == v) reach(f, b);
-                    if (b == v) reach(f, a);
+        for (std::size_t head = 0; sets > 1; ++head) {
+            const int v = queue_[head];
+            const int f = owner_[static_cast<std::size_t>(v)];
+            if (v < cap)
+                for (EdgeId e : g.incident(static_cast<NodeId>(v))) {
+                    if (deletedEdge_[e]) continue;
+                    const NodeId w = g.source(e) == static_cast<NodeId>(v) ? g.target(e) : g.source(e);
+                    if (!deletedNode_[w]) reach(f, static_cast<int>(w));
                 }
+            for (const auto& [a, b] : added) {
+                if (a == v) reach(f, b);
+                if (b == v) reach(f, a);
             }
-            if (sets <= 1) break;
-            // A set whose fronts have all run out is a closed piece without the others: a split.
-            std::vector<char> live(static_cast<std::size_t>(fronts), 0);
-            for (int f = 0; f < fronts; ++f)
-                if (!queue[static_cast<std::size_t>(f)].empty()) live[static_cast<std::size_t>(rootOf(f))] = 1;
-            bool closed = false;
-            for (int f = 0; f < fronts; ++f) closed = closed || (rootOf(f) == f && !live[static_cast<std::size_t>(f)]);
-            if (closed) {
-                ok = false;
+            if (sets > 1 && --pending_[static_cast<std::size_t>(rootOf(f))] == 0) {
+                ok = false;   // this set is closed
                 break;
             }
         }
     }
-    for (int v : visited) owner_[static_cast<std::size_t>(v)] = -1;
+    for (int v : visited_) owner_[static_cast<std::size_t>(v)] = -1;
     for (NodeId n : goneNodes) deletedNode_[n] = 0;
     for (EdgeId e : goneEdges) deletedEdge_[e] = 0;
     return ok;

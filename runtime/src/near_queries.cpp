@@ -62,40 +62,24 @@ void NearQueries::syncAny(const Graph& g, NodeId n) {
 
 std::span<const NodeId> NearQueries::nodesAround(const Graph& g, int kind, vec3 centre, double radius) {
     Points* pts = kind < 0 ? (any_ ? &*any_ : nullptr) : pointsOf(kind);
-    if (kind < 0) {
-        scratch_.clear();
-        if (!started_ || g.scope() || !pts)
-            for (NodeId n : g.allNodes()) scratch_.push_back(n);
-        const std::span<const NodeId> all(scratch_);
-        return started_ && !g.scope() && pts ? around(g, *pts, all, centre, radius, anyAt_) : all;
+    if (!started_ || g.scope() || !pts || !std::isfinite(radius)) return every(g, kind);
+    if (!(radius >= 0)) return {};   // no distance is below a negative radius
+    if (!pts->grid) {   // made at the first query, its cell from that radius
+        const std::vector<vec3>& at = kind < 0 ? anyAt_ : at_;
+        pts->grid.emplace(cellFor(radius));
+        for (NodeId n : every(g, kind)) pts->grid->insert(n, at[n]);
     }
-    if (!started_ || g.scope() || !pts) return g.nodesOfKind(kind);
-    return around(g, *pts, g.nodesOfKind(kind), centre, radius, at_);
-}
-
-// The grid's nodes near `centre`; the grid is made at the first finite query, its cell from that radius.
-std::span<const NodeId> NearQueries::around(const Graph& g, Points& pts, std::span<const NodeId> all, vec3 centre, double radius,
-                                            const std::vector<vec3>& at) {
-    if (!(radius >= 0)) return {};   // no distance is below a negative or NaN radius
-    if (!std::isfinite(radius)) {
-        if (pts.kind < 0) {
-            scratch_.clear();
-            for (NodeId n : g.allNodes()) scratch_.push_back(n);
-            return scratch_;
-        }
-        return all;
-    }
-    if (!pts.grid) {
-        pts.grid.emplace(cellFor(radius));
-        if (pts.kind < 0) {
-            for (NodeId n : g.allNodes()) pts.grid->insert(n, at[n]);
-        } else {
-            for (NodeId n : all) pts.grid->insert(n, at[n]);
-        }
-    }
-    pts.grid->within(centre, slack(radius), hits_);
+    pts->grid->within(centre, slack(radius), hits_);
     scratch_.clear();
     for (const auto& h : hits_) scratch_.push_back(h.id);
+    return scratch_;
+}
+
+// The nodes of `kind`, or every node for -1.
+std::span<const NodeId> NearQueries::every(const Graph& g, int kind) {
+    if (kind >= 0) return g.nodesOfKind(kind);
+    scratch_.clear();
+    for (NodeId n : g.allNodes()) scratch_.push_back(n);
     return scratch_;
 }
 

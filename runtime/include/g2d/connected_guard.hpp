@@ -6,10 +6,11 @@
 // graph it would leave, and it must not delete the last node. Checked before
 // the commit on the graph as it is, with the change laid over it.
 //
-// The search goes out from every touched node at once, one node per front
-// in turn, and stops when the fronts have met (connected: usually within a
-// few faces of the change) or when the fronts of one side have run out (a
-// split: the smaller side has then been walked).
+// The search goes out from every touched node at once (one breadth-first
+// search, each vertex owned by the front that reached it first) and stops
+// when the fronts have met (connected: usually within a few faces of the
+// change) or when the fronts of one side have run out (a split: the
+// smaller side has then been walked).
 #include <vector>
 
 #include "g2d/angle_step.hpp"
@@ -28,7 +29,8 @@ private:
     std::vector<char> deletedNode_, deletedEdge_;
     std::vector<int> owner_;          // by vertex (host ids, then new nodes past them): the front that reached it, -1
     std::vector<int> parent_;         // fronts' union-find
-    std::vector<int> touched_;
+    std::vector<int> touched_, queue_, visited_;
+    std::vector<int> pending_;        // per set of fronts (its root): vertices queued, not yet visited
 };
 
 }  // namespace g2d::rt

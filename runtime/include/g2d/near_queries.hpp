@@ -89,8 +89,7 @@ private:
     void index(NodeId n, int kind, vec3 p);
     void unindex(NodeId n);
     void syncAny(const Graph& g, NodeId n);
-    std::span<const NodeId> around(const Graph& g, Points& pts, std::span<const NodeId> all, vec3 centre, double radius,
-                                   const std::vector<vec3>& at);
+    std::span<const NodeId> every(const Graph& g, int kind);
     void record(Disks& d, NodeId key, vec3 centre, double radius);
     void remove(Disks& d, std::uint32_t disk);
 
