@@ -502,3 +502,40 @@ rule Join dpo weight 4 {
     CHECK(bridges > 0);
     CHECK(sides > 0);
 }
+
+TEST_CASE("clearance keeps every node that far from the edges not at it", "[angle-layout]") {
+    // Unit squares placed anywhere in a small canvas: without a clearance
+    // they may come within a hair of each other.
+    const std::string grammar = R"(
+canvas (0, 0) to (6, 6);
+layout angles { clearance = 0.4; }
+node Corner { style { tag = "none"; } }
+edge R directed { layout { angle = 0; length = 1; } }
+edge U directed { layout { angle = radians(90); length = 1; } }
+edge L directed { layout { angle = radians(180); length = 1; } }
+edge D directed { layout { angle = radians(270); length = 1; } }
+axiom { }
+limit 60;
+rule Square dpo {
+    match { }
+    produce { a: Corner; b: Corner; c: Corner; d: Corner; a -[R]-> b; b -[U]-> c; c -[L]-> d; d -[D]-> a; }
+}
+)";
+    auto near = [](rt::vec2 p, rt::vec2 a, rt::vec2 b) {
+        const rt::vec2 ab = b - a, ap = p - a;
+        const double t = std::clamp((ap.x * ab.x + ap.y * ab.y) / (ab.x * ab.x + ab.y * ab.y), 0.0, 1.0);
+        return std::hypot(ap.x - t * ab.x, ap.y - t * ab.y);
+    };
+    int squares = 0;
+    for (std::uint64_t seed : {1, 2, 3}) {
+        const auto r = derive(grammar, seed);
+        const rt::Graph& g = r.run.graph();
+        squares += static_cast<int>(g.nodeCount() / 4);
+        double least = 1e9;
+        for (rt::NodeId n : g.allNodes())
+            for (rt::EdgeId e : liveEdges(g))
+                if (g.source(e) != n && g.target(e) != n) least = std::min(least, near(g.pos(n), g.pos(g.source(e)), g.pos(g.target(e))));
+        CHECK(least > 0.4);
+    }
+    CHECK(squares >= 6);   // several squares, so the clearance was tested between them
+}
