@@ -37,13 +37,14 @@ std::string angleLayoutOverride(const ir::Program& prog) {
     std::string kinds;
     for (const auto& k : spec->kinds)
         kinds += "            {" + std::string(k.given ? "true" : "false") + ", " + num(k.angle) + ", " + num(k.minLength) + ", " +
-                 num(k.maxLength) + ", " + num(k.left) + ", " + num(k.right) + ", " + num(k.unit) + "},\n";
+                 num(k.maxLength) + ", " + num(k.left) + ", " + num(k.right) + ", " + num(k.unit) + ", " + num(k.bend) + "},\n";
     return "    const AngleLayoutSpec* angleLayout() const override {\n"
            "        static const AngleLayoutSpec spec{\n"
            "            DrawingSettings{" + num(s.proposals) + ", " + num(s.samples) + ", vec2(" + num(s.canvasLo.x) + ", " + num(s.canvasLo.y) +
            "), vec2(" + num(s.canvasHi.x) + ", " + num(s.canvasHi.y) + "), " + num(s.separation) + "},\n"
            "            " + (spec->connected ? "true" : "false") + ",\n"
-           "            {\n" + kinds + "            }};\n"
+           "            {\n" + kinds + "            },\n"
+           "            " + num(spec->bendSegment) + ", " + num(spec->bendSmooth) + "};\n"
            "        return &spec;\n    }\n\n";
 }
 

@@ -146,6 +146,7 @@ struct EdgeLayout {
     double angle = 0;                  // radians: the direction from source to target
     double minLength = 0, maxLength = 0;
     double unit = 0;                   // > 0: lengths are whole multiples of it (`unit = U;`)
+    double bend = 0;                   // > 0: drawn bent after the run (`bend = A;`, radians; rt::bendEdges)
     int left = -1, right = -1;         // face kinds on either side, traced after the run (-1: none)
     Span span;
 };
@@ -157,6 +158,8 @@ struct AngleLayout {
     int proposals = 5, samples = 10;   // Merrell's I and J
     bool connected = false;            // `connected = true;` (rt::ConnectedGuard)
     double clearance = 0;              // `clearance = C;`: the least distance between a node and an edge not at it (0: 1e-6)
+    double bendSegment = 0.1;          // `bend_segment = L;`: bent edges' segment length
+    int bendSmooth = 5;                // `bend_smooth = N;`: the turns' averaging window, in segments
     // Metropolis acceptance (rt::metropolisAccepts): the cost reads
     // parameters, constants and counts (ExprOp::Count); the temperature
     // parameters and constants. No cost: every drawn proposal is accepted.

@@ -88,6 +88,24 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
                 continue;
             }
             out.clearance = c;
+        } else if (n == "bend_segment") {
+            auto v = constant(g, ec, p, ir::kFloatType);
+            if (!v) continue;
+            const double x = asNumber(*v);
+            if (!(x > 0) || !finite(x)) {
+                g.diags.error(p.value->span, "`bend_segment` must be a positive length: bent edges are cut into segments about that long");
+                continue;
+            }
+            out.bendSegment = x;
+        } else if (n == "bend_smooth") {
+            auto v = constant(g, ec, p, ir::Type::of(ir::TypeKind::Int));
+            if (!v) continue;
+            const long long k = std::get<long long>(*v);
+            if (k < 1 || k > 1000) {
+                g.diags.error(p.value->span, "`bend_smooth` must be between 1 and 1000 segments");
+                continue;
+            }
+            out.bendSmooth = static_cast<int>(k);
         } else if (n == "connected") {
             auto v = constant(g, ec, p, ir::kBoolType);
             if (v) out.connected = std::get<bool>(*v);
@@ -109,7 +127,8 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
             out.temperature = ExprChecker::coerce(std::move(*v), ir::kFloatType);
         } else {
             g.diags.error(p.name.span, "unknown property `" + n + "` of `layout angles`" +
-                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature", "connected", "clearance"}));
+                                           suggest(n, {"canvas_min", "canvas_max", "proposals", "samples", "cost", "temperature", "connected", "clearance",
+                                                       "bend_segment", "bend_smooth"}));
         }
     }
     if (out.temperature && !out.cost)
@@ -161,9 +180,9 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
             (n == "left" ? out.left : out.right) = k->second;
             continue;
         }
-        if (n != "angle" && n != "length" && n != "min_length" && n != "max_length" && n != "unit") {
+        if (n != "angle" && n != "length" && n != "min_length" && n != "max_length" && n != "unit" && n != "bend") {
             g.diags.error(p.name.span, "unknown layout property `" + n + "`" +
-                                           suggest(n, {"angle", "length", "min_length", "max_length", "unit", "left", "right"}));
+                                           suggest(n, {"angle", "length", "min_length", "max_length", "unit", "bend", "left", "right"}));
             continue;
         }
         auto v = constant(g, ec, p, ir::kFloatType);
@@ -173,7 +192,13 @@ void checkEdgeLayout(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
             g.diags.error(p.value->span, "`" + n + "` must be finite");
             continue;
         }
-        if (n == "unit") {
+        if (n == "bend") {
+            if (x < 0 || x >= 3.141592653589793 / 2) {
+                g.diags.error(p.value->span, "`bend` must be an angle in radians from 0 to less than pi/2: the most a segment turns");
+                continue;
+            }
+            out.bend = x;
+        } else if (n == "unit") {
             if (!(x > 0)) {
                 g.diags.error(p.value->span, "`unit` must be positive: lengths are whole multiples of it");
                 continue;

@@ -1,6 +1,7 @@
 #include "g2d/draw_items.hpp"
 
 #include "g2d/draw_order.hpp"
+#include "g2d/edge_paths.hpp"
 
 namespace g2d::rt {
 
@@ -39,21 +40,31 @@ void drawItem(const Graph& g, ElemClass cls, std::uint32_t id, const std::vector
     item.id = id;
     item.corners.clear();
     item.holes.clear();
+    item.bend.clear();
     item.props.clear();
     item.depth = 0;
     item.turnedAway = false;
     if (cls == ElemClass::Face) {
         CornerId c = g.firstCorner(id);
-        for (int i = 0; i < g.cornerCount(id); ++i, c = g.nextCorner(c)) item.corners.push_back(g.pos(g.cornerNode(c)));
-        for (const std::vector<NodeId>& ring : g.faceHoles(id)) {
-            item.holes.emplace_back();
-            for (NodeId n : ring) item.holes.back().push_back(g.pos(n));
+        if (g.hasBends()) {   // the rings follow their edges' bends
+            std::vector<NodeId> ring;
+            for (int i = 0; i < g.cornerCount(id); ++i, c = g.nextCorner(c)) ring.push_back(g.cornerNode(c));
+            item.corners = bentRing(g, ring);
+            for (const std::vector<NodeId>& hole : g.faceHoles(id)) item.holes.push_back(bentRing(g, hole));
+        } else {
+            for (int i = 0; i < g.cornerCount(id); ++i, c = g.nextCorner(c)) item.corners.push_back(g.pos(g.cornerNode(c)));
+            for (const std::vector<NodeId>& ring : g.faceHoles(id)) {
+                item.holes.emplace_back();
+                for (NodeId n : ring) item.holes.back().push_back(g.pos(n));
+            }
         }
         item.a = item.b = g.centroid(id);
         resolve(item, g.faceKind(id), g.faceStyle(id), g, enumValueNames, kindStyle);
     } else if (cls == ElemClass::Edge) {
         item.a = g.pos(g.source(id));
         item.b = g.pos(g.target(id));
+        const auto bend = g.edgeBend(id);
+        item.bend.assign(bend.begin(), bend.end());
         resolve(item, g.edgeKind(id), g.edgeStyle(id), g, enumValueNames, kindStyle);
     } else {
         item.a = g.pos(id);

@@ -223,4 +223,11 @@ std::uint32_t& Graph::styleHead(GrowArray<std::uint32_t>& lists, std::uint32_t i
     return lists[id];
 }
 
+void Graph::setEdgeBend(EdgeId e, std::vector<vec2> points) {
+    if (!edgeAlive(e)) throw std::logic_error("a bend for a dead edge");
+    if (points.empty() && e >= edgeBends_.size()) return;
+    if (e >= edgeBends_.size()) edgeBends_.resize(edges_.size());
+    edgeBends_[e] = std::move(points);
+}
+
 }  // namespace g2d::rt

@@ -183,6 +183,14 @@ void writeJson(const Graph& g, const JsonSchema& schema, const std::vector<std::
         out.write(g.kinds()[k].directed ? "true" : "false");
         out.write(", \"age\": ");
         out.integer(g.edgeAge(e));
+        if (const auto bend = g.edgeBend(e); !bend.empty()) {   // the points between source and target (edge_bends.hpp)
+            out.write(", \"bend\": [");
+            for (std::size_t i = 0; i < bend.size(); ++i) {
+                if (i) out.write(", ");
+                writeValue(out, Value{bend[i]}, schema);
+            }
+            out.write(']');
+        }
         writeAttributes(out, attr, schema, ElemClass::Edge, "edge", e, k);
         out.write('}');
     }

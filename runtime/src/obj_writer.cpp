@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "g2d/edge_paths.hpp"
 #include "g2d/ops.hpp"
 #include "g2d/polygon_triangles.hpp"
 
@@ -12,31 +13,55 @@ namespace g2d::rt {
 
 namespace {
 
+// OBJ indices (1-based, in write order): nodes', then each bent edge's points.
+struct ObjIndex {
+    std::vector<std::uint32_t> node;   // by node id
+    std::vector<std::uint32_t> bend;   // by edge id: its first bend point's
+    std::uint32_t of(const PathPoint& p) const {
+        return p.node != kNoId ? node[p.node] : bend[p.edge] + p.index;
+    }
+};
+
+std::vector<NodeId> faceRing(const Graph& g, FaceId f) {
+    std::vector<NodeId> ring;
+    CornerId c = g.firstCorner(f);
+    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) ring.push_back(g.cornerNode(c));
+    return ring;
+}
+
 // A face with holes as the triangles that cover it (OBJ has no holes).
-void writeTriangles(const Graph& g, FaceId f, const std::vector<std::uint32_t>& index, TextOut& out) {
-    std::vector<NodeId> nodes;
+void writeTriangles(const Graph& g, FaceId f, const ObjIndex& index, TextOut& out) {
+    std::vector<std::uint32_t> vertex;   // by point: its OBJ index
     std::vector<vec2> points;
     std::vector<int> outer;
     std::vector<std::vector<int>> holes;
-    auto corner = [&](NodeId n) {
-        nodes.push_back(n);
-        points.push_back(g.pos(n));
-        return static_cast<int>(nodes.size()) - 1;
+    auto ring = [&](const std::vector<NodeId>& nodes, std::vector<int>& into) {
+        forEachRingPoint(g, nodes, [&](const PathPoint& p) {
+            vertex.push_back(index.of(p));
+            points.push_back(p.node != kNoId ? g.pos(p.node) : g.edgeBend(p.edge)[p.index]);
+            into.push_back(static_cast<int>(points.size()) - 1);
+        });
     };
-    CornerId c = g.firstCorner(f);
-    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) outer.push_back(corner(g.cornerNode(c)));
-    for (const std::vector<NodeId>& ring : g.faceHoles(f)) {
-        holes.emplace_back();
-        for (NodeId n : ring) holes.back().push_back(corner(n));
-    }
+    ring(faceRing(g, f), outer);
+    for (const std::vector<NodeId>& hole : g.faceHoles(f)) ring(hole, holes.emplace_back());
     for (const auto& t : triangulate(points, outer, holes)) {
         out.write('f');
         for (int k : t) {
             out.write(' ');
-            out.integer(index[nodes[static_cast<std::size_t>(k)]]);
+            out.integer(vertex[static_cast<std::size_t>(k)]);
         }
         out.write('\n');
     }
+}
+
+void writeVertex(TextOut& out, vec3 p) {
+    out.write("v ");
+    out.number(p.x);
+    out.write(' ');
+    out.number(p.y);
+    out.write(' ');
+    out.number(p.z);
+    out.write('\n');
 }
 
 }  // namespace
@@ -50,20 +75,22 @@ void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
     out.integer(static_cast<long long>(g.faceCount()));
     out.write(" faces\n");
     // OBJ indices are 1-based in write order; node ids have gaps after deletions.
-    std::vector<std::uint32_t> index(g.nodeCapacity(), 0);
+    ObjIndex index{std::vector<std::uint32_t>(g.nodeCapacity(), 0), {}};
     std::uint32_t next = 1;
     for (NodeId n = 0; n < g.nodeCapacity(); ++n) {
         if (!g.nodeAlive(n)) continue;
         const vec3 p = g.pos3(n);
         if (!isFinitePosition(p)) throw std::runtime_error("node " + std::to_string(n) + "'s position is not finite");
-        out.write("v ");
-        out.number(p.x);
-        out.write(' ');
-        out.number(p.y);
-        out.write(' ');
-        out.number(p.z);
-        out.write('\n');
-        index[n] = next++;
+        writeVertex(out, p);
+        index.node[n] = next++;
+    }
+    if (g.hasBends()) {
+        index.bend.assign(g.edgeCapacity(), 0);
+        for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
+            if (!g.edgeAlive(e)) continue;
+            index.bend[e] = next;
+            for (const vec2& p : g.edgeBend(e)) writeVertex(out, {p.x, p.y, 0}), ++next;
+        }
     }
     for (std::size_t k = 0; k < g.kinds().size(); ++k) {
         if (g.kinds()[k].cls != ElemClass::Face) continue;
@@ -79,11 +106,10 @@ void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
                 continue;
             }
             out.write('f');
-            CornerId c = g.firstCorner(f);
-            for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) {
+            forEachRingPoint(g, faceRing(g, f), [&](const PathPoint& p) {
                 out.write(' ');
-                out.integer(index[g.cornerNode(c)]);
-            }
+                out.integer(index.of(p));
+            });
             out.write('\n');
         }
     }
@@ -92,9 +118,13 @@ void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
         for (EdgeId e = 0; e < g.edgeCapacity(); ++e) {
             if (!g.edgeAlive(e)) continue;
             out.write("l ");
-            out.integer(index[g.source(e)]);
+            out.integer(index.node[g.source(e)]);
+            for (std::size_t k = 0; k < g.edgeBend(e).size(); ++k) {
+                out.write(' ');
+                out.integer(index.bend[e] + static_cast<std::uint32_t>(k));
+            }
             out.write(' ');
-            out.integer(index[g.target(e)]);
+            out.integer(index.node[g.target(e)]);
             out.write('\n');
         }
     }

@@ -1,6 +1,7 @@
 #include "g2d/run_driver.hpp"
 
 #include "g2d/drawn_faces.hpp"
+#include "g2d/edge_bends.hpp"
 #include "g2d/projection.hpp"
 
 #include <chrono>
@@ -126,8 +127,10 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
             if (observer) observer(s, g);
         },
         trace);
-    if (const AngleLayoutSpec* layout = grammar.rules().angleLayout())
+    if (const AngleLayoutSpec* layout = grammar.rules().angleLayout()) {
         addDrawnFaces(grammar.graph(), grammar.rules(), *layout, out.result.steps);
+        out.result.bendsReduced = bendEdges(grammar.graph(), *layout, rng).reduced;
+    }
     out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !settings.steps && !grammarLimit;
 }
 
@@ -320,11 +323,12 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
-                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld, \"rejected_splits\": %lld}\n",
+                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld, \"rejected_splits\": %lld, "
+                        "\"bends_reduced\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
                         result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
-                        result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits);
+                        result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits, result.bendsReduced);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;

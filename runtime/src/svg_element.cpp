@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "g2d/decorations.hpp"
 #include "g2d/svg_extent.hpp"
 
 namespace g2d::rt {
@@ -48,6 +49,7 @@ bool truthy(const DrawItem& it, const char* prop) {
 // The properties with a meaning of their own (not attributes), by length:
 // every item's every property is looked up here.
 bool isSpecial(std::string_view p) {
+    if (p.size() > 6 && p[0] == 'd' && isDecorProp(p)) return true;   // the decoration's (decorations.hpp)
     switch (p.size()) {
     case 1: return p == "r" || p == "d" || p == "z";
     case 3: return p == "tag";
@@ -156,9 +158,23 @@ void SvgFrame::addTurned(vec2 c, double w, double h, double degrees) {
     add(c, (w * cs + h * sn) / 2, (w * sn + h * cs) / 2);
 }
 
+namespace {
+
+void measureDecorations(const DrawItem& it, SvgFrame& frame) {
+    for (const Placement& p : decorPlacements(it)) {
+        const double r = styleNumber(it, "decor_r", std::min(p.width, p.height) / 2);
+        if (decorShape(it) == DecorShape::Circle) frame.add(p.centre, r);
+        else frame.addTurned(p.centre, p.width, p.height, p.degrees);
+    }
+}
+
+}  // namespace
+
 bool measureItem(const DrawItem& it, SvgFrame& frame) {
     const Shape shape = shapeOf(it);
-    if (shape == Shape::None) return false;
+    const bool decorated = decorShape(it) != DecorShape::None;
+    if (decorated) measureDecorations(it, frame);
+    if (shape == Shape::None) return decorated;
     const bool isEdge = it.cls == ElemClass::Edge, isFace = it.cls == ElemClass::Face;
     frame.maxStroke = std::max(frame.maxStroke, styleNumber(it, "stroke_width", isEdge ? 0.05 : isFace ? 0 : 0.02));
     const vec2 c = centre(it);
@@ -169,6 +185,7 @@ bool measureItem(const DrawItem& it, SvgFrame& frame) {
     case Shape::Line:
         frame.add(it.a, 0);
         frame.add(it.b, 0);
+        for (const vec2& p : it.bend) frame.add(p, 0);
         frame.arrows = frame.arrows || truthy(it, "arrow");
         break;
     case Shape::Circle: frame.add(c, styleNumber(it, "r", 0.1)); break;
@@ -193,7 +210,7 @@ bool measureItem(const DrawItem& it, SvgFrame& frame) {
     case Shape::None:
     case Shape::Unknown: break;
     }
-    return shape != Shape::Unknown;
+    return shape != Shape::Unknown || decorated;
 }
 
 void writeSvgStart(const SvgFrame& frame, const std::optional<ViewBox>& fixed, const std::vector<std::string>& defs,
@@ -280,6 +297,56 @@ void SvgBody::ringsPath(const DrawItem& it) {
 }
 
 void SvgBody::item(const DrawItem& it) {
+    element(it);
+    if (decorShape(it) == DecorShape::None) return;
+    finish();
+    decorations(it);
+}
+
+// Each placement of the item's decoration (decorations.hpp), after the item.
+void SvgBody::decorations(const DrawItem& it) {
+    DrawItem attrs;   // the placements' own attributes: decor_PROP as PROP
+    for (const auto& p : it.props)
+        if (isDecorProp(p.prop) && !isPlacementProp(p.prop)) attrs.props.push_back({p.prop.substr(6), p.value});
+    const DecorShape shape = decorShape(it);
+    const std::string href = shape == DecorShape::Image ? styleText(it, "decor_href", "") : "";
+    for (const Placement& p : decorPlacements(it)) {
+        if (shape == DecorShape::Circle) {
+            out_.write("<circle cx=\"");
+            coord(p.centre.x);
+            out_.write("\" cy=\"");
+            coord(p.centre.y);
+            out_.write("\" r=\"");
+            num(out_, styleNumber(it, "decor_r", std::min(p.width, p.height) / 2));
+            out_.write('"');
+            passThrough(out_, attrs, {});
+            out_.write("/>\n");
+            continue;
+        }
+        out_.write(shape == DecorShape::Image ? "<image href=\"" : "<rect");
+        if (shape == DecorShape::Image) {
+            writeEscaped(out_, options_.imageHref ? options_.imageHref(href) : href);
+            out_.write('"');
+        }
+        out_.write(" x=\"");
+        num(out_, -p.width / 2);
+        out_.write("\" y=\"");
+        num(out_, -p.height / 2);
+        out_.write("\" width=\"");
+        num(out_, p.width);
+        out_.write("\" height=\"");
+        num(out_, p.height);
+        out_.write("\" transform=\"translate(");
+        point(p.centre, ' ');
+        out_.write(") rotate(");
+        num(out_, p.degrees);
+        out_.write(shape == DecorShape::Image ? ") scale(1 -1)\"" : ")\"");   // images upright in the y-up group
+        passThrough(out_, attrs, {});
+        out_.write("/>\n");
+    }
+}
+
+void SvgBody::element(const DrawItem& it) {
     const Shape shape = shapeOf(it);
     if (shape == Shape::None || shape == Shape::Unknown) return;
     // A line with a fill would be filled as a path: it keeps its element.
@@ -306,6 +373,21 @@ void SvgBody::item(const DrawItem& it) {
         break;
     }
     case Shape::Line:
+        if (!it.bend.empty()) {
+            out.write("<polyline points=\"");
+            point(it.a, ',');
+            for (const vec2& p : it.bend) {
+                out.write(' ');
+                point(p, ',');
+            }
+            out.write(' ');
+            point(it.b, ',');
+            out.write('"');
+            passThrough(out, it, {{"fill", "none"}, {"stroke", "black"}, {"stroke-width", "0.05"}});
+            if (truthy(it, "arrow")) out.write(" marker-end=\"url(#g2d-arrow)\"");
+            out.write("/>\n");
+            break;
+        }
         out.write("<line x1=\"");
         coord(it.a.x);
         out.write("\" y1=\"");
@@ -419,6 +501,10 @@ void SvgBody::continueRun(const DrawItem& it) {
         out_.write(" M ");
         point(it.a, ' ');
         out_.write(" L ");
+    }
+    for (const vec2& p : it.bend) {
+        point(p, ' ');
+        out_.write(' ');
     }
     point(it.b, ' ');
     runEnd_ = it.b;

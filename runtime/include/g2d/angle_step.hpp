@@ -25,12 +25,15 @@ struct EdgeGeometry {
     double angle = 0, minLength = 0, maxLength = 0;
     int left = -1, right = -1;     // face kinds traced on either side (-1: none)
     double unit = 0;               // > 0: lengths are whole multiples of it
+    double bend = 0;               // > 0: drawn bent after the derivation, by up to this many radians a segment (edge_bends.hpp)
 };
 
 struct AngleLayoutSpec {
     DrawingSettings settings;
     bool connected = false;            // `connected = true;`: no application may split what it touches (connected_guard.hpp)
     std::vector<EdgeGeometry> kinds;   // by kind index (nodes' and faces' unused)
+    double bendSegment = 0.1;          // bent edges are cut into segments about this long
+    int bendSmooth = 5;                // … whose random turns are averaged over this many segments
 };
 
 // What applying one daughter does, in pattern terms.

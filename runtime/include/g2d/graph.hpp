@@ -241,6 +241,15 @@ public:
     std::span<const std::vector<NodeId>> faceHoles(FaceId f) const {
         return f < faceHoles_.size() ? std::span<const std::vector<NodeId>>(faceHoles_[f]) : std::span<const std::vector<NodeId>>();
     }
+    // An edge's bend (Merrell's Appendix B, edge_bends.hpp): the points
+    // between its source and its target, in that order. Only `layout
+    // angles`' bending sets them, after the derivation, for the writers;
+    // removing the edge drops them.
+    void setEdgeBend(EdgeId e, std::vector<vec2> points);
+    std::span<const vec2> edgeBend(EdgeId e) const {
+        return e < edgeBends_.size() ? std::span<const vec2>(edgeBends_[e]) : std::span<const vec2>();
+    }
+    bool hasBends() const { return !edgeBends_.empty(); }
     bool faceAlive(FaceId f) const { return f < faces_.size() && faces_[f].alive; }
     std::size_t faceCount() const { return liveFaces_; }
     std::size_t faceCapacity() const { return faces_.size(); }   // ids are below this
@@ -516,6 +525,7 @@ private:
     GrowArray<NodeCorners> nodeCorners_;
     std::vector<FaceId> dirtyFaces_;
     std::vector<std::vector<std::vector<NodeId>>> faceHoles_;   // by face id; empty until a face has holes
+    std::vector<std::vector<vec2>> edgeBends_;                   // by edge id; empty until an edge is bent
 };
 
 template <class Rec>
@@ -607,6 +617,7 @@ void Graph::removeEdge(EdgeId e) {
     rec.alive = false;
     // (A compiled grammar's slot indexes its own arrays: nothing to drop here.)
     if (rec.styled || (rec.slot != kNoId && pooled(rec.kind))) dropEdgeExtras(rec, e);
+    if (e < edgeBends_.size()) edgeBends_[e].clear();
     --liveEdges_;
 }
 

@@ -42,6 +42,7 @@ struct DrawItem {
     vec2 a{0, 0}, b{0, 0};                 // node position, or edge endpoints (a face: its corner mean)
     std::vector<vec2> corners;             // a face's corners, in order
     std::vector<std::vector<vec2>> holes;  // a face's holes (Graph::faceHoles), each a ring
+    std::vector<vec2> bend;                // an edge's bend points between a and b (Graph::edgeBend)
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
     double depth = 0;                      // 3D: the distance from the viewer (farther drawn first)
     bool turnedAway = false;               // 3D: a face seen from its back (drawn before those seen from the front)

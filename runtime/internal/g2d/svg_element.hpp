@@ -46,6 +46,8 @@ private:
     void coord(double x);
     void point(vec2 p, char between);
     void ringsPath(const DrawItem& it);
+    void element(const DrawItem& it);
+    void decorations(const DrawItem& it);
     void continueRun(const DrawItem& it);
 
     TextOut& out_;
