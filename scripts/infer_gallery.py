@@ -7,13 +7,15 @@ Merrell's Fig. 9 shows an example beside its outputs, this
   1. draws the example itself as OUT/NAME/example.svg (from the JSON's
      "decoded" member: every instance's edges as lines, coloured by the edge
      label's brush colour, else #202020);
-  2. infers two grammars:  g2d infer EXAMPLE -o TMP/G.g2d              (defaults)
-                           g2d infer EXAMPLE --connected -o TMP/C.g2d
+  2. infers three grammars: g2d infer EXAMPLE -o TMP/G.g2d             (defaults)
+                            g2d infer EXAMPLE --connected -o TMP/C.g2d
+                            g2d infer EXAMPLE --bend -o TMP/B.g2d  (bent edges: Appendix B)
   3. runs three outputs, each with --seed 1 --stats --json:
        large      g2d run G.g2d                        (target_vertices: 20 x the example's)
        connected  g2d run C.g2d                        (one piece: Appendix A)
-       detailed   g2d run G.g2d -D target_vertices=5N  (N: the example's vertices; the
-                                                        canvas, sized from the target, follows)
+       detailed   g2d run B.g2d -D target_vertices=5N  (N: the example's vertices; the
+                                                        canvas, sized from the target, follows;
+                                                        edges bent, as Merrell's Fig. 9a, d-g)
      each written as OUT/NAME/KIND.svg, or, when that SVG is over 150 KB, as
      OUT/NAME/KIND.png (g2d run -o KIND.png --width 480, rendered by librsvg);
   4. counts each output's vertices, edges and pieces (connected components of
@@ -313,7 +315,7 @@ def one_example(g2d, path, examples_dir, out, tmp, timeout):
            "written": ["example.svg"], "example_vertices": None, "infer_error": None,
            "infer_seconds": {}, "outputs": {}}
     grammars = {}
-    for which, flags in (("default", []), ("connected", ["--connected"])):
+    for which, flags in (("default", []), ("connected", ["--connected"]), ("bent", ["--bend"])):
         g = tmp / f"{name}.{which}.g2d"
         rc, so, se, secs = run(g2d, ["infer", str(path), "-o", str(g)] + flags, timeout)
         rec["infer_seconds"][which] = secs
@@ -331,7 +333,7 @@ def one_example(g2d, path, examples_dir, out, tmp, timeout):
     rec["example_vertices"] = n
     plan = {"large": (grammars["default"], []),
             "connected": (grammars["connected"], []),
-            "detailed": (grammars["default"], ["-D", f"target_vertices={DETAIL_FACTOR * n}"])}
+            "detailed": (grammars["bent"], ["-D", f"target_vertices={DETAIL_FACTOR * n}"])}
     for kind in KINDS:
         grammar, extra = plan[kind]
         o = one_output(g2d, grammar, extra, folder, kind, tmp, timeout)
@@ -495,7 +497,8 @@ def write_readme(out, records, examples_dir, total_seconds):
         f"(`g2d infer EXAMPLE -o G.g2d` with the defaults, then `g2d run G.g2d --seed {SEED}`: "
         f"the target is 20× the example's vertices); a **connected** one "
         f"(`g2d infer EXAMPLE --connected -o C.g2d`, `g2d run C.g2d --seed {SEED}`); and a "
-        f"**detailed** one (`g2d run G.g2d --seed {SEED} -D target_vertices=` "
+        f"**detailed** one, its edges bent as in the paper's Fig. 9a, d–g (Appendix B: "
+        f"`g2d infer EXAMPLE --bend -o B.g2d`, then `g2d run B.g2d --seed {SEED} -D target_vertices=` "
         f"{DETAIL_FACTOR}× the example's vertices; the canvas, sized from the target, "
         f"follows, and the iterations stay the large output's). Every picture is g2d's own "
         f"output as written, its frame the grammar's canvas; an SVG over "

@@ -46,6 +46,7 @@ int runInfer(const InferCommandOptions& options) {
             writer.iterations = options.iterations;
             writer.targetVertices = options.size;
             writer.connected = options.connected;
+            writer.bend = options.bend;
             rt::AtomicFile file(options.output);
             file.commit(infer::writeGrammar(ex, grammar, writer));
         }

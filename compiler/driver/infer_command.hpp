@@ -15,6 +15,7 @@ struct InferCommandOptions {
     bool sizeGiven = false;
     bool unitGiven = false;       // --length-unit
     bool connected = false;       // --connected (Appendix A)
+    bool bend = false;            // --bend (Appendix B)
     infer::LabelOptions labels;
     infer::InferOptions limits;
 };

@@ -77,6 +77,7 @@ int runCommandLine(int argc, char** argv) {
     infer->add_flag("--connected", inferOptions.connected,
                     "The output is one connected piece: one starter, once, and no rule that could split it (Appendix A)");
     infer->add_flag("--no-loops", inferOptions.limits.noLoops, "No loop gluing: rules make no new cycles (Appendix A)");
+    infer->add_flag("--bend", inferOptions.bend, "Edges drawn bent by their label's Bend (default 10 degrees a segment; Appendix B)");
     auto* unitOption = infer->add_option("--length-unit", inferOptions.labels.lengthUnit,
                                          "Lengths of every non-rigid edge label are whole multiples of this (grid units; tiles, stairs)");
     infer->add_option("--angle-tolerance", inferOptions.labels.angleTolerance, "Degrees within which edge directions are one")

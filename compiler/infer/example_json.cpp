@@ -119,6 +119,7 @@ void readBrushes(DataReader& r, int version, ExampleShape& out) {
             brush.maxLength = fieldNumber(o, "Max Length", 0);
             brush.color = fieldString(o, "color");
             if (fieldBool(o, "Rigid Tiled")) brush.unit = fieldNumber(o, "Tile Length", 0);
+            brush.bend = fieldNumber(o, "Bend", brush.bend);
             if (brush.unit < 0) r.fail(at, "the edge label's Tile Length must be positive");
             if (brush.minLength < 0 || brush.maxLength < brush.minLength)
                 r.fail(at, "the edge label's length range is empty");
@@ -129,7 +130,7 @@ void readBrushes(DataReader& r, int version, ExampleShape& out) {
             r.boolean("the label's Bidirectional Edges");
             r.boolean("the label's Synthetic");
             if (version >= 4) r.boolean("the label's Grounded");
-            r.number("the label's Bend");
+            brush.bend = r.number("the label's Bend");
             brush.color = r.string("the label's colour");
             r.string("the label's border colour");
         }

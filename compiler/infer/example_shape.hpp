@@ -19,6 +19,7 @@ struct EdgeBrush {
     double minLength = 0;    // the allowed length range; both 0: not given
     double maxLength = 0;
     double unit = 0;         // > 0: lengths are whole multiples of it (the app's Rigid Tiled, Tile Length)
+    double bend = 10;        // degrees a segment may turn when bending is asked for (the app's Bend; Appendix B)
 };
 
 struct AreaLabel {

@@ -168,6 +168,7 @@ std::string sizeAndSpace(const LabelledExample& ex, const WriterOptions& options
     // Merrell's brush Thickness (0.05 units beside edges of 2-4): pieces keep apart by more than a stroke.
     out += "    clearance = " + num(roundSignificant(kClearance * typicalLength(ex.shape), 2)) + ";\n";
     if (options.connected) out += "    connected = true;   // no application may split the output (Appendix A)\n";
+    if (options.bend) out += "    bend_segment = " + num(roundSignificant(typicalLength(ex.shape) / 25, 2)) + ";   // bent edges' segments (Appendix B)\n";
     out += "}\n";
     return out;
 }
@@ -208,6 +209,8 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
         out += "edge E" + std::to_string(i) + " directed {\n    label: int = " + std::to_string(i) + ";\n";
         out += "    layout { angle = radians(" + exact(l.theta) + "); min_length = " + exact(l.minLength) + "; max_length = " + exact(l.maxLength) + ";";
         if (l.unit > 0) out += " unit = " + exact(l.unit) + ";";
+        if (const double bend = ex.shape.brushes[static_cast<std::size_t>(l.brush)].bend; options.bend && bend > 0 && bend < 90)
+            out += " bend = radians(" + exact(bend) + ");";
         if (l.left >= 0) out += " left = A" + std::to_string(l.left) + ";";
         if (l.right >= 0) out += " right = A" + std::to_string(l.right) + ";";
         out += " }\n    style { stroke = " + quoted(colour.empty() ? "#202020" : colour) + "; stroke_width = " + width + "; }\n}\n";

@@ -18,6 +18,8 @@ struct WriterOptions {
     // Appendix A: the output is one connected piece — one starter, applied
     // once, and no rule that could split a piece (or remove the last one).
     bool connected = false;
+    // Appendix B: edges drawn bent, each label by its brush's Bend (degrees).
+    bool bend = false;
 };
 
 // The defaults the writer uses when WriterOptions leaves them 0.

@@ -160,6 +160,7 @@ struct AngleLayout {
     double clearance = 0;              // `clearance = C;`: the least distance between a node and an edge not at it (0: 1e-6)
     double bendSegment = 0.1;          // `bend_segment = L;`: bent edges' segment length
     int bendSmooth = 5;                // `bend_smooth = N;`: the turns' averaging window, in segments
+    std::optional<Span> bendSettings;  // where the first of those two is given (a warning if nothing bends)
     // Metropolis acceptance (rt::metropolisAccepts): the cost reads
     // parameters, constants and counts (ExprOp::Count); the temperature
     // parameters and constants. No cost: every drawn proposal is accepted.

@@ -97,6 +97,7 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
                 continue;
             }
             out.bendSegment = x;
+            if (!out.bendSettings) out.bendSettings = p.name.span;
         } else if (n == "bend_smooth") {
             auto v = constant(g, ec, p, ir::Type::of(ir::TypeKind::Int));
             if (!v) continue;
@@ -106,6 +107,7 @@ void checkLayoutDecl(Globals& g, ExprChecker& ec, const ast::LayoutDecl& d) {
                 continue;
             }
             out.bendSmooth = static_cast<int>(k);
+            if (!out.bendSettings) out.bendSettings = p.name.span;
         } else if (n == "connected") {
             auto v = constant(g, ec, p, ir::kBoolType);
             if (v) out.connected = std::get<bool>(*v);
@@ -255,6 +257,10 @@ void checkAngleLayoutUse(Globals& g, const std::vector<const ast::KindDecl*>& ki
                                                 "`layout angles` draws in the grammar's `canvas`");
         diag.notes.push_back({g.prog.canvas->span, "the grammar's canvas is here"});
     }
+    bool bends = false;
+    for (const auto& k : g.prog.kinds) bends = bends || (k.layout && k.layout->bend > 0);
+    if (layout.bendSettings && !bends)
+        g.diags.warning(*layout.bendSettings, "no edge kind bends (`bend = A;` in its layout), so the bend settings do nothing");
     if (!g.prog.sequence.empty()) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with a `sequence`");
     if (g.prog.mergeAll) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with `merge within`");
     for (const auto& r : g.prog.rules) {

@@ -133,6 +133,19 @@ expect_code 0 "$g2d" infer --stats --no-loops "$examples/2D Networks/connected t
 without=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["graphs"])' out.txt)
 [ "$without" != "$with_loops" ] || fail "--no-loops changed nothing: $without graphs"
 
+# --bend: each label bends by its brush's Bend (T's brushes say 10 degrees), and the run's links are polylines.
+expect_code 0 "$g2d" infer "$examples/2D Branches/T.json" --bend -o tbend.g2d
+has tbend.g2d 'bend = radians(10);'
+has tbend.g2d 'bend_segment = '
+expect_code 0 "$g2d" check --werror tbend.g2d
+expect_code 0 "$g2d" run tbend.g2d --seed 1 -D iterations=300 --json tbend.json -o tbend.svg
+python3 - tbend.json <<'PY' || fail "--bend: no bent link in the output"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert any(len(l.get("bend", [])) >= 2 for l in d["links"]), "no link has bend points"
+PY
+grep -q '<polyline' tbend.svg || fail "--bend: the SVG has no polyline"
+
 # An output that cannot be written leaves nothing behind.
 expect_code 1 "$g2d" infer "$examples/2D Branches/T.json" -o /nonexistent/dir/t.g2d
 has err.txt 'g2d infer: error:'

@@ -539,3 +539,14 @@ rule Square dpo {
     }
     CHECK(squares >= 6);   // several squares, so the clearance was tested between them
 }
+
+TEST_CASE("bend settings without an edge kind that bends are a warning", "[angle-layout][bend]") {
+    const auto compiled = test::compile("canvas (0, 0) to (5, 5);\nlayout angles { bend_smooth = 3; }\nnode Dot;\n"
+                                        "edge Up directed { layout { angle = radians(90); length = 1; } }\naxiom { }\n");
+    REQUIRE(compiled.program);
+    CHECK(test::diagnosticLines(compiled) ==
+          std::vector<std::string>{"2:17: warning: no edge kind bends (`bend = A;` in its layout), so the bend settings do nothing"});
+    const auto bent = test::compile("canvas (0, 0) to (5, 5);\nlayout angles { bend_smooth = 3; }\nnode Dot;\n"
+                                    "edge Up directed { layout { angle = radians(90); length = 1; bend = 0.1; } }\naxiom { }\n");
+    CHECK(test::diagnosticLines(bent).empty());
+}
