@@ -51,9 +51,7 @@ rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
 }
 
 rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::string& name) const {
-    const bool isEdge = cls == rt::ElemClass::Edge;
-    const rt::Graph& g = run_->graph();
-    const int kind = isEdge ? g.edgeKind(id) : g.nodeKind(id);
+    const int kind = run_->graph().kindOf(cls, id);
     const auto& names = run_->jsonSchema().attrNames.at(static_cast<std::size_t>(kind));
     for (std::size_t a = 0; a < names.size(); ++a)
         if (names[a] == name) return run_->attribute(cls, id, static_cast<int>(a));

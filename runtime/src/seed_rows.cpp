@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <unistd.h>
 
+#include "g2d/json_writer.hpp"
 #include "g2d/value.hpp"
 
 namespace g2d::rt {
@@ -23,23 +24,6 @@ struct RowHeader {
 constexpr std::uint32_t kMaxStaged = 16;   // a run writes at most six outputs
 
 constexpr std::size_t kMaxText = 1 << 20;   // a sane bound for reading: rows come from our own workers
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (const unsigned char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    return out + "\"";
-}
 
 void appendText(std::string& buffer, const std::string& text) {
     const auto size = static_cast<std::uint32_t>(text.size());

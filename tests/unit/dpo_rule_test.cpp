@@ -512,6 +512,7 @@ TEST_CASE("dpo matching equals a brute-force matcher with identification and the
 
 TEST_CASE("random dpo rewrites keep the incremental matches exact", "[dpo][brute]") {
     std::mt19937 gen(99);
+    long long prunes = 0, unlinks = 0;   // dpo deletions seen, so the run cannot pass by doing nothing
     for (int trial = 0; trial < 40; ++trial) {
         const Case c = randomCase(gen);
         std::string text = source(c);
@@ -529,6 +530,32 @@ TEST_CASE("random dpo rewrites keep the incremental matches exact", "[dpo][brute
         auto compiled = test::compile(text);
         INFO(test::firstError(compiled));
         REQUIRE(compiled.program);
-        CHECK_NOTHROW(interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1 + trial, test::verified()));
+        const auto& kinds = compiled.program->kinds;
+        auto kindOf = [&](const char* name) {
+            return static_cast<int>(std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return k.name == name; }) - kinds.begin());
+        };
+        const int kindB = kindOf("B"), kindU = kindOf("U");
+        // After each step: a B node that vanished had no edges before it (the
+        // dangling condition of Prune), and a U edge that vanished went by Unlink.
+        std::map<rt::NodeId, int> degreeOfB;
+        std::size_t edgesU = 0;
+        auto observe = [&](long long, const rt::Graph& g) {
+            std::map<rt::NodeId, int> now;
+            std::size_t u = 0;
+            for (rt::NodeId n : g.allNodes())
+                if (g.nodeKind(n) == kindB) now[n] = g.degree(n);
+            for (rt::EdgeId e = 0; e < g.edgeCapacity(); ++e) u += g.edgeAlive(e) && g.edgeKind(e) == kindU;
+            for (const auto& [n, degree] : degreeOfB)
+                if (!now.count(n) || g.nodeKind(n) != kindB) {
+                    CHECK(degree == 0);
+                    ++prunes;
+                }
+            unlinks += u < edgesU && now.size() == degreeOfB.size();
+            degreeOfB = std::move(now);
+            edgesU = u;
+        };
+        CHECK_NOTHROW(interp::runProgram(*compiled.program, interp::defaultParams(*compiled.program), 1 + trial, test::verified(), observe));
     }
+    CHECK(prunes > 20);
+    CHECK(unlinks > 20);
 }
