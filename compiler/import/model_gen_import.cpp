@@ -639,6 +639,12 @@ private:
             }
             std::string text = translatedOrTodo(styleReadsAsAttributes(source), context, a.line, a.key, todos, t);
             if (text.empty()) continue;
+            if (t.type == PyType::String && text.size() >= 2 && text.front() == '"' && text.back() == '"' &&
+                text.find_first_of("\"\\", 1) == text.size() - 1) {   // an older file's bare word (`.svg_tag: rect`)
+                assignments.push_back(styleAssignment(kind, *prop, MgScalar{text.substr(1, text.size() - 2), MgScalar::Kind::String, true},
+                                                      std::nullopt));
+                continue;
+            }
             if (*prop == "tag") {
                 todos.push_back("TODO: a computed .svg_tag: " + a.value.text);
                 warn(a.line, "a computed .svg_tag is not imported: the element keeps its drawing");

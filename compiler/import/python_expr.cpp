@@ -2,6 +2,7 @@
 // tree, this file types it and writes the g2d text (docs/language.md §10, §13).
 #include "import/python_expr.hpp"
 
+#include <cctype>
 #include <exception>
 #include <set>
 #include <utility>
@@ -731,7 +732,39 @@ std::string oneLine(const std::string& problem) {
 
 }  // namespace
 
+namespace {
+
+// One Python name, and nothing else (the whole value of an older file's `label: a_r`).
+bool oneName(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+    for (char c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    return true;
+}
+
+PyTranslation translateExpression(std::string_view source, const PyContext& context);
+
+}  // namespace
+
+// The tool's older files wrote strings bare (`label: a_r`, `.svg_tag: rect`)
+// and compared and stored them as the text they are; later versions read
+// every value as Python. A whole value that is one name the grammar does not
+// know is read the old way: the text, and in a condition, `attr == 'text'`.
 PyTranslation translatePython(std::string_view source, const PyContext& context) {
+    PyTranslation result = translateExpression(source, context);
+    if (result.ok || !oneName(source) || result.problem.rfind("unknown name", 0) != 0) return result;
+    std::string word(source);
+    word.erase(0, word.find_first_not_of(" \t"));
+    word.erase(word.find_last_not_of(" \t") + 1);
+    const std::string quoted = "'" + word + "'";
+    return translateExpression(context.conditionElement.empty() ? quoted : "attr == " + quoted, context);
+}
+
+namespace {
+
+PyTranslation translateExpression(std::string_view source, const PyContext& context) {
     PyTranslation result;
     try {
         py::ParseResult parsed = py::parsePython(source);
@@ -757,6 +790,8 @@ PyTranslation translatePython(std::string_view source, const PyContext& context)
     }
     return result;
 }
+
+}  // namespace
 
 std::string_view pyTypeName(PyType type) {
     switch (type) {
