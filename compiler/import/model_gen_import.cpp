@@ -8,7 +8,7 @@
 #include <map>
 #include <optional>
 #include <cstdlib>
-#include <regex>
+#include <set>
 #include <sstream>
 
 #include "import/model_gen_catalogue.hpp"
@@ -16,6 +16,7 @@
 #include "import/model_gen_styles.hpp"
 #include "import/python_expr.hpp"
 #include "import/rule_scope.hpp"
+#include "import/used_names.hpp"
 
 namespace g2d::import {
 namespace {
@@ -141,10 +142,13 @@ public:
         for (int pass = 0; pass < 2; ++pass) inferExpressionTypes();
         settleCatalogue(nodes_);
         settleCatalogue(edges_);
-        writeHeader();
         writeKinds();
         writeAxiom();
         for (std::size_t i = 0; i < g_.productions.size(); ++i) writeRule(g_.productions[i], scopes_[i]);
+        const std::string body = out_.str();   // the header declares the consts it uses
+        out_.str("");
+        writeHeader(body);
+        out_ << body;
         return {out_.str(), std::move(warnings_)};
     }
 
@@ -357,7 +361,7 @@ private:
 
     // ---- writing ------------------------------------------------------------
 
-    void writeHeader() {
+    void writeHeader(const std::string& body) {
         out_ << "// Imported by `g2d import` from " << file_ << ",\n"
              << "// a grammar of the original tool of Pogrzebacz 2019 (docs/import.md).\n"
              << "// The tool's elements are untyped, so every node is a Vertex and every edge an\n"
@@ -373,8 +377,15 @@ private:
             if (key != "all" && n > 0) out_ << "priority " << key << " limit " << n << ";\n";
         for (const auto& [id, filter] : g_.svgFilters) out_ << "defs " << quoted(filter) << ";\n";
         out_ << "\n";
+        std::vector<std::pair<std::string, std::string>> declared;
+        for (const auto& gv : g_.globals) declared.emplace_back(consts_.at(gv.name).name, consts_.at(gv.name).text);
+        const std::set<std::string> used = usedNames(body, declared);
         for (const auto& gv : g_.globals) {
             const ConstName& c = consts_.at(gv.name);
+            if (!used.count(c.name)) {   // g2d warns of a const nothing reads
+                out_ << "// " << gv.name << ": " << gv.expression << "   (a global no rule reads: not imported)\n";
+                continue;
+            }
             if (!c.todo.empty()) out_ << "// " << c.todo << "\n";
             out_ << "const " << c.name << ": " << g2dTypeName(c.type) << " = " << c.text << ";   // " << gv.name
                  << ": " << gv.expression << "\n";
@@ -710,10 +721,11 @@ private:
             daughters << "    }\n";
         }
         // The tool declared vectors whether used or not; g2d warns of an unused let.
-        std::string uses = daughters.str();
-        for (const auto& let : scope.lets()) uses += " " + let.text;
+        std::vector<std::pair<std::string, std::string>> lets;
+        for (const auto& let : scope.lets()) lets.emplace_back(let.name, let.text);
+        const std::set<std::string> used = usedNames(daughters.str(), lets);
         for (const auto& let : scope.lets()) {
-            if (!std::regex_search(uses, std::regex("\\b" + let.name + "\\b"))) continue;
+            if (!used.count(let.name)) continue;
             if (!let.todo.empty()) out_ << "    // " << let.todo << "\n";
             out_ << "    let " << let.name << " = " << let.text << ";";
             if (!let.comment.empty()) out_ << "   // " << let.comment;

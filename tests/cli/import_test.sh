@@ -23,7 +23,7 @@ count=0
 for f in "$yml"/*.yml; do
   b=$(basename "$f" .yml)
   expect_code 0 "$g2d" import "$f" -o "$b.g2d"
-  expect_code 0 "$g2d" check "$b.g2d"
+  expect_code 0 "$g2d" check --werror "$b.g2d"   # an import is warning-free
   # It runs to its end or its limit, never into a run-time error.
   for seed in 1 2; do
     "$g2d" run "$b.g2d" --seed "$seed" --no-svg --stats >run.txt 2>run_err.txt || fail "$b seed $seed: $(head -c 300 run_err.txt)"

@@ -3,10 +3,12 @@
 // the problems reported for what g2d cannot express.
 #include <catch2/catch.hpp>
 
+#include <set>
 #include <string>
 #include <vector>
 
 #include "import/python_expr.hpp"
+#include "import/used_names.hpp"
 
 using namespace g2d::import;
 
@@ -490,4 +492,14 @@ TEST_CASE("python import names its types", "[import]") {
     CHECK(pyTypeName(PyType::String) == "string");
     CHECK(pyTypeName(PyType::Vec2) == "vec2");
     CHECK(pyTypeName(PyType::None) == "none");
+}
+
+TEST_CASE("an import declares the names its code reads, directly or through another, not those only a comment names",
+          "[import]") {
+    using g2d::import::usedNames;
+    const std::vector<std::pair<std::string, std::string>> declared = {
+        {"a", "b * 2"}, {"b", "3"}, {"c", "d + 1"}, {"d", "1"}, {"e", "\"x // not a comment\" + f"}, {"f", "2"}};
+    // `c` only in a comment; `a` reads `b`; the string's `//` does not end the code.
+    CHECK(usedNames("x = a + 1;   // c\n// c is not read\ny = \"//\" + e;", declared) == std::set<std::string>{"a", "b", "e", "f"});
+    CHECK(usedNames("x = ab + a_b;", declared).empty());   // whole words only
 }
