@@ -693,6 +693,14 @@ private:
 
     void writeRule(const MgProduction& p, RuleScope& scope) {
         out_ << "\n// \"" << p.name << "\"\n";
+        if (p.mother.vertices.empty() && p.mother.edges.empty()) {
+            // The tool's matcher starts from an element of the mother graph
+            // (thesis Algorithm 5.1, line 3): an empty mother never matches,
+            // where g2d's empty match would match at every step.
+            out_ << "// Its mother graph is empty, so the tool never applied it: left out.\n";
+            warn(p.line, "production `" + p.name + "` has an empty mother graph, which the tool never matches: left out");
+            return;
+        }
         out_ << "rule " << scope.ruleName();
         if (p.priority != 0) out_ << " priority " << p.priority;
         for (const auto& [key, value] : p.conditions)

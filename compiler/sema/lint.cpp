@@ -2,9 +2,33 @@
 
 #include "sema/deleted_node_lint.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace g2d::sema {
+
+namespace {
+
+// Whether applying daughter `d` of `r` leaves the graph exactly as it was:
+// it keeps every matched element where and as it is, and makes nothing.
+bool changesNothing(const ir::Rule& r, const ir::Daughter& d) {
+    if (!d.deletedNodes.empty() || !d.deletedEdges.empty() || !d.deletedFaces.empty() || !d.faces.empty() || !d.loops.empty() ||
+        !d.inserts.empty() || !d.splits.empty())
+        return false;
+    for (const auto& n : d.nodes)
+        if (n.motherNode < 0 || n.position || n.radius || !n.assigns.empty() || !n.styles.empty()) return false;
+    for (const auto& e : d.edges) {
+        if (e.motherEdge < 0 || !e.assigns.empty() || !e.styles.empty()) return false;
+        const auto& m = r.edges[static_cast<std::size_t>(e.motherEdge)];
+        if (d.nodes[static_cast<std::size_t>(e.src)].motherNode != m.src || d.nodes[static_cast<std::size_t>(e.dst)].motherNode != m.dst)
+            return false;
+    }
+    for (const auto& f : d.keptFaces)
+        if (!f.assigns.empty() || !f.styles.empty()) return false;
+    return true;
+}
+
+}  // namespace
 
 void lintProgram(Globals& g) {
     const ir::Program& p = g.prog;
@@ -46,6 +70,11 @@ void lintProgram(Globals& g) {
             g.diags.warning(r.span, "rule `" + r.name + "` can never match: no element of " + why +
                                         " is ever created (the axiom has none and no rule makes one)");
     }
+    for (const auto& r : p.rules)
+        if (r.span.file == g.mainFile && r.compound < 0 && !r.daughters.empty() &&
+            std::all_of(r.daughters.begin(), r.daughters.end(), [&](const ir::Daughter& d) { return changesNothing(r, d); }))
+            g.diags.warning(r.span, "rule `" + r.name + "` changes nothing: it keeps its whole match as it is, so it can match at "
+                                    "every step and only uses steps up");
     std::set<long long> used;
     for (const auto& r : p.rules) used.insert(r.priority);
     for (const auto& [prio, cfg] : p.priorities)

@@ -56,6 +56,13 @@ sys.exit(0 if any(s == 22 + 16 * (2 * d + 2 + l) and e == 112 + 48 * l + 64 * d 
     fail "pattern_square seed $seed: $steps steps, $elements elements"
 done
 
+# An empty mother graph never matched in the tool (its matcher starts from an
+# element of it): the façade stops after 17 steps at 22 nodes and 53 edges, as
+# the tool did, instead of running to the limit.
+expect_code 0 "$g2d" import "$yml/ex_shape_ex1_facade.yml" -o facade1.g2d
+has err.txt "production \`Expand Windows\` has an empty mother graph, which the tool never matches: left out"
+[ "$(stats facade1.g2d)" = "17 75 terminal" ] || fail "ex_shape_ex1_facade: $(stats facade1.g2d)"
+
 # Older files' bare words are text, as the tool compared and stored them: a
 # condition `label: a` matches only `a` (one step, not the 500-step limit), and
 # `.svg_tag: rect` draws a square (tests/import/bare_words.yml says why).

@@ -204,9 +204,9 @@ TEST_CASE("warnings: unused bindings and rules that can never match", "[sema][wa
     auto r = compile(prelude() +
                      "node Never;\n"
                      "param unused_param: int = 1;\n"
-                     "rule R { match { x: P; } let unused = 1; produce { x; } }\n"
-                     "rule S { match { n: Never; } produce { n; } }\n"
-                     "rule T { match { x: P where 1 > 2; } produce { x; } }\n");
+                     "rule R { match { x: P; } let unused = 1; produce { x { w = 2 }; } }\n"
+                     "rule S { match { n: Never; } produce { } }\n"
+                     "rule T { match { x: P where 1 > 2; } produce { x { w = 3 }; } }\n");
     REQUIRE(r.program.has_value());
     auto lines = g2d::test::diagnosticLines(r);
     CHECK(lines == std::vector<std::string>{
@@ -216,6 +216,30 @@ TEST_CASE("warnings: unused bindings and rules that can never match", "[sema][wa
                        "axiom has none and no rule makes one)",
                        "9:6: warning: rule `T` can never match: one of its conditions is always false",
                    });
+}
+
+TEST_CASE("warnings: a rule that changes nothing (as the thesis tool's empty production)", "[sema][warnings]") {
+    auto idle = [](const std::string& rules) {
+        auto r = compile(prelude() + rules);
+        REQUIRE(r.program.has_value());
+        std::vector<std::string> out;
+        for (const auto& line : g2d::test::diagnosticLines(r))
+            if (line.find("changes nothing") != std::string::npos) out.push_back(line);
+        return out;
+    };
+    CHECK(idle("rule Empty { match { } produce { } }\n") ==
+          std::vector<std::string>{"5:1: warning: rule `Empty` changes nothing: it keeps its whole match as it is, so it can "
+                                   "match at every step and only uses steps up"});
+    CHECK(idle("rule Same { match { x: P; y: P; e: x -[E]-> y; } produce { x; y; e; } produce weight 2 { y; x; e; } }\n").size() == 1);
+    // Each of these changes something: an attribute, a new node, a deletion, a move, a style, an edge turned round.
+    CHECK(idle("rule A { match { x: P; } produce { x { w = 1 }; } }\n"
+               "rule B { match { x: P; } produce { x; y: P at (1, 1); } }\n"
+               "rule C { match { x: P; y: P; e: x -[E]-> y; } produce { x; y; } }\n"
+               "rule D { match { x: P; } produce { x at (2, 2); } }\n"
+               "rule F { match { x: P; } produce { x { style.fill = \"red\" }; } }\n"
+               "rule G { match { x: P; y: P; e: x -[E]-> y; } produce { x; y; e: y -[E]-> x; } }\n"
+               "rule H { match { } produce { } produce { n: P at (0, 0); } }\n")
+              .empty());
 }
 
 TEST_CASE("warnings: a matched node every daughter deletes, although another rule keeps its kind", "[sema][warnings]") {
