@@ -615,7 +615,7 @@ private:
     void writeDaughterElement(std::size_t oi, const MgElement& e, bool isNode, const RuleScope& scope,
                               std::vector<std::string>& lines) {
         const ElementScope element = scope.element(oi, e.id, isNode);
-        if (element.wildcard) return;
+        if (element.wildcard || element.helper) return;
         const KindCatalogue& kind = kindOf(isNode);
         const PyContext context = contextFor(scope, element);
         std::vector<std::string> assignments, todos;

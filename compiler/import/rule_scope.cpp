@@ -109,7 +109,7 @@ RuleScope RuleScope::build(const MgProduction& p, const std::vector<MgGlobal>& g
         for (const auto& [m, d] : o.mapping) kept[d] = m;
         for (bool isNode : {true, false})
             for (const auto& e : isNode ? o.daughter.vertices : o.daughter.edges) {
-                if (kept.count(e.id)) continue;
+                if (kept.count(e.id) || (isNode && isTrue(e.attribute(".helper_node")))) continue;
                 const std::string label = literalLabel(e);
                 fresh[e.id] = s.names_.take(!label.empty() ? snakeName(label) : isNode ? "n" : "e");
             }
@@ -158,6 +158,8 @@ ElementScope RuleScope::element(std::size_t option, const std::string& daughterI
         e.name = motherName(it->second);
     } else if (auto n = newNames_[option].find(daughterId); n != newNames_[option].end()) {
         e.name = n->second;
+    } else if (isNode) {
+        e.helper = true;
     }
     return e;
 }
@@ -247,8 +249,20 @@ std::optional<EdgeHead> RuleScope::daughterEdgeHead(std::size_t option, const Mg
         for (const auto& e : p_->mother.edges) if (e.id == kept->second) mother = &e;
         const std::string ma = endName(*mother, true), mb = endName(*mother, false);
         const std::string name = motherName(kept->second);
-        if (!a) a = ma;   // a dangling end stays where it was
-        if (!b) b = mb;
+        // A helper (or dangling) end stays on the host node it had: the
+        // mother's end that the other daughter end was not kept from, else
+        // the mother's helper end, else the end in the same place.
+        auto helperEnd = [&](const std::string& other, bool first) {
+            if (other == ma) return mb;
+            if (other == mb) return ma;
+            const bool helperA = !mother->vertex1 || wildcards_.count(*mother->vertex1);
+            const bool helperB = !mother->vertex2 || wildcards_.count(*mother->vertex2);
+            if (helperA != helperB) return helperA ? ma : mb;
+            return first ? ma : mb;
+        };
+        if (!a && !b) a = ma, b = mb;
+        else if (!a) a = helperEnd(*b, true);
+        else if (!b) b = helperEnd(*a, false);
         if ((*a == ma && *b == mb) || (!directed && *a == mb && *b == ma)) return EdgeHead{true, name, ""};
         return EdgeHead{false, name + ": " + *a + " -[Edge", arrow + *b};
     }

@@ -43,6 +43,7 @@ struct ElementScope {
     bool isNode = true;
     bool kept = false;
     bool wildcard = false;
+    bool helper = false;      // a daughter's helper node: the host node at a kept edge's helper end, not a new vertex
     std::string name;         // the element's g2d name
 };
 

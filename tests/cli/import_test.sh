@@ -63,6 +63,14 @@ expect_code 0 "$g2d" import "$yml/ex_shape_ex1_facade.yml" -o facade1.g2d
 has err.txt "production \`Expand Windows\` has an empty mother graph, which the tool never matches: left out"
 [ "$(stats facade1.g2d)" = "17 75 terminal" ] || fail "ex_shape_ex1_facade: $(stats facade1.g2d)"
 
+# A daughter's helper nodes are the host nodes at its kept edges' helper
+# ends, not new vertices: the second façade ends at 64 nodes and 64 edges, as
+# in the tool (it stopped after 5 steps with 4 and 1, its edges reattached
+# into a loop).
+expect_code 0 "$g2d" import "$yml/ex_shape_ex1_facade2.yml" -o facade2.g2d
+has facade2.g2d 'e: floor_2 -[Edge]- n;'
+[ "$(stats facade2.g2d | cut -d' ' -f2-)" = "128 terminal" ] || fail "ex_shape_ex1_facade2: $(stats facade2.g2d)"
+
 # Older files' bare words are text, as the tool compared and stored them: a
 # condition `label: a` matches only `a` (one step, not the 500-step limit), and
 # `.svg_tag: rect` draws a square (tests/import/bare_words.yml says why).
