@@ -237,22 +237,23 @@ std::string RewritePrinter::placement(const lower::Place& o, const std::string& 
     auto vec = [](const ir::Vec2& v) { return cppLiteral(ir::Value{v}, ir::kVec2Type); };
     for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
         item(mother, vec(o.motherSketch[i]));
-        item(host, "g.pos(m.nodes[" + str(static_cast<int>(i)) + "])");
+        item(host, "g.pos(m.nodes[" + str(o.members[i]) + "])");
     }
     for (const auto& [sketch, node] : o.refs) {
         item(refDaughter, vec(sketch));
-        item(refHost, "host[" + str(node) + "]");
+        item(refHost, "g.pos(m.nodes[" + str(node) + "])");
         item(refZ, "g.z(m.nodes[" + str(node) + "])");
     }
+    // std::array: a rule whose match has no placed node has none (a C array may not be empty).
     const std::string nodes = str(static_cast<int>(o.motherSketch.size()));
-    out += b + "const vec2 mother[" + nodes + "] = {" + mother + "};\n";
-    out += b + "const vec2 host[" + nodes + "] = {" + host + "};\n";
+    out += b + "const std::array<vec2, " + nodes + "> mother{{" + mother + "}};\n";
+    out += b + "const std::array<vec2, " + nodes + "> host{{" + host + "}};\n";
     const std::string n = str(static_cast<int>(o.refs.size()));
-    out += b + "const vec2 refDaughter[" + n + "] = {" + refDaughter + "};\n";
-    out += b + "const vec2 refHost[" + n + "] = {" + refHost + "};\n";
+    out += b + "const std::array<vec2, " + n + "> refDaughter{{" + refDaughter + "}};\n";
+    out += b + "const std::array<vec2, " + n + "> refHost{{" + refHost + "}};\n";
     const std::string directed =
         o.directed ? "std::make_pair(" + str(o.directed->first) + ", " + str(o.directed->second) + ")" : "std::nullopt";
-    if (o.space3d) out += b + "const double refZ[" + n + "] = {" + refZ + "};\n";
+    if (o.space3d) out += b + "const std::array<double, " + n + "> refZ{{" + refZ + "}};\n";
     out += b + "const PlacementFrame frame = placementFrame(mother, host, " + directed + ", refDaughter, refHost" +
            (o.space3d ? ", refZ" : "") + ");\n";
     for (const auto& t : o.targets) {

@@ -563,10 +563,14 @@ private:
 
     void writeMatch(const MgProduction& p, const RuleScope& scope) {
         out_ << "    match {\n";
+        // The tool strips helper nodes from the mother graph, so a helper, like
+        // a dangling edge's missing end, takes no part in automatic placement:
+        // a wildcard without a sketch position (an `ordered` rule needs one).
+        const bool ordered = isOrdered(p);
         for (const auto& v : p.mother.vertices) {
             const std::string& name = scope.motherName(v.id);
             if (scope.isWildcard(v.id)) {
-                out_ << "        " << name << ": * @ " << vertexPosition(v) << ";   // the tool's helper node\n";
+                out_ << "        " << name << ": *" << (ordered ? " @ " + vertexPosition(v) : "") << ";   // the tool's helper node\n";
                 continue;
             }
             std::vector<std::string> conditions, todos;
@@ -576,8 +580,9 @@ private:
             for (std::size_t i = 0; i < conditions.size(); ++i) out_ << (i ? " and " : " where ") << conditions[i];
             out_ << ";\n";
         }
-        // A dangling edge's missing end: drawn on the other end, so that it adds
-        // nothing to the automatic placement (the tool left it out).
+        // A dangling edge's missing end: a wildcard that takes no part in the
+        // automatic placement (the tool left it out); in an `ordered` rule,
+        // sketched on the other end.
         auto vertexById = [&](const std::string& id) -> const MgElement* {
             for (const auto& v : p.mother.vertices) if (v.id == id) return &v;
             return nullptr;
@@ -587,8 +592,8 @@ private:
                 if (first ? e.vertex1 : e.vertex2) continue;
                 const auto& other = first ? e.vertex2 : e.vertex1;
                 const MgElement* at = other ? vertexById(*other) : nullptr;
-                out_ << "        " << scope.endName(e, first) << ": * @ " << (at ? vertexPosition(*at) : "(0, 0)")
-                     << ";   // a dangling edge's missing end\n";
+                out_ << "        " << scope.endName(e, first) << ": *"
+                     << (ordered ? " @ " + (at ? vertexPosition(*at) : std::string("(0, 0)")) : "") << ";   // a dangling edge's missing end\n";
             }
         for (const auto& e : p.mother.edges) {
             std::vector<std::string> conditions, todos;
@@ -691,6 +696,12 @@ private:
         lines.push_back(line);
     }
 
+    static bool isOrdered(const MgProduction& p) {
+        for (const auto& [key, value] : p.conditions)
+            if (key == ".geometric_ordering" && isTrue(value)) return true;
+        return false;
+    }
+
     void writeRule(const MgProduction& p, RuleScope& scope) {
         out_ << "\n// \"" << p.name << "\"\n";
         if (p.mother.vertices.empty() && p.mother.edges.empty()) {
@@ -703,8 +714,7 @@ private:
         }
         out_ << "rule " << scope.ruleName();
         if (p.priority != 0) out_ << " priority " << p.priority;
-        for (const auto& [key, value] : p.conditions)
-            if (key == ".geometric_ordering" && isTrue(value)) out_ << " ordered";
+        if (isOrdered(p)) out_ << " ordered";
         bool oldest = false;
         for (const auto& o : p.options)
             for (const auto& [key, value] : o.conditions)

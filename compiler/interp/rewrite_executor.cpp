@@ -64,11 +64,11 @@ void RewriteExecutor::place(const lower::Place& o, rt::Match m, const rt::Graph&
     std::vector<double> refZ;
     for (std::size_t i = 0; i < o.motherSketch.size(); ++i) {
         mother.push_back({o.motherSketch[i].x, o.motherSketch[i].y});
-        host.push_back(g.pos(m.nodes[i]));
+        host.push_back(g.pos(m.nodes[o.members[i]]));
     }
     for (const auto& [sketch, node] : o.refs) {
         refDaughter.push_back({sketch.x, sketch.y});
-        refHost.push_back(host[static_cast<std::size_t>(node)]);
+        refHost.push_back(g.pos(m.nodes[node]));
         if (o.space3d) refZ.push_back(g.z(m.nodes[node]));   // 2D grammars have no z
     }
     const rt::PlacementFrame frame = rt::placementFrame(mother, host, o.directed, refDaughter, refHost, refZ);

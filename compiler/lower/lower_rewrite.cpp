@@ -178,8 +178,16 @@ private:
 
     void place() {
         Place pl;
-        // A face's hidden anchor has no sketch and is no reference.
-        for (const auto& n : r_.nodes) pl.motherSketch.push_back(n.sketch.value_or(ir::Vec2{0, 0}));
+        // A face's hidden anchor has no sketch and is no reference; a
+        // wildcard without one takes no part (sema allows only those).
+        std::vector<int> memberOf(r_.nodes.size(), -1);
+        for (std::size_t i = 0; i < r_.nodes.size(); ++i) {
+            const auto& n = r_.nodes[i];
+            if (!n.sketch && n.anchorOf < 0 && n.kind < 0) continue;
+            memberOf[i] = static_cast<int>(pl.members.size());
+            pl.members.push_back(static_cast<int>(i));
+            pl.motherSketch.push_back(n.sketch.value_or(ir::Vec2{0, 0}));
+        }
         for (const auto& dn : d_.nodes)
             if (dn.motherNode >= 0 && dn.sketch) pl.refs.emplace_back(*dn.sketch, dn.motherNode);
         // No node kept: the whole match is the reference.
@@ -187,8 +195,8 @@ private:
             for (std::size_t i = 0; i < r_.nodes.size(); ++i)
                 if (r_.nodes[i].sketch) pl.refs.emplace_back(*r_.nodes[i].sketch, static_cast<int>(i));
         for (const auto& e : r_.edges)
-            if (prog_.kinds[e.kind].directed && e.src != e.dst) {
-                pl.directed = std::make_pair(e.src, e.dst);
+            if (prog_.kinds[e.kind].directed && e.src != e.dst && memberOf[e.src] >= 0 && memberOf[e.dst] >= 0) {
+                pl.directed = std::make_pair(memberOf[e.src], memberOf[e.dst]);
                 break;
             }
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {

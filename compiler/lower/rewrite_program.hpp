@@ -42,11 +42,14 @@ struct Place {
         Span span;
         std::string message;            // when the position is not finite
     };
-    std::vector<ir::Vec2> motherSketch;           // per pattern node
+    // The pattern nodes that take part: all but wildcards without a sketch
+    // position (the thesis tool's dangling-edge ends, which it left out).
+    std::vector<int> members;
+    std::vector<ir::Vec2> motherSketch;           // per member
     // The reference pairs, (daughter sketch, pattern node): the kept nodes,
     // or, where none is kept, every pattern node (its mother sketch).
     std::vector<std::pair<ir::Vec2, int>> refs;
-    std::optional<std::pair<int, int>> directed;  // the first directed non-loop pattern edge (src, dst)
+    std::optional<std::pair<int, int>> directed;  // the first directed non-loop pattern edge between members (indices into members)
     bool space3d = false;                         // positions are vec3: z is the references' mean z
     std::vector<Target> targets;
 };

@@ -1369,8 +1369,8 @@ private:
     void checkAutoPlacement(const ir::Daughter& dg) {
         if (!dg.autoPlacement) return;
         for (const auto& mn : rule_.nodes) {
-            if (mn.sketch || mn.anchorOf >= 0) continue;
-            auto& d = g_.diags.error(mn.span, "automatic placement needs a sketch position for every matched node: "
+            if (mn.sketch || mn.anchorOf >= 0 || mn.kind < 0) continue;   // a wildcard without one takes no part
+            auto& d = g_.diags.error(mn.span, "automatic placement needs a sketch position for every matched node but wildcards: "
                                               "give `" + mn.name + "` one with `@ (x, y)`");
             d.notes.push_back({dg.span, "a new node of this daughter is placed automatically"});
             return;

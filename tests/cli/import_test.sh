@@ -62,6 +62,19 @@ done
 expect_code 0 "$g2d" import "$yml/ex_shape_ex1_facade.yml" -o facade1.g2d
 has err.txt "production \`Expand Windows\` has an empty mother graph, which the tool never matches: left out"
 [ "$(stats facade1.g2d)" = "17 75 terminal" ] || fail "ex_shape_ex1_facade: $(stats facade1.g2d)"
+# Helper nodes take no part in the automatic placement (the tool strips them
+# from the mother graph): the second floor stands level above the first, as
+# the tool drew it, not turned 90° across it.
+"$g2d" run facade1.g2d --no-svg --json facade1.json 2>/dev/null || fail "ex_shape_ex1_facade: the run failed"
+python3 - facade1.json <<'PY' || fail "ex_shape_ex1_facade: the floors are not level and stacked"
+import json, sys
+sides = sorted((n["pos"][1], n["pos"][0]) for n in json.load(open(sys.argv[1]))["nodes"] if n.get("label") == "FloorSide")
+assert len(sides) == 4, sides
+(y0, xa), (y1, xb), (y2, xc), (y3, xd) = sides
+assert abs(y0 - y1) < 0.5 and abs(y2 - y3) < 0.5, sides      # each floor level
+assert abs(xa - xb) > 10 and abs(xc - xd) > 10, sides        # and wide
+assert y2 - y1 > 5, sides                                    # one above the other
+PY
 
 # A daughter's helper nodes are the host nodes at its kept edges' helper
 # ends, not new vertices: the second façade ends at 64 nodes and 64 edges, as

@@ -127,7 +127,7 @@ TEST_CASE("graph structure errors", "[sema][graphs]") {
         {"new node without position", "rule R { match { x: P; } produce { x; n: P; } }",
          "5:39: new node `n` needs a position: `at EXPR`, or a sketch position `@ (x, y)` for automatic placement"},
         {"automatic placement without sketches", "rule R { match { x: P; } produce { x; n: P @ (1, 0); } }",
-         "5:18: automatic placement needs a sketch position for every matched node: give `x` one with `@ (x, y)`"},
+         "5:18: automatic placement needs a sketch position for every matched node but wildcards: give `x` one with `@ (x, y)`"},
         {"reading a new element", "rule R { match { x: P; } produce { x; n: P at x.pos; m: P at n.pos; } }",
          "5:62: `n` is created by this production; expressions can read only the matched elements (their values "
          "before the step)"},
@@ -313,7 +313,7 @@ TEST_CASE("fixes from the language reference review", "[sema][review]") {
     auto facts = compile(prelude() + "node Q { style { r = pos.x + age; } }");
     CHECK(firstError(facts).empty());
     // `x.w > 1 and false` can never hold.
-    auto never = compile(prelude() + "rule R { match { x: P where x.w > 1 and false; } produce { x; } }");
+    auto never = compile(prelude() + "rule R { match { x: P where x.w > 1 and false; } produce { x { w = 0 }; } }");
     REQUIRE(never.program);
     CHECK(g2d::test::diagnosticLines(never) ==
           std::vector<std::string>{"5:6: warning: rule `R` can never match: one of its conditions is always false"});
