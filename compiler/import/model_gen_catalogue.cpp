@@ -34,4 +34,6 @@ std::string defaultLiteral(PyType type) {
     }
 }
 
+std::string presenceFlag(const std::string& key) { return key.rfind("has_", 0) == 0 ? key + "_set" : "has_" + key; }
+
 }  // namespace g2d::import

@@ -17,8 +17,12 @@ struct CatalogueAttribute {
     bool usedInCondition = false;
     bool setEverywhere = true; // every host element and every new element sets it
     bool conditionFalseOnDefault = false;   // e.g. attr=='Wall': an unset "" never matches
-    bool presenceFlag = false; // `has_<key>`: the tool's condition also asks that the key exist
+    bool presenceFlag = false; // presenceFlag(key): the tool's condition also asks that the key exist
 };
+
+// The flag attribute that remembers that `key` was set: `has_grown`, and for
+// a key that already says so, `has_door_set` (not `has_has_door`).
+std::string presenceFlag(const std::string& key);
 
 struct KindCatalogue {
     bool isNode = true;

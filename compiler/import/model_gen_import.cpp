@@ -7,6 +7,7 @@
 
 #include <map>
 #include <optional>
+#include <cmath>
 #include <cstdlib>
 #include <set>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "import/model_gen_styles.hpp"
 #include "import/python_expr.hpp"
 #include "import/rule_scope.hpp"
+#include "import/line_wrap.hpp"
 #include "import/used_names.hpp"
 
 namespace g2d::import {
@@ -149,7 +151,7 @@ public:
         out_.str("");
         writeHeader(body);
         out_ << body;
-        return {out_.str(), std::move(warnings_)};
+        return {wrapLongLines(out_.str()), std::move(warnings_)};
     }
 
 private:
@@ -431,7 +433,7 @@ private:
             if (style) out_ << "   // the tool's ." << a.key << ", read by rules; -1: not set";
             out_ << "\n";
             if (a.presenceFlag)
-                out_ << "    has_" << a.key << ": bool = false;   // the tool's conditions on `" << a.key
+                out_ << "    " << presenceFlag(a.key) << ": bool = false;   // the tool's conditions on `" << a.key
                      << "` also asked that it be set\n";
         }
         if (kind.tagVaries) out_ << "    svg_tag: string = \"\";   // the tool's .svg_tag: \"\" is its default drawing\n";
@@ -448,7 +450,7 @@ private:
     std::optional<std::string> hostAssignment(const KindCatalogue& kind, const MgAttribute& a, std::vector<std::string>& extra) {
         if (isUserKey(a.key)) {
             const auto* attr = kind.find(a.key);
-            if (attr->presenceFlag) extra.push_back("has_" + a.key + " = true");
+            if (attr->presenceFlag) extra.push_back(presenceFlag(a.key) + " = true");
             return a.key + " = " + literalAs(a.value, attr->type);
         }
         auto prop = stylePropertyOf(a.key);
@@ -499,7 +501,9 @@ private:
                 warn(a->line, std::string("the vertex's `") + key + "` is not a number: `" + text + "`; 0 is used");
                 return std::string("0");
             }
-            return numberText(value);
+            // The editor's coordinates come from pixels (a pixel is 0.028
+            // units): four decimals keep every one and read better than twelve.
+            return numberText(std::round(value * 1e4) / 1e4);
         };
         return "(" + coordinate("x") + ", " + coordinate("y") + ")";
     }
@@ -544,7 +548,7 @@ private:
             context.conditionElementIsNode = isNode;
             context.conditionKey = a.key;
             PyTranslation t = translatePython(a.value.text, context);
-            std::string presence = attr && attr->presenceFlag ? context.conditionElement + ".has_" + a.key : "";
+            std::string presence = attr && attr->presenceFlag ? context.conditionElement + "." + presenceFlag(a.key) : "";
             if (!t.ok) {
                 warn(a.line, "the condition `" + a.key + ": " + a.value.text + "` cannot be translated (" + t.problem +
                                  "); the imported rule matches without it");
@@ -643,7 +647,7 @@ private:
                 if (attr->type == PyType::Bool && t.type != PyType::Bool && t.type != PyType::Unknown)
                     text = "(" + text + ") != 0";
                 assignments.push_back(a.key + " = " + text);
-                if (attr->presenceFlag) assignments.push_back("has_" + a.key + " = true");
+                if (attr->presenceFlag) assignments.push_back(presenceFlag(a.key) + " = true");
                 continue;
             }
             auto prop = stylePropertyOf(a.key);

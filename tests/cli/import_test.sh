@@ -24,6 +24,11 @@ for f in "$yml"/*.yml; do
   b=$(basename "$f" .yml)
   expect_code 0 "$g2d" import "$f" -o "$b.g2d"
   expect_code 0 "$g2d" check --werror "$b.g2d"   # an import is warning-free
+  # Readable: lines wrapped (only a string may run long), no `has_has_`, sketches to the editor's pixel.
+  long=$(grep -v '^defs ' "$b.g2d" | awk 'length($0) > 120' | head -1)
+  [ -z "$long" ] || fail "$b: a line of $(printf '%s' "$long" | wc -c) characters: ${long:0:120}"
+  grep -q 'has_has_' "$b.g2d" && fail "$b: a has_has_ name"
+  grep -qE '@ \(-?[0-9]+\.[0-9]{5,}' "$b.g2d" && fail "$b: a sketch position with more than 4 decimals"
   # It runs to its end or its limit, never into a run-time error.
   for seed in 1 2; do
     "$g2d" run "$b.g2d" --seed "$seed" --no-svg --stats >run.txt 2>run_err.txt || fail "$b seed $seed: $(head -c 300 run_err.txt)"

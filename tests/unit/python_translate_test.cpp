@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "import/python_expr.hpp"
+#include "import/line_wrap.hpp"
 #include "import/used_names.hpp"
 
 using namespace g2d::import;
@@ -502,4 +503,23 @@ TEST_CASE("an import declares the names its code reads, directly or through anot
     // `c` only in a comment; `a` reads `b`; the string's `//` does not end the code.
     CHECK(usedNames("x = a + 1;   // c\n// c is not read\ny = \"//\" + e;", declared) == std::set<std::string>{"a", "b", "e", "f"});
     CHECK(usedNames("x = ab + a_b;", declared).empty());   // whole words only
+}
+
+TEST_CASE("an import's long lines are wrapped at their shallowest separators, strings and short lines untouched", "[import]") {
+    using g2d::import::wrapLongLines;
+    const std::string shortLine = "    n: Vertex @ (0, 0) where n.label == \"a, b and c\";";
+    CHECK(wrapLongLines(shortLine, 60) == shortLine);
+    // ` and ` at depth 0 first; a string's separators are not cut.
+    CHECK(wrapLongLines("        n: Vertex @ (1, 2) where n.has_w and (n.w > 3) and n.label == \"a, b and c\";", 50) ==
+          "        n: Vertex @ (1, 2) where n.has_w\n"
+          "            and (n.w > 3)\n"
+          "            and n.label == \"a, b and c\";");
+    // An assignment block: its `, ` inside `{ }`; a piece still too long is broken inside its call.
+    CHECK(wrapLongLines("    e { d = format(\"M {} {}\", s.x, s.y, t.x, t.y), fill = \"red\" };", 40) ==
+          "    e { d = format(\"M {} {}\", s.x, s.y,\n"
+          "            t.x, t.y),\n"
+          "        fill = \"red\" };");
+    // A trailing comment goes above its code; comment lines stay.
+    CHECK(wrapLongLines("    x = aaaa, bbbb;   // why\n// a long comment line, and more, and more", 16) ==
+          "    // why\n    x = aaaa,\n        bbbb;\n// a long comment line, and more, and more");
 }
