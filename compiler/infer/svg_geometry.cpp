@@ -9,6 +9,8 @@
 #include <map>
 #include <numeric>
 
+#include "g2d/plane_geometry.hpp"
+
 namespace g2d::infer::svg {
 namespace {
 
@@ -141,9 +143,8 @@ private:
                 const Segment t = segments_[order[j]];
                 if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) continue;
                 const Point c = vertices_[t.a], d = vertices_[t.b];
-                const double o1 = cross(minus(b, a), minus(c, a)), o2 = cross(minus(b, a), minus(d, a));
-                const double o3 = cross(minus(d, c), minus(a, c)), o4 = cross(minus(d, c), minus(b, c));
-                if (!((o1 < 0 && o2 > 0) || (o1 > 0 && o2 < 0)) || !((o3 < 0 && o4 > 0) || (o3 > 0 && o4 < 0))) continue;
+                auto v = [](Point p) { return rt::vec2(p.x, p.y); };
+                if (!rt::segmentsCrossProperly(v(a), v(b), v(c), v(d))) continue;
                 const double u = cross(minus(c, a), minus(d, c)) / cross(minus(b, a), minus(d, c));
                 const Point x{a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)};
                 if (dist2(x, a) < tol2 || dist2(x, b) < tol2 || dist2(x, c) < tol2 || dist2(x, d) < tol2) continue;

@@ -4,9 +4,11 @@
 // box; many (a whole drawing) go through a uniform grid built for the call.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "g2d/angle_drawing.hpp"
+#include "g2d/plane_geometry.hpp"
 
 namespace g2d::rt {
 
@@ -32,29 +34,7 @@ Box boxOf(vec2 p, vec2 q, double margin) {
             std::max(p.y, q.y) + margin};
 }
 
-double orient(vec2 a, vec2 b, vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
-
-// c, collinear with a and b: does it lie on the closed segment?
-bool within(vec2 a, vec2 b, vec2 c) {
-    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
-           c.y <= std::max(a.y, b.y);
-}
-
-// Closed segments: touching, or collinear and overlapping, counts.
-bool segmentsMeet(vec2 a, vec2 b, vec2 c, vec2 d) {
-    const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
-    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
-    return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) || (d3 == 0 && within(a, b, c)) ||
-           (d4 == 0 && within(a, b, d));
-}
-
-double distance2(vec2 p, vec2 a, vec2 b) {
-    const vec2 ab = b - a, ap = p - a;
-    const double len2 = ab.x * ab.x + ab.y * ab.y;
-    const double t = len2 > 0 ? std::clamp((ap.x * ab.x + ap.y * ab.y) / len2, 0.0, 1.0) : 0.0;
-    const vec2 r = ap - t * ab;
-    return r.x * r.x + r.y * r.y;
-}
+double distance2(vec2 p, vec2 a, vec2 b) { return pointSegmentDistanceSquared(p, a, b); }
 
 class Checker {
 public:
@@ -98,11 +78,17 @@ private:
     double sep_, sep2_;
 };
 
+constexpr std::size_t kScanMax = 32;   // beyond this many tested items, a grid is cheaper than scans
+
 // Each pair is tested once, from its tested item of lower index.
 bool pairWanted(int t, int j, const std::vector<char>& tested) { return j != t && (!tested[j] || j > t); }
 
+// `found(t, j)` is told each conflicting pair and returns whether to stop;
+// both searches return false when one stopped them.
+using FoundConflict = std::function<bool(int, int)>;
+
 bool planarByScan(const Checker& ck, const std::vector<Item>& items, const std::vector<int>& tests,
-                  const std::vector<char>& tested) {
+                  const std::vector<char>& tested, const FoundConflict& found) {
     std::vector<Box> boxes;
     Box all{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (int t : tests) {
@@ -114,14 +100,15 @@ bool planarByScan(const Checker& ck, const std::vector<Item>& items, const std::
         const Box bj = ck.box(j, 0);
         if (!overlaps(all, bj)) continue;
         for (std::size_t k = 0; k < tests.size(); ++k)
-            if (pairWanted(tests[k], j, tested) && overlaps(boxes[k], bj) && ck.conflict(items[tests[k]], items[j]))
+            if (pairWanted(tests[k], j, tested) && overlaps(boxes[k], bj) && ck.conflict(items[tests[k]], items[j]) &&
+                found(tests[k], j))
                 return false;
     }
     return true;
 }
 
 bool planarByGrid(const Checker& ck, const std::vector<Item>& items, const std::vector<int>& tests,
-                  const std::vector<char>& tested) {
+                  const std::vector<char>& tested, const FoundConflict& found) {
     const int n = static_cast<int>(items.size());
     std::vector<Box> boxes(items.size());
     Box all{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -171,7 +158,7 @@ bool planarByGrid(const Checker& ck, const std::vector<Item>& items, const std::
     for (int t : tests) {
         const Box q = ck.box(t, ck.separation());
         auto test = [&](int j) {
-            return pairWanted(t, j, tested) && overlaps(q, boxes[j]) && ck.conflict(items[t], items[j]);
+            return pairWanted(t, j, tested) && overlaps(q, boxes[j]) && ck.conflict(items[t], items[j]) && found(t, j);
         };
         if (isBig[t]) {
             for (int j = 0; j < n; ++j)
@@ -257,8 +244,28 @@ bool drawingIsPlanar(const std::vector<vec2>& partPosition, const std::vector<An
         addSurroundings(*surroundings, tests, sep, withSurroundings, items);
         tested.resize(items.size(), 0);
     }
-    constexpr std::size_t kScanMax = 32;   // beyond this many, a grid is cheaper than scans
-    return tests.size() <= kScanMax ? planarByScan(ck, items, tests, tested) : planarByGrid(ck, items, tests, tested);
+    const FoundConflict stop = [](int, int) { return true; };
+    return tests.size() <= kScanMax ? planarByScan(ck, items, tests, tested, stop) : planarByGrid(ck, items, tests, tested, stop);
+}
+
+std::vector<std::pair<int, int>> conflictingItems(const std::vector<vec2>& position, const std::vector<std::pair<int, int>>& items,
+                                                  double separation) {
+    std::vector<std::pair<int, int>> out;
+    std::vector<Item> all;
+    all.reserve(items.size());
+    for (const auto& [a, b] : items) all.push_back({a, b});
+    const Checker ck(position, all, separation > 0 && std::isfinite(separation) ? separation : 0.0);
+    std::vector<int> tests(all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) tests[i] = static_cast<int>(i);
+    const std::vector<char> tested(all.size(), 1);
+    const FoundConflict collect = [&](int t, int j) {
+        out.emplace_back(std::min(t, j), std::max(t, j));
+        return false;
+    };
+    if (tests.size() <= kScanMax) planarByScan(ck, all, tests, tested, collect);
+    else planarByGrid(ck, all, tests, tested, collect);
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 }  // namespace g2d::rt

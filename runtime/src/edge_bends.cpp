@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include "g2d/geometry3.hpp"
+#include "g2d/angle_drawing.hpp"
 
 namespace g2d::rt {
 
@@ -63,59 +63,21 @@ struct Segment {
 constexpr std::uint32_t kStraight = 0xffffffffu;
 
 // Which bent edges conflict: a polyline that crosses, overlaps or comes
-// within `clearance` of another (or of itself) away from a shared point.
-// Segments are hashed into square cells along their length; pairs within a
-// cell of each other meet in some cell's 3 × 3 neighbourhood.
-std::vector<char> conflicts(const std::vector<Segment>& segs, const std::vector<vec2>& at, std::size_t bentCount, double clearance) {
+// within `clearance` of another (or of itself) away from a shared point,
+// as the drawing step's planarity test says (conflictingItems). The items are
+// the segments, and the nodes without edges.
+std::vector<char> conflicts(const std::vector<Segment>& segs, const std::vector<std::pair<int, int>>& lone, const std::vector<vec2>& at,
+                            std::size_t bentCount, double clearance) {
     std::vector<char> bad(bentCount, 0);
-    if (segs.empty()) return bad;
-    double total = 0;
-    for (const Segment& s : segs) total += length(at[s.q] - at[s.p]);
-    const double cell = std::max({2 * total / static_cast<double>(segs.size()), 4 * clearance, 1e-9});
-    auto key = [](std::int64_t x, std::int64_t y) { return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint32_t>(y); };
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
-    std::vector<std::vector<std::uint64_t>> visited(segs.size());
-    for (std::uint32_t i = 0; i < segs.size(); ++i) {
-        const vec2 a = at[segs[i].p], b = at[segs[i].q];
-        const int steps = std::max(1, static_cast<int>(std::ceil(2 * length(b - a) / cell)));
-        for (int k = 0; k <= steps; ++k) {
-            const vec2 p = a + (b - a) * (static_cast<double>(k) / steps);
-            const std::uint64_t c = key(static_cast<std::int64_t>(std::floor(p.x / cell)), static_cast<std::int64_t>(std::floor(p.y / cell)));
-            if (std::find(visited[i].begin(), visited[i].end(), c) != visited[i].end()) continue;
-            visited[i].push_back(c);
-            cells[c].push_back(i);
-        }
-    }
-    auto v3 = [&](std::uint32_t p) { return vec3{at[p].x, at[p].y, 0}; };
-    auto clash = [&](const Segment& s, const Segment& t) {
-        const std::uint32_t shared = s.p == t.p || s.p == t.q ? s.p : s.q == t.p || s.q == t.q ? s.q : kStraight;
-        if (shared != kStraight) {
-            if ((s.p == t.p && s.q == t.q) || (s.p == t.q && s.q == t.p)) return false;   // one segment
-            const std::uint32_t a = s.p == shared ? s.q : s.p, b = t.p == shared ? t.q : t.p;
-            return segmentsIntersectSharing(v3(shared), v3(a), v3(b), clearance);
-        }
-        return segmentsIntersect(v3(s.p), v3(s.q), v3(t.p), v3(t.q), clearance);
-    };
-    std::vector<std::uint32_t> near;
-    for (std::uint32_t i = 0; i < segs.size(); ++i) {
-        near.clear();
-        for (std::uint64_t c : visited[i]) {
-            const std::int64_t cx = static_cast<std::int32_t>(c >> 32), cy = static_cast<std::int32_t>(c & 0xffffffffu);
-            for (std::int64_t dx = -1; dx <= 1; ++dx)
-                for (std::int64_t dy = -1; dy <= 1; ++dy)
-                    if (auto it = cells.find(key(cx + dx, cy + dy)); it != cells.end())
-                        for (std::uint32_t j : it->second)
-                            if (j > i) near.push_back(j);
-        }
-        std::sort(near.begin(), near.end());
-        near.erase(std::unique(near.begin(), near.end()), near.end());
-        for (std::uint32_t j : near) {
-            const Segment &s = segs[i], &t = segs[j];
-            if (s.edge == kStraight && t.edge == kStraight) continue;   // the derivation's planar drawing
-            if (!clash(s, t)) continue;
-            if (s.edge != kStraight) bad[s.edge] = 1;
-            if (t.edge != kStraight) bad[t.edge] = 1;
-        }
+    std::vector<std::pair<int, int>> items;
+    items.reserve(segs.size() + lone.size());
+    for (const Segment& s : segs) items.emplace_back(static_cast<int>(s.p), static_cast<int>(s.q));
+    items.insert(items.end(), lone.begin(), lone.end());
+    for (const auto& [i, j] : conflictingItems(at, items, clearance)) {
+        const std::uint32_t a = static_cast<std::size_t>(i) < segs.size() ? segs[static_cast<std::size_t>(i)].edge : kStraight;
+        const std::uint32_t b = static_cast<std::size_t>(j) < segs.size() ? segs[static_cast<std::size_t>(j)].edge : kStraight;
+        if (a != kStraight) bad[a] = 1;   // two straight ones: the derivation's own planar drawing
+        if (b != kStraight) bad[b] = 1;
     }
     return bad;
 }
@@ -260,6 +222,9 @@ BendResult bendEdges(Graph& g, const AngleLayoutSpec& spec, Rng& rng) {
     };
     bentSegments();
     const std::vector<std::uint32_t> piece = pieces(g, bent, pts.unknown);
+    std::vector<std::pair<int, int>> lone;   // nodes without edges, which a bent edge may not touch either
+    for (NodeId n = 0; n < g.nodeCapacity(); ++n)
+        if (g.nodeAlive(n) && g.degree(n) == 0) lone.emplace_back(static_cast<int>(n), static_cast<int>(n));
     const double clearance = spec.settings.separation;
     bool planar = false;
     if (solver.info() == Eigen::Success) {
@@ -268,7 +233,7 @@ BendResult bendEdges(Graph& g, const AngleLayoutSpec& spec, Rng& rng) {
             bool finite = true;
             for (const vec2& p : pts.at) finite = finite && std::isfinite(p.x) && std::isfinite(p.y);
             if (!finite) break;
-            const std::vector<char> bad = conflicts(segs, pts.at, bent.size(), clearance);
+            const std::vector<char> bad = conflicts(segs, lone, pts.at, bent.size(), clearance);
             planar = std::find(bad.begin(), bad.end(), 1) == bad.end();
             // The first rounds cut the offending edges only; later ones every
             // edge of their pieces (a piece's shape depends on its own edges

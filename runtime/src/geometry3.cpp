@@ -1,4 +1,5 @@
 #include "g2d/geometry3.hpp"
+#include "g2d/plane_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,14 +107,7 @@ vec3 newellSum(std::span<const vec3> polygon) {
 
 // --- triangulation, in the 2D view ---
 
-double orient2(vec2 a, vec2 b, vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
-
-double pointSegmentDistance2(vec2 p, vec2 a, vec2 b) {
-    const vec2 d = b - a;
-    const double l2 = d.x * d.x + d.y * d.y;
-    const double t = l2 > 0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / l2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - a.x - t * d.x, p.y - a.y - t * d.y);
-}
+double pointSegmentDistance2(vec2 p, vec2 a, vec2 b) { return std::sqrt(pointSegmentDistanceSquared(p, a, b)); }
 
 // Crossing test ([AMHH08] §16.9.1): a ray towards +x crosses the outline an
 // odd number of times.
@@ -142,9 +136,7 @@ struct Diagonals {
         if (!sharesI && pointSegmentDistance2(q[i], q[c], q[d]) <= eps) return true;
         if (!sharesJ && pointSegmentDistance2(q[j], q[c], q[d]) <= eps) return true;
         if (sharesI || sharesJ) return false;
-        const double o1 = orient2(q[i], q[j], q[c]), o2 = orient2(q[i], q[j], q[d]);
-        const double o3 = orient2(q[c], q[d], q[i]), o4 = orient2(q[c], q[d], q[j]);
-        return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+        return segmentsCrossProperly(q[i], q[j], q[c], q[d]);
     }
 
     // §3.2.4 steps 2 and 3: crosses no side and no kept diagonal, passes

@@ -26,7 +26,7 @@ ALLOWED = {
     "emit": {"diag", "ir", "lower", "g2d"},
     "lsp": {"ast", "diag", "front", "sema", "g2d", "antlr"},   # the lexer's keyword list
     "show": {"diag", "ir", "sema", "g2d"},
-    "infer": set(),
+    "infer": {"g2d"},   # the runtime's plane geometry
     "import": set(),
     "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "infer", "import", "g2d"},
 }

@@ -99,6 +99,12 @@ DrawingResult drawAngleGraph(const AngleGraph& graph, const DrawingSettings& set
 bool drawingIsPlanar(const std::vector<vec2>& position, const std::vector<AngleEdge>& edges, double separation,
                      const std::vector<char>& moved = {}, const FixedSurroundings* surroundings = nullptr);
 
+// Every pair of items that conflict as drawingIsPlanar says (each pair
+// once, (lower, higher), sorted), every item tested. An item is an edge
+// (from, to), or a lone vertex (v, v); indices into `position`.
+std::vector<std::pair<int, int>> conflictingItems(const std::vector<vec2>& position, const std::vector<std::pair<int, int>>& items,
+                                                  double separation);
+
 // Whether every connected component that contains a `moved` vertex, or whose
 // bounding box meets one that does, lies in a region of the area its edges
 // name on their outside: seen from its lowest vertex (then leftmost), the
