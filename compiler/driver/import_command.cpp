@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "front/reserved_names.hpp"
 #include "g2d/atomic_file.hpp"
 #include "import/model_gen_grammar.hpp"
 #include "import/model_gen_import.hpp"
@@ -21,7 +22,7 @@ int runImport(const ImportCommandOptions& options) {
     import::ImportedGrammar imported;
     try {
         const std::string name = options.input.substr(options.input.find_last_of('/') + 1);
-        imported = import::importModelGen(import::readModelGenGrammar(text.str()), name);
+        imported = import::importModelGen(import::readModelGenGrammar(text.str()), name, front::reservedNames());
     } catch (const import::MgError& e) {
         std::fprintf(stderr, "%s:%d: error: %s\n", options.input.c_str(), e.line, e.what());
         return 1;

@@ -129,7 +129,8 @@ std::string styleReadsAsAttributes(const std::string& source) {
 
 class Importer {
 public:
-    Importer(const MgGrammar& g, std::string fileName) : g_(g), file_(std::move(fileName)) {
+    Importer(const MgGrammar& g, std::string fileName, const std::set<std::string>& reserved)
+        : g_(g), file_(std::move(fileName)), reserved_(withKinds(reserved)), ruleNames_(reserved_) {
         nodes_.isNode = true;
         edges_.isNode = false;
     }
@@ -140,7 +141,7 @@ public:
         collectKeys();
         decideDirection();
         readGlobals();
-        for (const auto& p : g_.productions) scopes_.push_back(RuleScope::build(p, g_.globals, ruleNames_, consts_));
+        for (const auto& p : g_.productions) scopes_.push_back(RuleScope::build(p, g_.globals, ruleNames_, consts_, reserved_));
         for (int pass = 0; pass < 2; ++pass) inferExpressionTypes();
         settleCatalogue(nodes_);
         settleCatalogue(edges_);
@@ -162,7 +163,13 @@ private:
     bool mixedDirections_ = false;
     std::vector<ImportWarning> warnings_;
     std::ostringstream out_;
+    std::set<std::string> reserved_;     // g2d's names and the imported kinds'
     NameSet ruleNames_;                  // rules and constants share the global namespace
+
+    static std::set<std::string> withKinds(std::set<std::string> names) {
+        names.insert({"Vertex", "Edge"});
+        return names;
+    }
     std::map<std::string, ConstName> consts_;
     std::vector<RuleScope> scopes_;
 
@@ -509,7 +516,7 @@ private:
     }
 
     void writeAxiom() {
-        NameSet names;
+        NameSet names(reserved_);
         std::map<std::string, std::string> nameOf;
         out_ << "axiom {\n";
         for (const auto& v : host().vertices) {
@@ -760,8 +767,8 @@ private:
 
 }  // namespace
 
-ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName) {
-    return Importer(grammar, fileName).run();
+ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName, const std::set<std::string>& reserved) {
+    return Importer(grammar, fileName, reserved).run();
 }
 
 }  // namespace g2d::import

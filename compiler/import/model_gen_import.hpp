@@ -1,6 +1,7 @@
 #pragma once
 // `g2d import`: the original tool's YAML grammar (model_gen) as g2d source.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,9 @@ struct ImportedGrammar {
     std::vector<ImportWarning> warnings;
 };
 
-// fileName is named in the output's header comment.
-ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName);
+// fileName is named in the output's header comment. `reserved`: the names
+// g2d's own (keywords, types, built-ins, facts: front::reservedNames), which
+// the grammar's names avoid; the importer adds its kinds, Vertex and Edge.
+ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName, const std::set<std::string>& reserved);
 
 }  // namespace g2d::import

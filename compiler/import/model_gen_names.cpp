@@ -35,29 +35,8 @@ std::string snakeName(std::string_view text) {
     return out;
 }
 
-bool isReserved(std::string_view name) {
-    static constexpr std::string_view kReserved[] = {
-        // keywords (grammar/G2d.g4)
-        "and", "around", "at", "axiom", "between", "compound", "const", "defs", "directed", "dpo",
-        "edge", "enum", "face", "false", "fn", "for", "import", "in", "insert", "intersect", "layout",
-        "let", "limit", "match", "merge", "node", "not", "or", "ordered", "parallel", "param", "pick",
-        "priority", "produce", "rule", "sequence", "space", "split", "style", "true", "undirected",
-        "weight", "where", "with", "within",
-        // types, built-in values and functions, facts
-        "int", "float", "bool", "string", "vec2", "vec3", "pi", "tau", "placed",
-        "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt", "exp", "log", "pow", "hypot",
-        "floor", "ceil", "round", "radians", "degrees", "abs", "sign", "clamp", "min", "max",
-        "dot", "cross", "length", "distance", "normalize", "perp_left", "perp_right", "rotate",
-        "angle", "lerp", "str", "format", "random", "uniform", "randint", "normal", "choice",
-        "pos", "age", "id", "degree", "in_degree", "out_degree", "faces", "direction",
-        "Vertex", "Edge"};
-    for (auto r : kReserved)
-        if (r == name) return true;
-    return false;
-}
-
 std::string NameSet::take(const std::string& wanted) {
-    std::string base = isReserved(wanted) ? wanted + "_" : wanted;
+    std::string base = reserved_->count(wanted) ? wanted + "_" : wanted;
     std::string name = base;
     for (int k = 2; taken_.count(name) != 0; ++k) name = base + std::to_string(k);
     taken_.insert(name);

@@ -12,17 +12,17 @@ namespace g2d::import {
 std::string camelName(std::string_view text);
 // "H-Floor" → "h_floor" (elements, constants).
 std::string snakeName(std::string_view text);
-// g2d's keywords and built-in names, which a grammar's names must avoid.
-bool isReserved(std::string_view name);
-
-// Hands out names, each once: "floor", then "floor2", "floor3", …
+// Hands out names, each once: "floor", then "floor2", "floor3", …; a
+// reserved one (a keyword, a built-in: `reserved`) gets a `_` first.
 class NameSet {
 public:
+    explicit NameSet(const std::set<std::string>& reserved) : reserved_(&reserved) {}
     std::string take(const std::string& wanted);
     bool has(const std::string& name) const { return taken_.count(name) != 0; }
     void reserve(const std::string& name) { taken_.insert(name); }
 
 private:
+    const std::set<std::string>* reserved_;
     std::set<std::string> taken_;
 };
 

@@ -43,8 +43,8 @@ double coordinate(const MgElement& v, const char* key) {
 }  // namespace
 
 RuleScope RuleScope::build(const MgProduction& p, const std::vector<MgGlobal>& globals, NameSet& ruleNames,
-                           const std::map<std::string, ConstName>& consts) {
-    RuleScope s;
+                           const std::map<std::string, ConstName>& consts, const std::set<std::string>& reserved) {
+    RuleScope s(reserved);
     s.p_ = &p;
     s.consts_ = &consts;
     s.ruleName_ = ruleNames.take(camelName(p.name));

@@ -60,7 +60,7 @@ struct EdgeHead {             // `name: a -[Edge` + assignments + `]-> b`, or a 
 class RuleScope {
 public:
     static RuleScope build(const MgProduction& p, const std::vector<MgGlobal>& globals, NameSet& ruleNames,
-                           const std::map<std::string, ConstName>& consts);
+                           const std::map<std::string, ConstName>& consts, const std::set<std::string>& reserved);
 
     const std::string& ruleName() const { return ruleName_; }
     const std::string& motherName(const std::string& id) const;
@@ -84,6 +84,7 @@ private:
     const MgProduction* p_ = nullptr;
     const std::map<std::string, ConstName>* consts_ = nullptr;
     std::string ruleName_;
+    explicit RuleScope(const std::set<std::string>& reserved) : names_(reserved) {}
     NameSet names_;
     std::map<std::string, std::string> motherNames_;                // mother id → name
     std::map<std::string, bool> motherIsNode_;

@@ -10,7 +10,7 @@
 
 #include "front/compile.hpp"
 #include "lsp/json_rpc.hpp"
-#include "lsp/keywords.hpp"
+#include "front/reserved_names.hpp"
 #include "lsp/positions.hpp"
 #include "lsp/symbol_index.hpp"
 #include "sema/builtins.hpp"
@@ -344,7 +344,7 @@ private:
         for (const Symbol* s : p.doc->index->visible(kMainFile, p.line, p.col))
             if (s->kind != SymbolKind::Rule) add(s->name, completionKindNumber(s->kind), SymbolIndex::describe(s->kind));
         for (const auto& b : sema::builtinFunctions()) add(b.name, 3, b.signature);
-        for (const auto& k : keywords()) add(k, 14, "keyword");
+        for (const auto& k : front::keywords()) add(k, 14, "keyword");
         return items;
     }
 

@@ -8,7 +8,11 @@
 #include <vector>
 
 #include "import/python_expr.hpp"
+#include "front/reserved_names.hpp"
 #include "import/line_wrap.hpp"
+#include "import/model_gen_names.hpp"
+#include "sema/builtins.hpp"
+#include "sema/element_facts.hpp"
 #include "import/used_names.hpp"
 
 using namespace g2d::import;
@@ -522,4 +526,18 @@ TEST_CASE("an import's long lines are wrapped at their shallowest separators, st
     // A trailing comment goes above its code; comment lines stay.
     CHECK(wrapLongLines("    x = aaaa, bbbb;   // why\n// a long comment line, and more, and more", 16) ==
           "    // why\n    x = aaaa,\n        bbbb;\n// a long comment line, and more, and more");
+}
+
+TEST_CASE("an import's names avoid every keyword, type, built-in and fact the checker knows", "[import]") {
+    std::vector<std::string> all = g2d::front::keywords();
+    for (const auto& b : g2d::sema::builtinFunctions()) all.push_back(b.name);
+    for (const auto& f : g2d::sema::elementFacts()) all.push_back(f.name);
+    for (const char* other : {"int", "float", "vec2", "pi", "tau", "placed", "canvas", "weight"}) all.push_back(other);
+    for (const auto& name : all) {
+        INFO(name);
+        g2d::import::NameSet names(g2d::front::reservedNames());
+        CHECK(names.take(name) == name + "_");
+    }
+    g2d::import::NameSet names(g2d::front::reservedNames());
+    CHECK(names.take("floor_plan") == "floor_plan");
 }

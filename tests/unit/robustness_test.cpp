@@ -4,21 +4,30 @@
 #include <filesystem>
 #include <fstream>
 
+#include "driver/big_stack.hpp"
 #include "test_helpers.hpp"
 
 using namespace g2d;
 
 namespace {
 
+// Compiled on the big stack every command of g2d runs its passes on
+// (driver/big_stack.hpp): what is tested is what the program does, also
+// under AddressSanitizer, whose frames no main-thread stack holds 4000 deep.
 std::string firstErrorOfFile(const std::string& path) {
-    LoadOptions options;
-    auto r = compileFile(path, options);
-    for (const auto& d : r.diags.sorted())
-        if (d.severity == Severity::Error) {
-            std::string loc = d.span.line ? std::to_string(d.span.line) + ":" + std::to_string(d.span.col) + ": " : "";
-            return loc + d.message;
-        }
-    return "";
+    std::string first;
+    runWithBigStack([&] {
+        LoadOptions options;
+        auto r = compileFile(path, options);
+        for (const auto& d : r.diags.sorted())
+            if (d.severity == Severity::Error) {
+                std::string loc = d.span.line ? std::to_string(d.span.line) + ":" + std::to_string(d.span.col) + ": " : "";
+                first = loc + d.message;
+                break;
+            }
+        return 0;
+    });
+    return first;
 }
 
 std::string writeTemp(const std::string& name, const std::string& bytes) {

@@ -1,4 +1,4 @@
-#include "lsp/keywords.hpp"
+#include "parse/keywords.hpp"
 
 #include <cctype>
 
@@ -6,7 +6,7 @@
 
 #include "G2dLexer.h"
 
-namespace g2d::lsp {
+namespace g2d::parse {
 
 const std::vector<std::string>& keywords() {
     static const std::vector<std::string> words = [] {
@@ -29,4 +29,4 @@ const std::vector<std::string>& keywords() {
     return words;
 }
 
-}  // namespace g2d::lsp
+}  // namespace g2d::parse
