@@ -112,7 +112,35 @@ std::vector<std::pair<std::string, MgScalar>> conditionsOf(const YAML::Node& nod
     return out;
 }
 
-MgOption optionOf(const YAML::Node& node) {
+// What a graph's id names: a vertex, an edge, or nothing.
+enum class ElementKind { None, Vertex, Edge };
+ElementKind kindIn(const MgGraph& g, const std::string& id) {
+    for (const auto& v : g.vertices) if (v.id == id) return ElementKind::Vertex;
+    for (const auto& e : g.edges) if (e.id == id) return ElementKind::Edge;
+    return ElementKind::None;
+}
+
+// `mapping.dict` keeps mother elements as daughter ones: each key a mother
+// vertex or edge, each value a daughter element of the same kind, kept once.
+void checkMappingEntry(const YAML::Node& key, const YAML::Node& value, const MgGraph& mother, const MgGraph& daughter,
+                       const std::vector<std::pair<std::string, std::string>>& earlier) {
+    if (!key.IsScalar()) fail(key, "a key of `mapping.dict` must be a mother element's id");
+    if (!value.IsScalar()) fail(value, "a value of `mapping.dict` must be a daughter element's id");
+    const std::string m = key.Scalar(), d = value.Scalar();
+    const ElementKind mk = kindIn(mother, m), dk = kindIn(daughter, d);
+    if (mk == ElementKind::None) fail(key, "the mapping names " + m + ", which is not a vertex or edge of the mother graph");
+    if (dk == ElementKind::None)
+        fail(value, "the mapping keeps " + m + " as " + d + ", which is not a vertex or edge of the daughter graph");
+    if (mk != dk)
+        fail(value, "the mapping keeps the mother " + std::string(mk == ElementKind::Vertex ? "vertex " : "edge ") + m +
+                        " as the daughter " + (dk == ElementKind::Vertex ? "vertex " : "edge ") + d);
+    for (const auto& [em, ed] : earlier) {
+        if (em == m) fail(key, "the mapping keeps the mother element " + m + " twice");
+        if (ed == d) fail(value, "the mapping keeps both " + em + " and " + m + " as the daughter element " + d);
+    }
+}
+
+MgOption optionOf(const YAML::Node& node, const MgGraph& mother) {
     MgOption o;
     o.line = lineOf(node);
     o.id = node["id"] ? idOf(node["id"], "a mapping") : "";
@@ -128,7 +156,10 @@ MgOption optionOf(const YAML::Node& node) {
         YAML::Node dict = m["dict"];
         if (dict && !dict.IsNull()) {
             if (!dict.IsMap()) fail(dict, "`mapping.dict` must be a mapping of mother ids to daughter ids");
-            for (const auto& kv : dict) o.mapping.emplace_back(kv.first.Scalar(), kv.second.Scalar());
+            for (const auto& kv : dict) {
+                checkMappingEntry(kv.first, kv.second, mother, o.daughter, o.mapping);
+                o.mapping.emplace_back(kv.first.Scalar(), kv.second.Scalar());
+            }
         }
     }
     if (YAML::Node r = node["attr_requirements"]; r && !r.IsNull()) {
@@ -181,7 +212,7 @@ MgProduction productionOf(const std::string& name, const YAML::Node& node) {
     p.mother = graphOf(required(node, "mother_graph", "a production"), "the mother graph");
     YAML::Node mappings = required(node, "mappings", "a production");
     if (!mappings.IsSequence() || mappings.size() == 0) fail(mappings, "a production needs at least one mapping (daughter)");
-    for (const auto& m : mappings) p.options.push_back(optionOf(m));
+    for (const auto& m : mappings) p.options.push_back(optionOf(m, p.mother));
     return p;
 }
 

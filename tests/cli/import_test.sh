@@ -136,6 +136,14 @@ has err.txt 'nohost.yml:1: error: the grammar has no `host_graphs`'
 printf 'host_graphs:\n  H:\n    vertices: [{id: 1}]\n    edges: [{id: 2, vertex1: 1, vertex2: 7}]\nproductions: {}\n' > badend.yml
 expect_code 1 "$g2d" import badend.yml
 has err.txt 'badend.yml:4: error: an edge of a host graph ends at a vertex the graph does not have'
+# A mapping key that is no mother element (one digit of facade3's changed, as a fuzzer did).
+sed '581s/139891385920816/139891385920817/' "$yml/ex_shape_ex1_facade3.yml" > badmap.yml
+expect_code 1 "$g2d" import badmap.yml -o badmap.g2d
+has err.txt 'badmap.yml:581: error: the mapping names 139891385920817, which is not a vertex or edge of the mother graph'
+[ -e badmap.g2d ] && fail "a refused import wrote its output"
+sed '581s/139891385918856/139891385918857/' "$yml/ex_shape_ex1_facade3.yml" > badmap2.yml
+expect_code 1 "$g2d" import badmap2.yml
+has err.txt 'badmap2.yml:581: error: the mapping keeps 139891385920816 as 139891385918857, which is not a vertex or edge of the daughter graph'
 expect_code 1 "$g2d" import missing.yml
 has err.txt 'g2d import: error: cannot read missing.yml'
 finish
