@@ -1,5 +1,7 @@
 #include "infer/example_json.hpp"
 
+#include "infer/json_text.hpp"
+
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -75,11 +77,7 @@ std::vector<double> numberList(DataReader& r, std::size_t at, const std::string&
 }
 
 json parseEmbedded(DataReader& r, std::size_t at, const std::string& text) {
-    try {
-        return json::parse(text);
-    } catch (const json::parse_error& e) {
-        r.fail(at, std::string("the embedded JSON is not valid: ") + e.what());
-    }
+    return parseJsonText(text, r.path() + ": " + r.where(at) + ": the embedded JSON");
 }
 
 double fieldNumber(const json& o, const char* key, double fallback) {
@@ -187,12 +185,12 @@ Shape readShape(DataReader& r, int version, const ExampleShape& labels) {
     const std::vector<double> ends = numberList(r, edgesAt, r.string("a shape's edges"));
     if (ends.size() % 4 != 0) r.fail(edgesAt, "a shape's edges must be 4 integers each");
     for (std::size_t i = 0; i < ends.size(); i += 4) {
+        auto isVertex = [&](double v) { return v >= 0 && v < static_cast<double>(s.vertices.size()) && v == std::floor(v); };
+        if (!isVertex(ends[i]) || !isVertex(ends[i + 1]))
+            r.fail(edgesAt, "edge " + std::to_string(i / 4) + " names a vertex that does not exist");
         ExampleEdge e;
         e.from = static_cast<int>(ends[i]);
         e.to = static_cast<int>(ends[i + 1]);
-        if (ends[i] != e.from || ends[i + 1] != e.to || e.from < 0 || e.to < 0 ||
-            e.from >= static_cast<int>(s.vertices.size()) || e.to >= static_cast<int>(s.vertices.size()))
-            r.fail(edgesAt, "edge " + std::to_string(i / 4) + " names a vertex that does not exist");
         if (e.from == e.to) r.fail(edgesAt, "edge " + std::to_string(i / 4) + " starts and ends at one vertex");
         e.where = r.where(edgesAt) + ", edge " + std::to_string(i / 4);
         s.edges.push_back(e);
@@ -265,12 +263,7 @@ void place(DataReader& r, int version, const std::vector<Shape>& shapes, double 
 }  // namespace
 
 ExampleShape readExampleJson(const std::string& text, const std::string& path) {
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw InputError{path + ": not valid JSON (at byte " + std::to_string(e.byte) + ")"};
-    }
+    const json doc = parseJsonText(text, path);
     ExampleShape out;
     out.source = path;
     double unit = 40;   // the app's Major Grid Spacing: lengths and the canvas are in these cells
@@ -280,12 +273,7 @@ ExampleShape readExampleJson(const std::string& text, const std::string& path) {
         data = &doc["data"];
         out.name = doc.contains("name") && doc["name"].is_string() ? doc["name"].get<std::string>() : "";
         if (doc.contains("settings") && doc["settings"].is_string()) {
-            json settings;
-            try {
-                settings = json::parse(doc["settings"].get<std::string>());
-            } catch (const json::parse_error&) {
-                throw InputError{path + ": \"settings\" is not valid JSON"};
-            }
+            const json settings = parseJsonText(doc["settings"].get<std::string>(), path + ": \"settings\"");
             unit = fieldNumber(settings, "Major Grid Spacing", unit);
             if (!(unit > 0)) throw InputError{path + ": \"settings\": Major Grid Spacing must be positive"};
             const auto ext = settings.find("Extents");

@@ -51,7 +51,23 @@ expect_code 1 "$g2d" infer missing.json
 has err.txt 'g2d infer: error: cannot read missing.json'
 printf '{"data": [1, 1, "0,0", ' > cut.json
 expect_code 1 "$g2d" infer cut.json
-has err.txt 'g2d infer: error: cut.json: not valid JSON'
+has err.txt 'g2d infer: error: cut.json:1:24: not valid JSON: syntax error'
+# Numbers beyond double's range, and values out of range, are located errors.
+printf '[1, 1, "0,0,80,0",\n "", "0,1,-1,-1", 1, 0, 11e3081, 0, false]' > huge.json
+expect_code 1 "$g2d" infer huge.json
+has err.txt 'g2d infer: error: huge.json:2:25: not valid JSON: the number 11e3081 is out of range'
+printf '[1, 1, "0,0,80,0", "", "0,7,-1,-1", 1, 0, 0, 0, false]' > pastend.json
+expect_code 1 "$g2d" infer pastend.json
+has err.txt 'g2d infer: error: pastend.json: data[4]: edge 0 names a vertex that does not exist'
+printf '[1, 1, "0,0,80,0", "", "0,1e300,-1,-1", 1, 0, 0, 0, false]' > hugeindex.json
+expect_code 1 "$g2d" infer hugeindex.json
+has err.txt 'g2d infer: error: hugeindex.json: data[4]: edge 0 names a vertex that does not exist'
+printf '[1, -3, "0,0,80,0", "", "0,1,-1,-1", 1, 0, 0, 0, false]' > negative.json
+expect_code 1 "$g2d" infer negative.json
+has err.txt 'g2d infer: error: negative.json: data[1]: the shape count -3 is out of range'
+printf '{"data": [1, 1, "0,0,80,0", "", "0,1,-1,-1", 1, 0, 0, 0, false], "settings": "{\\"Extents\\": [1e999]}"}' > settings.json
+expect_code 1 "$g2d" infer settings.json
+has err.txt 'g2d infer: error: settings.json: "settings":1:14: not valid JSON: the number 1e999 is out of range'
 expect_code 2 "$g2d" infer --angle-tolerance 90 "$examples/2D Branches/T.json"
 
 # -o: the grammar as g2d source, clean for `g2d check --werror`; interpreted
