@@ -1,7 +1,8 @@
 // The drawing step's planarity test (drawingIsPlanar, angle_drawing.hpp):
 // which edges cross, overlap or pass too close to a vertex. A few tested
 // edges are compared with every edge by one linear scan behind a bounding
-// box; many (a whole drawing) go through a uniform grid built for the call.
+// box; many (a whole drawing) go through the hash grid the runtime's merging
+// uses (spatial_grid.hpp), built for the call.
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -9,6 +10,7 @@
 
 #include "g2d/angle_drawing.hpp"
 #include "g2d/plane_geometry.hpp"
+#include "g2d/spatial_grid.hpp"
 
 namespace g2d::rt {
 
@@ -117,64 +119,23 @@ bool planarByGrid(const Checker& ck, const std::vector<Item>& items, const std::
         all = {std::min(all.lox, boxes[i].lox), std::min(all.loy, boxes[i].loy), std::max(all.hix, boxes[i].hix),
                std::max(all.hiy, boxes[i].hiy)};
     }
-    // About one cell per item; an item over more than kBig cells (a long
-    // diagonal edge) is kept aside and compared with everything instead.
-    constexpr long kBig = 64;
+    // About one cell per item (the grid keeps an item over many cells, a
+    // long diagonal edge, in a list every query reads).
     const double span = std::max(all.hix - all.lox, all.hiy - all.loy);
-    const double side = std::ceil(std::sqrt(static_cast<double>(n)));
-    double cell = span / side;
+    double cell = span / std::ceil(std::sqrt(static_cast<double>(n)));
     if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
-    const long nx = static_cast<long>(std::min((all.hix - all.lox) / cell, side)) + 1;
-    const long ny = static_cast<long>(std::min((all.hiy - all.loy) / cell, side)) + 1;
-    auto cx = [&](double x) {
-        return static_cast<long>(std::clamp(std::floor((x - all.lox) / cell), 0.0, double(nx - 1)));
-    };
-    auto cy = [&](double y) {
-        return static_cast<long>(std::clamp(std::floor((y - all.loy) / cell), 0.0, double(ny - 1)));
-    };
-    auto cellCount = [&](const Box& b) { return (cx(b.hix) - cx(b.lox) + 1) * (cy(b.hiy) - cy(b.loy) + 1); };
+    auto aabb = [](const Box& b) { return Aabb{{b.lox, b.loy, 0}, {b.hix, b.hiy, 0}}; };
+    SpatialBoxGrid grid(cell);
+    for (int i = 0; i < n; ++i) grid.insert(static_cast<std::uint32_t>(i), aabb(boxes[i]));
 
-    // Counting sort of items into cells (compressed rows).
-    std::vector<int> start(static_cast<std::size_t>(nx * ny + 1), 0), big;
-    std::vector<char> isBig(items.size(), 0);
-    for (int i = 0; i < n; ++i) {
-        if (cellCount(boxes[i]) > kBig) {
-            isBig[i] = 1;
-            big.push_back(i);
-            continue;
-        }
-        for (long y = cy(boxes[i].loy); y <= cy(boxes[i].hiy); ++y)
-            for (long x = cx(boxes[i].lox); x <= cx(boxes[i].hix); ++x) ++start[y * nx + x + 1];
-    }
-    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-    std::vector<int> fill(start.begin(), start.end() - 1), slot(static_cast<std::size_t>(start.back()));
-    for (int i = 0; i < n; ++i) {
-        if (isBig[i]) continue;
-        for (long y = cy(boxes[i].loy); y <= cy(boxes[i].hiy); ++y)
-            for (long x = cx(boxes[i].lox); x <= cx(boxes[i].hix); ++x) slot[fill[y * nx + x]++] = i;
-    }
-
-    std::vector<int> seen(items.size(), -1);
+    std::vector<std::uint32_t> near;
     for (int t : tests) {
         const Box q = ck.box(t, ck.separation());
-        auto test = [&](int j) {
-            return pairWanted(t, j, tested) && overlaps(q, boxes[j]) && ck.conflict(items[t], items[j]) && found(t, j);
-        };
-        if (isBig[t]) {
-            for (int j = 0; j < n; ++j)
-                if (test(j)) return false;
-            continue;
+        grid.overlapping(aabb(q), near);
+        for (std::uint32_t id : near) {
+            const int j = static_cast<int>(id);
+            if (pairWanted(t, j, tested) && ck.conflict(items[t], items[j]) && found(t, j)) return false;
         }
-        for (int j : big)
-            if (test(j)) return false;
-        for (long y = cy(q.loy); y <= cy(q.hiy); ++y)
-            for (long x = cx(q.lox); x <= cx(q.hix); ++x)
-                for (int s = start[y * nx + x]; s < start[y * nx + x + 1]; ++s) {
-                    const int j = slot[s];
-                    if (seen[j] == t) continue;
-                    seen[j] = t;
-                    if (test(j)) return false;
-                }
     }
     return true;
 }
