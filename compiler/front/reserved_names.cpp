@@ -21,4 +21,13 @@ const std::set<std::string>& reservedNames() {
     return names;
 }
 
+const std::set<std::string>& attributeNamesRefused() {
+    static const std::set<std::string> names = [] {
+        std::set<std::string> out(parse::keywords().begin(), parse::keywords().end());
+        out.insert(sema::reservedAttributeNames().begin(), sema::reservedAttributeNames().end());
+        return out;
+    }();
+    return names;
+}
+
 }  // namespace g2d::front

@@ -11,5 +11,8 @@ namespace g2d::front {
 
 const std::vector<std::string>& keywords();
 const std::set<std::string>& reservedNames();
+// What an attribute cannot be named (keywords, and the facts the checker
+// refuses as attributes): the importer leaves such keys of the tool out.
+const std::set<std::string>& attributeNamesRefused();
 
 }  // namespace g2d::front

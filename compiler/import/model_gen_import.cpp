@@ -127,10 +127,25 @@ std::string styleReadsAsAttributes(const std::string& source) {
     return out;
 }
 
+// String literals are escaped as they are written; a NUL or carriage return
+// left in the text is in a comment (the tool's text quoted in a TODO), where
+// g2d would read it as the end of the file or of the comment: spelled out.
+std::string visibleControls(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        if (c == '\0') out += "\\0";
+        else if (c == '\r') out += "\\r";
+        else out += c;
+    }
+    return out;
+}
+
 class Importer {
 public:
-    Importer(const MgGrammar& g, std::string fileName, const std::set<std::string>& reserved)
-        : g_(g), file_(std::move(fileName)), reserved_(withKinds(reserved)), ruleNames_(reserved_) {
+    Importer(const MgGrammar& g, std::string fileName, const G2dNames& names)
+        : g_(g), file_(std::move(fileName)), reserved_(withKinds(names.reserved)), notAttributes_(names.notAttributes),
+          ruleNames_(reserved_) {
         nodes_.isNode = true;
         edges_.isNode = false;
     }
@@ -152,7 +167,7 @@ public:
         out_.str("");
         writeHeader(body);
         out_ << body;
-        return {wrapLongLines(out_.str()), std::move(warnings_)};
+        return {visibleControls(wrapLongLines(out_.str())), std::move(warnings_)};
     }
 
 private:
@@ -164,6 +179,7 @@ private:
     std::vector<ImportWarning> warnings_;
     std::ostringstream out_;
     std::set<std::string> reserved_;     // g2d's names and the imported kinds'
+    const std::set<std::string>& notAttributes_;
     NameSet ruleNames_;                  // rules and constants share the global namespace
 
     static std::set<std::string> withKinds(std::set<std::string> names) {
@@ -181,8 +197,25 @@ private:
 
     // ---- what the elements hold -------------------------------------------
 
+    // A key of the tool's that g2d keeps as an attribute: a name g2d can
+    // declare (the tool's keys are any text). The others are left out, with a
+    // warning the first time.
+    bool keptKey(const std::string& key) const {
+        return isUserKey(key) && isIdentifier(key) && !notAttributes_.count(key);
+    }
+    void noteRefusedKey(const MgAttribute& a) {
+        const bool styleKey = a.key.rfind(".svg_", 0) == 0 || a.key.rfind(".svgx_", 0) == 0;
+        if (styleKey && !stylePropertyOf(a.key) && refusedKeys_.insert(a.key).second)
+            warn(a.line, "`" + a.key + "` names no style property g2d can write: it is left out");
+        if (!isUserKey(a.key) || keptKey(a.key) || !refusedKeys_.insert(a.key).second) return;
+        warn(a.line, "the attribute key `" + a.key + "` " +
+                         (isIdentifier(a.key) ? "is a name g2d reserves" : "is not a g2d name") + ": it is left out");
+    }
+    std::set<std::string> refusedKeys_;
+
     void noteLiteral(KindCatalogue& kind, const MgAttribute& a) {
-        if (!isUserKey(a.key)) return;
+        noteRefusedKey(a);
+        if (!keptKey(a.key)) return;
         bool conflict = false;
         auto& attr = kind.add(a.key);
         attr.type = mergeTypes(attr.type, literalType(a.value), conflict);
@@ -197,7 +230,8 @@ private:
             for (bool isNode : {true, false})
                 for (const auto& e : isNode ? p.mother.vertices : p.mother.edges)
                     for (const auto& a : e.attributes) {
-                        if (!isUserKey(a.key)) continue;
+                        noteRefusedKey(a);
+                        if (!keptKey(a.key)) continue;
                         auto& attr = kindOf(isNode).add(a.key);
                         attr.usedInCondition = true;
                         if (falseOnEmptyString(a.value.text)) {
@@ -209,7 +243,8 @@ private:
                 for (bool isNode : {true, false})
                     for (const auto& e : isNode ? o.daughter.vertices : o.daughter.edges)
                         for (const auto& a : e.attributes) {
-                            if (isUserKey(a.key)) kindOf(isNode).add(a.key);
+                            noteRefusedKey(a);
+                            if (keptKey(a.key)) kindOf(isNode).add(a.key);
                             if (auto prop = stylePropertyOf(a.key); prop && *prop == "tag" && tagOf(a.value.text) != "none")
                                 kindOf(isNode).tagVaries = true;
                             for (const char* form : {"attr['.svg_", "attr[\".svg_"}) {
@@ -316,7 +351,7 @@ private:
                 for (bool isNode : {true, false})
                     for (const auto& e : isNode ? o.daughter.vertices : o.daughter.edges)
                         for (const auto& a : e.attributes) {
-                            if (!isUserKey(a.key)) continue;
+                            if (!keptKey(a.key)) continue;
                             PyTranslation t = translatePython(styleReadsAsAttributes(a.value.text),
                                                               contextFor(scope, scope.element(oi, e.id, isNode)));
                             if (!t.ok) continue;
@@ -456,6 +491,7 @@ private:
     // One attribute or style assignment of a host element (plain values).
     std::optional<std::string> hostAssignment(const KindCatalogue& kind, const MgAttribute& a, std::vector<std::string>& extra) {
         if (isUserKey(a.key)) {
+            if (!keptKey(a.key)) return std::nullopt;
             const auto* attr = kind.find(a.key);
             if (attr->presenceFlag) extra.push_back(presenceFlag(a.key) + " = true");
             return a.key + " = " + literalAs(a.value, attr->type);
@@ -549,6 +585,12 @@ private:
                         std::vector<std::string>& todos) {
         for (const auto& a : e.attributes) {
             if (!isUserKey(a.key)) continue;
+            if (!keptKey(a.key)) {
+                // Left out, the condition would let the rule match more than the tool's.
+                warn(a.line, "the condition `" + a.key + ": " + a.value.text + "` cannot be translated (the key is left out)");
+                todos.push_back("TODO: " + scope.motherName(e.id) + " " + a.key + ": " + a.value.text + "   (the key is left out)");
+                continue;
+            }
             const auto* attr = kindOf(isNode).find(a.key);
             PyContext context = contextFor(scope, ElementScope{});
             context.conditionElement = scope.motherName(e.id);
@@ -561,6 +603,12 @@ private:
                                  "); the imported rule matches without it");
                 todos.push_back("TODO: " + context.conditionElement + " " + a.key + ": " + a.value.text + "   (" + t.problem + ")");
                 if (!presence.empty()) conditions.push_back(presence);
+                continue;
+            }
+            if (t.type == PyType::None) {
+                // `None` is never true: the tool's rule never matches.
+                warn(a.line, "the condition `" + a.key + ": " + a.value.text + "` is never true: the rule never applies");
+                conditions.push_back("false");
                 continue;
             }
             if (t.type != PyType::Bool && t.type != PyType::Unknown) {
@@ -645,6 +693,7 @@ private:
                 continue;
             }
             if (isUserKey(a.key)) {
+                if (!keptKey(a.key)) continue;
                 std::string text =
                     translatedOrTodo(styleReadsAsAttributes(a.value.text), context, a.line, "`" + a.key + "`", todos, t);
                 if (text.empty()) continue;
@@ -767,8 +816,8 @@ private:
 
 }  // namespace
 
-ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName, const std::set<std::string>& reserved) {
-    return Importer(grammar, fileName, reserved).run();
+ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName, const G2dNames& names) {
+    return Importer(grammar, fileName, names).run();
 }
 
 }  // namespace g2d::import

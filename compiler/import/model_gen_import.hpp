@@ -19,9 +19,17 @@ struct ImportedGrammar {
     std::vector<ImportWarning> warnings;
 };
 
-// fileName is named in the output's header comment. `reserved`: the names
-// g2d's own (keywords, types, built-ins, facts: front::reservedNames), which
-// the grammar's names avoid; the importer adds its kinds, Vertex and Edge.
-ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName, const std::set<std::string>& reserved);
+// The names g2d keeps for itself, from the tables its parser and checker use.
+struct G2dNames {
+    // Keywords, types, built-ins, facts (front::reservedNames): the grammar's
+    // names avoid them; the importer adds its kinds, Vertex and Edge.
+    const std::set<std::string>& reserved;
+    // What an attribute cannot be named (front::attributeNamesRefused): keys
+    // of the tool's that are such names (or no names) are left out.
+    const std::set<std::string>& notAttributes;
+};
+
+// fileName is named in the output's header comment.
+ImportedGrammar importModelGen(const MgGrammar& grammar, const std::string& fileName, const G2dNames& names);
 
 }  // namespace g2d::import

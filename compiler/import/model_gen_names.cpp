@@ -21,6 +21,13 @@ std::string camelName(std::string_view text) {
     return out;
 }
 
+bool isIdentifier(std::string_view text) {
+    if (text.empty() || (text[0] >= '0' && text[0] <= '9')) return false;
+    for (char c : text)
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
+    return true;
+}
+
 std::string snakeName(std::string_view text) {
     std::string out;
     for (char c : text) {

@@ -8,6 +8,8 @@
 
 namespace g2d::import {
 
+// [A-Za-z_][A-Za-z0-9_]*: a g2d name's syntax.
+bool isIdentifier(std::string_view text);
 // "Add Brush Strokes" → "AddBrushStrokes" (rules).
 std::string camelName(std::string_view text);
 // "H-Floor" → "h_floor" (elements, constants).

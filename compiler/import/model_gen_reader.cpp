@@ -6,7 +6,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "g2d/utf8.hpp"
+
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 
 namespace g2d::import {
@@ -48,8 +53,11 @@ MgScalar scalarOf(const YAML::Node& node) {
     return s;
 }
 
-std::string idOf(const YAML::Node& node, const char* what) {
-    if (!node || node.IsNull()) fail(node, std::string(what) + " has no id");
+// The `id` of `element` (which must be a mapping).
+std::string idOf(const YAML::Node& element, const char* what) {
+    if (!element.IsMap()) fail(element, std::string(what) + " must be a mapping with an id");
+    const YAML::Node node = element["id"];
+    if (!node || node.IsNull()) fail(element, std::string(what) + " has no id");
     if (!node.IsScalar()) fail(node, std::string(what) + "'s id must be a number");
     return node.Scalar();
 }
@@ -82,16 +90,16 @@ MgGraph graphOf(const YAML::Node& node, const char* what) {
     if (!node.IsMap()) fail(node, std::string(what) + " must be a mapping with vertices and edges");
     MgGraph g;
     g.line = lineOf(node);
-    g.id = node["id"] ? idOf(node["id"], what) : "";
+    g.id = node["id"] ? idOf(node, what) : "";
     if (YAML::Node vs = node["vertices"]; vs && !vs.IsNull()) {
         if (!vs.IsSequence()) fail(vs, "`vertices` must be a list");
         for (const auto& v : vs)
-            g.vertices.push_back({idOf(v["id"], "a vertex"), attributesOf(v), {}, {}, lineOf(v)});
+            g.vertices.push_back({idOf(v, "a vertex"), attributesOf(v), {}, {}, lineOf(v)});
     }
     if (YAML::Node es = node["edges"]; es && !es.IsNull()) {
         if (!es.IsSequence()) fail(es, "`edges` must be a list");
         for (const auto& e : es)
-            g.edges.push_back({idOf(e["id"], "an edge"), attributesOf(e), endOf(e, "vertex1"), endOf(e, "vertex2"), lineOf(e)});
+            g.edges.push_back({idOf(e, "an edge"), attributesOf(e), endOf(e, "vertex1"), endOf(e, "vertex2"), lineOf(e)});
     }
     auto known = [&](const std::optional<std::string>& id) {
         if (!id) return true;
@@ -143,7 +151,7 @@ void checkMappingEntry(const YAML::Node& key, const YAML::Node& value, const MgG
 MgOption optionOf(const YAML::Node& node, const MgGraph& mother) {
     MgOption o;
     o.line = lineOf(node);
-    o.id = node["id"] ? idOf(node["id"], "a mapping") : "";
+    o.id = node["id"] ? idOf(node, "a mapping") : "";
     if (YAML::Node w = node["weight"]; w && !w.IsNull()) {
         MgScalar s = scalarOf(w);
         if (s.kind != MgScalar::Kind::Int && s.kind != MgScalar::Kind::Float && !isFloat(s.text))
@@ -216,6 +224,31 @@ MgProduction productionOf(const std::string& name, const YAML::Node& node) {
     return p;
 }
 
+// The tool read its files with PyYAML, which takes UTF-8 text of printable
+// characters only (tab and line ends aside: no NUL, no other C0 or C1
+// control but NEL, no DEL, no U+FFFE/U+FFFF).
+void checkCharacters(const std::string& text) {
+    int line = 1;
+    for (std::size_t i = 0; i < text.size();) {
+        std::uint32_t cp = 0;
+        const std::size_t n = rt::utf8SequenceLength(text, i, &cp);
+        if (n == 0) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(text[i]));
+            throw MgError(line, std::string("invalid UTF-8 (byte ") + hex + "): the tool's grammars are UTF-8 text");
+        }
+        const bool printable = cp == '\t' || cp == '\n' || cp == '\r' || (cp >= 0x20 && cp <= 0x7E) || cp == 0x85 ||
+                               (cp >= 0xA0 && cp != 0xFFFE && cp != 0xFFFF);
+        if (!printable) {
+            char code[12];
+            std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(cp));
+            throw MgError(line, std::string("the control character ") + code + " is not allowed in YAML text");
+        }
+        if (cp == '\n') ++line;
+        i += n;
+    }
+}
+
 // An svgwrite filter call {method: {kwargs}} as SVG text.
 std::string filterElement(const std::string& id, const YAML::Node& methods) {
     std::string out = "<filter id=\"" + id + "\">";
@@ -243,6 +276,7 @@ std::optional<std::string> labelTested(const std::string& condition) {
 }
 
 MgGrammar readModelGenGrammar(const std::string& yamlText) {
+    checkCharacters(yamlText);
     YAML::Node root;
     try {
         root = YAML::Load(yamlText);

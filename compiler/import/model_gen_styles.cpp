@@ -1,5 +1,7 @@
 #include "import/model_gen_styles.hpp"
 
+#include "import/model_gen_names.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <cstdio>
@@ -8,9 +10,11 @@
 namespace g2d::import {
 
 std::optional<std::string> stylePropertyOf(std::string_view key) {
-    if (key.rfind(".svg_", 0) == 0 && key.size() > 5) return std::string(key.substr(5));
-    if (key.rfind(".svgx_", 0) == 0 && key.size() > 6) return std::string(key.substr(6));
-    return std::nullopt;
+    std::string_view prop;
+    if (key.rfind(".svg_", 0) == 0) prop = key.substr(5);
+    else if (key.rfind(".svgx_", 0) == 0) prop = key.substr(6);
+    if (!isIdentifier(prop)) return std::nullopt;
+    return std::string(prop);
 }
 
 bool isPixelLength(std::string_view property) {
@@ -51,15 +55,25 @@ std::string numberText(double value) {
     return text;
 }
 
-std::string quoted(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (c == '\n') { out += "\\n"; continue; }
-        out += c;
+std::string escapeString(std::string_view s, bool braces) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            case '\r': out += "\\r"; break;
+            case '\0': out += "\\0"; break;
+            case '{': out += braces ? "{{" : "{"; break;
+            case '}': out += braces ? "}}" : "}"; break;
+            default: out += c;
+        }
     }
-    return out + "\"";
+    return out;
 }
+
+std::string quoted(std::string_view text) { return "\"" + escapeString(text, false) + "\""; }
 
 std::string tagOf(std::string_view toolTag) {
     std::string t(toolTag);

@@ -25,6 +25,10 @@ std::optional<double> lengthInUnits(std::string_view text);
 // A number as g2d source: shortest text that reads back the same.
 std::string numberText(double value);
 
+// The body of a g2d string literal (language.md §2): `"` and `\` escaped,
+// line ends, tabs and NUL spelled out; with `braces`, a format template's
+// `{` and `}` doubled.
+std::string escapeString(std::string_view text, bool braces);
 // A string as a g2d literal.
 std::string quoted(std::string_view text);
 

@@ -7,6 +7,8 @@
 #include <set>
 #include <utility>
 
+#include "import/model_gen_names.hpp"
+#include "import/model_gen_styles.hpp"
 #include "import/python_parse.hpp"
 
 namespace g2d::import {
@@ -55,31 +57,7 @@ Out call(std::string_view fn, const std::vector<Out>& args, PyType type) {
     return {text + ")", type, kPrimary};
 }
 
-// The body of a g2d string literal (§2): `"` and `\` escaped, line ends, tabs and NUL spelled out.
-std::string escape(std::string_view s, bool braces) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            case '\r': out += "\\r"; break;
-            case '\0': out += "\\0"; break;
-            case '{': out += braces ? "{{" : "{"; break;
-            case '}': out += braces ? "}}" : "}"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
-bool isIdentifier(std::string_view s) {
-    if (s.empty() || (s[0] >= '0' && s[0] <= '9')) return false;
-    for (char c : s)
-        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
-    return true;
-}
 
 // The level of a caller's text: a name, `a.b`, a call or a bracketed whole is
 // tight; anything else is wrapped wherever it is an operand.
@@ -199,7 +177,7 @@ private:
         switch (n.kind) {
             case K::Int: return {n.text, T::Int, kPrimary};
             case K::Float: return {n.text, T::Float, kPrimary};
-            case K::Str: return {"\"" + escape(n.text, false) + "\"", T::String, kPrimary};
+            case K::Str: return {"\"" + escapeString(n.text, false) + "\"", T::String, kPrimary};
             case K::Bool: return {n.text == "True" ? "true" : "false", T::Bool, kPrimary};
             case K::None: return {"none", T::None, kPrimary};
             case K::FStr: return fstring(n);
@@ -483,8 +461,8 @@ private:
         std::vector<Out> args(1);
         for (const py::FPart& p : n.parts) {
             if (p.expr < 0) {
-                templ += escape(p.literal, true);
-                plain += escape(p.literal, false);
+                templ += escapeString(p.literal, true);
+                plain += escapeString(p.literal, false);
                 continue;
             }
             const Node& e = *n.kids[static_cast<std::size_t>(p.expr)];
@@ -735,9 +713,14 @@ std::string oneLine(const std::string& problem) {
 namespace {
 
 // One Python name, and nothing else (the whole value of an older file's `label: a_r`).
-bool oneName(std::string_view s) {
+std::string_view trimmed(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+bool oneName(std::string_view s) {
+    s = trimmed(s);
     if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
     for (char c : s)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
@@ -755,11 +738,12 @@ PyTranslation translateExpression(std::string_view source, const PyContext& cont
 PyTranslation translatePython(std::string_view source, const PyContext& context) {
     PyTranslation result = translateExpression(source, context);
     if (result.ok || !oneName(source) || result.problem.rfind("unknown name", 0) != 0) return result;
-    std::string word(source);
-    word.erase(0, word.find_first_not_of(" \t"));
-    word.erase(word.find_last_not_of(" \t") + 1);
-    const std::string quoted = "'" + word + "'";
-    return translateExpression(context.conditionElement.empty() ? quoted : "attr == " + quoted, context);
+    // A bare word is the tool's older string value (`label: a_r`): compared as a string.
+    const std::string_view word = trimmed(source);
+    const std::string quoted = "'" + std::string(word) + "'";
+    PyTranslation asString = translateExpression(context.conditionElement.empty() ? quoted : "attr == " + quoted, context);
+    if (!asString.ok) asString.column = static_cast<int>(word.data() - source.data());   // a column of the source, not of the rewrite
+    return asString;
 }
 
 namespace {

@@ -15,12 +15,6 @@ bool isArgName(const std::string& name) {
     return true;
 }
 
-bool isIdentifier(const std::string& name) {
-    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
-    for (char c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
-    return true;
-}
 
 std::string literalLabel(const MgElement& e) {
     const MgAttribute* label = e.attribute("label");

@@ -115,6 +115,7 @@ public:
         children(root, transformOf(root, Matrix{}), style);
 
         ExampleShape out;
+        out.source = path_;
         for (const xmlNode* c = root->children; c && out.name.empty(); c = c->next)
             if (isSvgElement(c) && tagOf(c) == "title") out.name = textOf(c);
         if (out.name.empty()) out.name = std::filesystem::path(path_).stem().string();

@@ -182,10 +182,12 @@ LabelledExample labelExample(const ExampleShape& shape, const LabelOptions& opti
             const int leftOfH = barred(h) ? lh.right : lh.left, rightOfG = barred(g) ? lg.left : lg.right;
             if (leftOfH != rightOfG) {
                 const auto name = [&](int a) { return a < 0 ? std::string("no area") : shape.areas[static_cast<std::size_t>(a)].name; };
+                const std::string between = h == g ? "on the two sides of its only edge (at " +
+                                                         std::to_string(std::lround(out.direction(h))) + "°)"
+                                                   : "between its edges at " + std::to_string(std::lround(out.direction(h))) +
+                                                         "° and " + std::to_string(std::lround(out.direction(g))) + "°";
                 throw InputError{shape.source + ": the areas around the vertex at " + at(shape, static_cast<int>(v)) +
-                                 " disagree: between its edges at " + std::to_string(std::lround(out.direction(h))) + "° and " +
-                                 std::to_string(std::lround(out.direction(g))) + "° one says " + name(leftOfH) + ", the other " +
-                                 name(rightOfG)};
+                                 " disagree: " + between + " one says " + name(leftOfH) + ", the other " + name(rightOfG)};
             }
         }
         auto [it, added] = primitiveOf.emplace(halves, static_cast<int>(out.primitives.size()));

@@ -76,7 +76,7 @@ void cosSin(double degrees, double& c, double& s) {
             c = right[k][0], s = right[k][1];
             return;
         }
-    const double rad = degrees * std::numbers::pi / 180;
+    const double rad = r * std::numbers::pi / 180;   // reduced: a huge angle is still an angle
     c = std::cos(rad), s = std::sin(rad);
 }
 
@@ -86,7 +86,7 @@ double tangent(const std::string& name, double degrees) {
     if (r == 45) return 1;
     if (r == 135) return -1;
     if (r == 90) throw SyntaxError{name + "(" + std::to_string(static_cast<int>(degrees)) + ") has no finite matrix"};
-    return std::tan(degrees * std::numbers::pi / 180);
+    return std::tan(r * std::numbers::pi / 180);
 }
 
 Matrix transformFunction(const std::string& name, const std::vector<double>& v) {
@@ -246,6 +246,8 @@ Matrix parseTransform(std::string_view text) {
         if (i >= text.size()) throw SyntaxError{"missing \")\" after " + name};
         ++i;
         m = m * transformFunction(name, args);
+        for (double entry : {m.a, m.b, m.c, m.d, m.e, m.f})
+            if (!std::isfinite(entry)) throw SyntaxError{"the transform overflows at " + name};
         skipCommaWsp(text, i);
     }
     return m;
@@ -305,6 +307,8 @@ std::vector<Subpath> parsePathData(std::string_view s) {
             const double y = needNumber(s, i);
             next.y = relative ? pos.y + y : y;
         }
+        if (!std::isfinite(next.x) || !std::isfinite(next.y))
+            throw SyntaxError{"the relative coordinates add up past any number before " + excerpt(s, i)};
         if (op == 'm') {
             flush();
             start = next;

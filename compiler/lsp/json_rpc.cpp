@@ -1,5 +1,6 @@
 #include "lsp/json_rpc.hpp"
 
+#include <algorithm>
 #include <istream>
 #include <ostream>
 
@@ -25,10 +26,15 @@ std::optional<nlohmann::json> readMessage(std::istream& in) {
             }
         }
     }
-    if (!haveLength || !in) return std::nullopt;
-    std::string body(length, '\0');
-    in.read(body.data(), static_cast<std::streamsize>(length));
-    if (static_cast<std::size_t>(in.gcount()) != length) return std::nullopt;
+    if (!haveLength || !in || length > kMaxMessageBytes) return std::nullopt;
+    // Read as the bytes come: a header may claim more than the stream holds.
+    std::string body;
+    char chunk[65536];
+    while (body.size() < length) {
+        in.read(chunk, static_cast<std::streamsize>(std::min(sizeof chunk, length - body.size())));
+        if (in.gcount() <= 0) return std::nullopt;
+        body.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
     return nlohmann::json::parse(body, nullptr, /*allow_exceptions=*/false);
 }
 

@@ -9,8 +9,11 @@
 
 namespace g2d::lsp {
 
-// The next message, or nothing at the end of the input. A body that is not
-// JSON yields a null json value (the server answers with a parse error).
+// The next message, or nothing at the end of the input (or a header that
+// claims more than kMaxMessageBytes, or more than the input holds). A body
+// that is not JSON yields a discarded json value (the server answers with a
+// parse error).
+inline constexpr std::size_t kMaxMessageBytes = std::size_t{1} << 28;
 std::optional<nlohmann::json> readMessage(std::istream& in);
 void writeMessage(std::ostream& out, const nlohmann::json& message);
 

@@ -48,6 +48,24 @@ std::uint32_t codePointColumn(const std::string& line, std::uint32_t character) 
     return col;
 }
 
+std::size_t byteOffset(const std::string& text, std::uint32_t line, std::uint32_t character) {
+    std::size_t start = 0;
+    for (std::uint32_t l = 0; l < line; ++l) {
+        const std::size_t newline = text.find('\n', start);
+        if (newline == std::string::npos) return text.size();
+        start = newline + 1;
+    }
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start && text[end - 1] == '\r') --end;
+    std::uint32_t units = 0;
+    for (const CodePoint& p : codePoints(text.substr(start, end - start))) {
+        if (units + p.units > character) return start + p.byte;
+        units += p.units;
+    }
+    return end;
+}
+
 std::string identifierAt(const std::string& line, std::uint32_t col, std::uint32_t* start) {
     // Identifiers are ASCII, so code-point columns of an ASCII prefix are bytes.
     const auto points = codePoints(line);

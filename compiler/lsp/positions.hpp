@@ -10,6 +10,10 @@ namespace g2d::lsp {
 std::uint32_t utf16Offset(const std::string& line, std::uint32_t col);
 // Code-point column (1-based) of UTF-16 offset `character` in `line`.
 std::uint32_t codePointColumn(const std::string& line, std::uint32_t character);
+// The byte offset in `text` of LSP position (line, UTF-16 character), both
+// from 0: past a line's end is its end (before the line break), past the
+// last line is the text's end, and inside a character is its start.
+std::size_t byteOffset(const std::string& text, std::uint32_t line, std::uint32_t character);
 // The identifier ([A-Za-z_][A-Za-z0-9_]*) covering code-point column `col`
 // (or ending just before it), with its first column; empty if none.
 std::string identifierAt(const std::string& line, std::uint32_t col, std::uint32_t* start = nullptr);

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "front/compile.hpp"
 #include "lsp/json_rpc.hpp"
@@ -22,7 +23,19 @@ namespace {
 
 using json = nlohmann::json;
 
-constexpr int kMethodNotFound = -32601, kParseError = -32700, kInvalidParams = -32602;
+constexpr int kMethodNotFound = -32601, kParseError = -32700, kInvalidParams = -32602, kInvalidRequest = -32600;
+
+// Parameters of the right JSON type but outside what LSP allows.
+struct BadParams : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// An LSP `uinteger` (0 to 2^31 - 1).
+std::uint32_t uinteger(const json& value, const char* what) {
+    if (!value.is_number_integer() || value.get<std::int64_t>() < 0 || value.get<std::int64_t>() > 0x7fffffff)
+        throw BadParams(std::string(what) + " must be an integer from 0 to 2^31 - 1");
+    return value.get<std::uint32_t>();
+}
 
 struct Document {
     std::string uri, path, text;
@@ -85,10 +98,17 @@ public:
             reply(nullptr, json(), json{{"code", kParseError}, {"message", "not a JSON-RPC message"}});
             return true;
         }
-        const std::string method = message.value("method", "");
         const json id = message.contains("id") ? message["id"] : json();
-        const json params = message.contains("params") ? message["params"] : json::object();
         const bool isRequest = message.contains("id");
+        const auto methodField = message.find("method");
+        if (methodField == message.end() || !methodField->is_string()) {
+            // A response (the server asks nothing) is ignored; anything else is no request.
+            if (isRequest && !message.contains("result") && !message.contains("error"))
+                reply(id, json(), json{{"code", kInvalidRequest}, {"message", "a request needs a method name (a string)"}});
+            return true;
+        }
+        const std::string method = methodField->get<std::string>();
+        const json params = message.contains("params") ? message["params"] : json::object();
         try {
             if (method == "initialize") return reply(id, initializeResult()), true;
             if (method == "shutdown") return shutdown_ = true, reply(id, nullptr), true;
@@ -97,9 +117,7 @@ public:
                 const auto& d = params.at("textDocument");
                 open(d.at("uri").get<std::string>(), d.at("text").get<std::string>());
             } else if (method == "textDocument/didChange") {
-                const auto& changes = params.at("contentChanges");
-                if (!changes.empty())
-                    open(params.at("textDocument").at("uri").get<std::string>(), changes.back().at("text").get<std::string>());
+                change(params.at("textDocument").at("uri").get<std::string>(), params.at("contentChanges"));
             } else if (method == "textDocument/didClose") {
                 const std::string uri = params.at("textDocument").at("uri").get<std::string>();
                 docs_.erase(uri);
@@ -116,6 +134,8 @@ public:
                 reply(id, json(), json{{"code", kMethodNotFound}, {"message", "g2d lsp does not handle " + method}});
             }
         } catch (const json::exception& e) {
+            if (isRequest) reply(id, json(), json{{"code", kInvalidParams}, {"message", e.what()}});
+        } catch (const BadParams& e) {
             if (isRequest) reply(id, json(), json{{"code", kInvalidParams}, {"message", e.what()}});
         }
         return true;
@@ -143,6 +163,30 @@ private:
 
     void notify(const std::string& method, const json& params) {
         writeMessage(out_, json{{"jsonrpc", "2.0"}, {"method", method}, {"params", params}});
+    }
+
+    // Full text, or (sent by clients that ignore the full sync the server
+    // asks for) edits of ranges, applied in order.
+    void change(const std::string& uri, const json& changes) {
+        if (!changes.is_array()) throw BadParams("contentChanges must be a list");
+        if (changes.empty()) return;
+        const auto it = docs_.find(uri);
+        std::string text = it == docs_.end() ? std::string() : it->second.text;
+        for (const json& c : changes) {
+            const std::string replacement = c.at("text").get<std::string>();
+            if (!c.contains("range")) {
+                text = replacement;
+                continue;
+            }
+            const json& range = c.at("range");
+            auto offset = [&](const json& at) {
+                return byteOffset(text, uinteger(at.at("line"), "a range's line"), uinteger(at.at("character"), "a range's character"));
+            };
+            const std::size_t from = offset(range.at("start")), to = offset(range.at("end"));
+            if (to < from) throw BadParams("a range must not end before it starts");
+            text.replace(from, to - from, replacement);
+        }
+        open(uri, text);
     }
 
     void open(const std::string& uri, const std::string& text) {
@@ -216,10 +260,12 @@ private:
         const auto it = docs_.find(params.at("textDocument").at("uri").get<std::string>());
         if (it == docs_.end()) return p;
         p.doc = &it->second;
-        p.line = params.at("position").at("line").get<std::uint32_t>() + 1;
+        const json& position = params.at("position");
+        p.line = uinteger(position.at("line"), "a position's line") + 1;
+        const std::uint32_t character = uinteger(position.at("character"), "a position's character");
         if (p.line > p.doc->lines.size()) return p;
         const std::string& text = p.doc->lines[p.line - 1];
-        p.col = codePointColumn(text, params.at("position").at("character").get<std::uint32_t>());
+        p.col = codePointColumn(text, character);
         p.word = identifierAt(text, p.col, &p.wordStart);
         const std::uint32_t dotCol = p.word.empty() ? p.col : p.wordStart;   // a `.` just before the word (or the cursor)
         if (dotCol >= 2 && dotCol - 2 < text.size() && text[dotCol - 2] == '.') p.receiver = identifierAt(text, dotCol - 2);

@@ -1,26 +1,11 @@
 #include "parse/input_guard.hpp"
 
 #include "G2dLexer.h"
+#include "g2d/utf8.hpp"
 
 namespace g2d {
 
 namespace {
-
-// Length of the valid UTF-8 sequence at `i`, or 0 if it is not valid.
-std::size_t utf8SequenceLength(const std::string& s, std::size_t i) {
-    auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-    unsigned char c = byte(i);
-    if (c < 0x80) return 1;
-    std::size_t n = (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-    if (n == 0 || i + n > s.size()) return 0;
-    for (std::size_t k = 1; k < n; ++k)
-        if ((byte(i + k) & 0xC0) != 0x80) return 0;
-    std::uint32_t cp = n == 2 ? (c & 0x1F) : n == 3 ? (c & 0x0F) : (c & 0x07);
-    for (std::size_t k = 1; k < n; ++k) cp = (cp << 6) | (byte(i + k) & 0x3F);
-    const bool overlong = (n == 2 && cp < 0x80) || (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000);
-    if (overlong || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
-    return n;
-}
 
 Span tokenSpan(const antlr4::Token* t, FileId file) {
     auto line = static_cast<std::uint32_t>(t->getLine());
@@ -39,7 +24,7 @@ bool checkEncoding(const SourceFile& src, FileId file, Diagnostics& diags) {
                         "file contains a NUL byte: this looks like a binary file, not g2d source");
             return false;
         }
-        std::size_t n = utf8SequenceLength(src.text, i);
+        std::size_t n = rt::utf8SequenceLength(src.text, i);
         if (n == 0) {
             char hex[8];
             std::snprintf(hex, sizeof hex, "0x%02X", c);

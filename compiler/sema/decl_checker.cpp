@@ -25,8 +25,6 @@ int deepestCall(const ir::Expr& e, const std::vector<int>& functionDepth) {
     return deepest;
 }
 
-const std::set<std::string> kReservedAttributes = {"pos", "age", "id", "degree", "in_degree", "out_degree",
-                                                   "style", "kind"};
 const std::set<std::string> kKnownTags = {"circle", "line", "rect", "path", "image", "text", "polyline", "polygon", "none"};
 
 ir::Expr zeroValue(const Type& t, Span span) {
@@ -57,6 +55,11 @@ ExprEnv constantEnv(const std::string& context) {
 }
 
 }  // namespace
+
+const std::set<std::string>& reservedAttributeNames() {
+    static const std::set<std::string> names = {"pos", "age", "id", "degree", "in_degree", "out_degree", "style", "kind"};
+    return names;
+}
 
 const std::set<std::string>& valueTypeNames() {
     static const std::set<std::string> names = {"int", "float", "bool", "string", "vec2", "vec3"};
@@ -281,7 +284,7 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     std::map<std::string, Span> seen;
     for (const auto& a : d.attrs) {
         auto type = resolveType(g, a.type);
-        if (kReservedAttributes.count(a.name.name)) {
+        if (reservedAttributeNames().count(a.name.name)) {
             g.diags.error(a.name.span, "`" + a.name.name + "` is a built-in fact of every element and cannot be "
                                                            "declared as an attribute");
             continue;

@@ -10,6 +10,8 @@ namespace g2d::sema {
 
 // The built-in value types by name ("int", …, "vec3").
 const std::set<std::string>& valueTypeNames();
+// Facts an attribute must not be named after (declaring one is an error).
+const std::set<std::string>& reservedAttributeNames();
 // Resolves a type name (a built-in value type or an enum).
 std::optional<ir::Type> resolveType(Globals& g, const ast::TypeRef& t);
 

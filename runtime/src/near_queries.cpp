@@ -32,7 +32,7 @@ void NearQueries::start(const Graph& g, const std::vector<std::vector<int>>& nea
             if (!pointsOf(kind)) points_.emplace_back().kind = kind;
         }
     for (int kind : joinKinds) {
-        if (kind < 0) any_.emplace().kind = -1;
+        if (kind < 0) any_.emplace(Points{}).kind = -1;   // emplace(): clang finds Points not default-constructible
         else if (!pointsOf(kind)) points_.emplace_back().kind = kind;
     }
     if (points_.empty() && !any_) return;

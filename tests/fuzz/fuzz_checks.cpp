@@ -15,12 +15,12 @@
 
 namespace g2d::fuzz {
 
-namespace {
-
-[[noreturn]] void violated(const std::string& what) {
+void violated(const std::string& what) {
     std::fprintf(stderr, "fuzz check failed: %s\n", what.c_str());
     std::abort();
 }
+
+namespace {
 
 // Inputs live nowhere on disk: imports resolve in a folder that does not
 // exist (absolute imports still reach real files, which is fine: the loader
@@ -30,6 +30,8 @@ CompileResult compileBytes(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     return compileSource("/nonexistent-g2d-fuzz/input.g2d", text, options);
 }
+
+}  // namespace
 
 void checkDiagnostics(const CompileResult& r) {
     bool anyError = false;
@@ -50,8 +52,6 @@ void checkDiagnostics(const CompileResult& r) {
     if (anyError && r.program) violated("a program despite errors");
     if (!anyError && !r.program) violated("no program and no error");
 }
-
-}  // namespace
 
 void checkFrontEnd(const std::uint8_t* data, std::size_t size) {
     runWithBigStack([&] { checkFrontEndHere(data, size); return 0; });

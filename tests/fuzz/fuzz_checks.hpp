@@ -13,9 +13,17 @@
 #include <optional>
 #include <string>
 
+#include "front/compile.hpp"
 #include "g2d/grammar_run.hpp"
 
 namespace g2d::fuzz {
+
+// Reports a fault of g2d's and aborts (libFuzzer keeps the input).
+[[noreturn]] void violated(const std::string& what);
+
+// A compilation's diagnostics are located, in range and consistent with
+// whether it made a program.
+void checkDiagnostics(const CompileResult& r);
 
 // The front end (load, parse, analyse) on arbitrary bytes.
 void checkFrontEnd(const std::uint8_t* data, std::size_t size);

@@ -184,6 +184,35 @@ labels = {i["label"] for i in items}
 check(labels == {"level", "age", "generation", "id", "corners", "area", "signed_area", "perimeter", "centroid", "neighbours", "touching", "lo", "hi"},
       "completion after f.: %s" % labels)
 
+# Edits of ranges (LSP positions: UTF-16 units; past a line's end is its end), applied in order.
+c.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": 3}, "contentChanges": [
+    {"range": {"start": {"line": 5, "character": col}, "end": {"line": 5, "character": col + 6}}, "text": "levles"}]})
+d = c.diagnostics()
+check(len(d["diagnostics"]) == 1 and d["diagnostics"][0]["range"]["start"] == {"line": 5, "character": col},
+      "a ranged edit that breaks the grammar: %s" % d["diagnostics"])
+c.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": 4}, "contentChanges": [
+    {"range": {"start": {"line": 5, "character": col + 3}, "end": {"line": 5, "character": col + 5}}, "text": "el"},
+    {"range": {"start": {"line": 99, "character": 0}, "end": {"line": 99, "character": 7}}, "text": "// end\n"}]})
+d = c.diagnostics()
+check(d["diagnostics"] == [], "ranged edits that fix it, one past the last line: %s" % d["diagnostics"])
+syms = c.request("textDocument/documentSymbol", {"textDocument": doc})["result"]
+check([s["name"] for s in syms] == ["Point", "Seg", "levels", "Split"], "symbols after ranged edits: %s" % syms)
+
+# Malformed requests are answered with errors, never the end of the server.
+bad = c.request("textDocument/hover", {"textDocument": doc, "position": {"line": -1, "character": 0}})
+check(bad.get("error", {}).get("code") == -32602 and "line" in bad["error"]["message"], "a negative line: %s" % bad)
+bad = c.request("textDocument/hover", {"textDocument": doc, "position": {"line": 4294967295, "character": 0}})
+check(bad.get("error", {}).get("code") == -32602, "a line past 2^31: %s" % bad)
+h = c.request("textDocument/hover", {"textDocument": doc, "position": {"line": 4000, "character": 9}})
+check(h.get("result", "missing") is None, "a line past the end: %s" % h)
+c.next_id += 1
+c.send({"jsonrpc": "2.0", "id": c.next_id, "method": 42})
+bad = c.read()
+check(bad.get("id") == c.next_id and bad.get("error", {}).get("code") == -32600, "a method that is no string: %s" % bad)
+bad = c.request("textDocument/didChange", {"textDocument": {"uri": uri}, "contentChanges": [
+    {"range": {"start": {"line": 5, "character": 4}, "end": {"line": 2, "character": 0}}, "text": ""}]})
+check(bad.get("error", {}).get("code") == -32602, "a range that ends before it starts: %s" % bad)
+
 unknown = c.request("textDocument/formatting", {"textDocument": doc, "options": {}})
 check(unknown.get("error", {}).get("code") == -32601, "unknown request: %s" % unknown)
 

@@ -14,6 +14,7 @@
 
 #include "infer/grammar_writer.hpp"
 #include "infer_examples.hpp"
+#include "inferred_output.hpp"
 #include "interp/run_program.hpp"
 #include "test_helpers.hpp"
 
@@ -28,8 +29,7 @@ struct Output {
     bool similar = true;
 };
 
-// The output of `ex`'s grammar (seed 1, the written defaults) and its local similarity:
-// each node's half-edges (label, and whether it leaves) are its primitive's.
+// The output of `ex`'s grammar (seed 1, the written defaults) and its local similarity.
 Output generate(const infer::LabelledExample& ex, const infer::InferredGrammar& grammar, bool connected) {
     infer::WriterOptions writer;
     writer.connected = connected;
@@ -38,30 +38,8 @@ Output generate(const infer::LabelledExample& ex, const infer::InferredGrammar& 
     REQUIRE(compiled.program);
     const ir::Program& prog = *compiled.program;
     const interp::RunResult run = interp::runProgram(prog, interp::defaultParams(prog), 1, rt::RunSettings{});
-    const rt::Graph& g = run.graph();
-    Output out;
-    std::map<rt::NodeId, rt::NodeId> parent;
-    auto find = [&](rt::NodeId n) {
-        while (parent[n] != n) n = parent[n] = parent[parent[n]];
-        return n;
-    };
-    for (rt::NodeId n : g.allNodes()) parent[n] = n;
-    for (rt::NodeId n : g.allNodes()) {
-        ++out.vertices;
-        std::vector<int> halves;
-        for (rt::EdgeId e : g.incident(n)) {
-            const int label = std::stoi(prog.kinds[static_cast<std::size_t>(g.edgeKind(e))].name.substr(1));
-            halves.push_back(infer::halfLabel(label, g.target(e) == n));
-            parent[find(g.source(e))] = find(g.target(e));
-        }
-        const int primitive = std::stoi(prog.kinds[static_cast<std::size_t>(g.nodeKind(n))].name.substr(1));
-        std::vector<int> want = ex.primitives[static_cast<std::size_t>(primitive)].halves;
-        std::sort(halves.begin(), halves.end());
-        std::sort(want.begin(), want.end());
-        out.similar = out.similar && halves == want;
-    }
-    for (const auto& [n, p] : parent) out.pieces += n == p ? 1 : 0;
-    return out;
+    const fuzz::InferredOutput measured = fuzz::measureInferredOutput(ex, prog, run.graph());
+    return {measured.vertices, measured.pieces, measured.dissimilar < 0};
 }
 
 }  // namespace

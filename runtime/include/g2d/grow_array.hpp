@@ -12,6 +12,7 @@
 // are never constructed by default, only by the operations that add them.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <new>
 #include <type_traits>
@@ -94,7 +95,7 @@ public:
     const T& back() const { return data_[size_ - 1]; }
 
     void push_back(const T& value) {
-        prefetchLineForWrite(data_ + size_ + kWriteAhead);
+        prefetchAhead();
         if (size_ == capacity_) {
             const T copy = value;   // `value` may live in this array
             reserve(size_ + 1);
@@ -106,7 +107,7 @@ public:
     }
     template <class... Args>
     T& emplace_back(Args&&... args) {
-        prefetchLineForWrite(data_ + size_ + kWriteAhead);
+        prefetchAhead();
         if (size_ == capacity_) {
             const T made{std::forward<Args>(args)...};   // the arguments may live in this array
             reserve(size_ + 1);
@@ -127,7 +128,7 @@ public:
     // Appends `n` elements left unset, for the caller to write at once
     // (no fill that would only be overwritten); returns the first.
     T* extendUnset(std::size_t n) {
-        prefetchLineForWrite(data_ + size_ + kWriteAhead);
+        prefetchAhead();
         reserve(size_ + n);
         T* first = data_ + size_;
         size_ += n;
@@ -164,6 +165,12 @@ public:
     static constexpr std::size_t max_size() { return (std::size_t{1} << 46) / sizeof(T); }
 
 private:
+    // The line kWriteAhead elements on, its address computed as an integer:
+    // it may lie past the array, which may not exist yet (a prefetch of any
+    // address is harmless; pointer arithmetic past the end is not).
+    void prefetchAhead() const {
+        prefetchLineForWrite(reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(data_) + (size_ + kWriteAhead) * sizeof(T)));
+    }
     static constexpr std::size_t kWriteAhead = std::max<std::size_t>(1, 512 / sizeof(T));
     static constexpr std::size_t kFirstCapacity = std::max<std::size_t>(4, 256 / sizeof(T));
     T* data_ = nullptr;

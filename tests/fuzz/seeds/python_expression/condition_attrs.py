@@ -1,0 +1,1 @@
+0attr in ['a', 'b'] and attrs['length'] > 2

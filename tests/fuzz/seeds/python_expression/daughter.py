@@ -1,0 +1,1 @@
+2self_ + e.attr['dir'] * float(n.attr['length']) / (1 + random.random())

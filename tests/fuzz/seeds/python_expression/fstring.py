@@ -1,0 +1,1 @@
+2f'{s}_{k:03d}' + str(round(norm(v), 2))

@@ -1,0 +1,1 @@
+1Vec(x1=a, y1=-b) * 2 + v if k % 2 == 0 else rotate(v, pi / 3)
