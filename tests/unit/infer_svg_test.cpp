@@ -2,11 +2,14 @@
 // (merging, T-junctions, crossings, duplicates), area sides and the errors.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "infer/example_svg.hpp"
+#include "infer/svg_syntax.hpp"
 
 using namespace g2d::infer;
 
@@ -272,6 +275,14 @@ TEST_CASE("svg: the house example", "[infer][svg]") {
     CHECK(s.edges[8].where == "line 9");
 }
 
+TEST_CASE("svg: a turn by any angle is a turn (an angle past 10^306 degrees is reduced first)", "[infer][svg]") {
+    const svg::Matrix m = svg::parseTransform("rotate(1e308)");
+    const double turned = std::fmod(1e308, 360.0) * M_PI / 180;
+    CHECK(m.a == std::cos(turned));
+    CHECK(m.b == std::sin(turned));
+    CHECK(svg::parseTransform("rotate(-450)").b == -1);
+}
+
 TEST_CASE("svg: errors say where", "[infer][svg]") {
     CHECK(errorOf("<svg>\n<g>\n</svg>") == "t.svg:3: not well-formed XML: Opening and ending tag mismatch: g line 2 and svg");
     CHECK(errorOf("") == "t.svg:1: not well-formed XML: Document is empty");
@@ -319,6 +330,10 @@ TEST_CASE("svg: errors say where", "[infer][svg]") {
     CHECK(bodyError("<g transform=\"rotate(1 2)\"/>") == "t.svg:2: <g>: transform \"rotate(1 2)\": rotate takes 1 or 3 numbers, not 2");
     CHECK(bodyError("<g transform=\"scale(2\"/>") == "t.svg:2: <g>: transform \"scale(2\": missing \")\" after scale");
     CHECK(bodyError("<g transform=\"skewX(90)\"/>") == "t.svg:2: <g>: transform \"skewX(90)\": skewX(90) has no finite matrix");
+    CHECK(bodyError("<g transform=\"scale(1e200) scale(1e200)\"/>") ==
+          "t.svg:2: <g>: transform \"scale(1e200) scale(1e200)\": the transform overflows at scale");
+    CHECK(bodyError("<path d=\"m 1e308 0 l 1e308 0\"/>") ==
+          "t.svg:2: <path>: d: the relative coordinates add up past any number before the end");
 
     CHECK(bodyError("<line stroke=\"bogus\"/>") == "t.svg:2: <line>: stroke \"bogus\" is not a colour");
     CHECK(bodyError("<line style=\"fill: #12\"/>") == "t.svg:2: <line>: fill \"#12\" is not a colour");
