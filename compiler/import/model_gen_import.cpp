@@ -5,6 +5,7 @@
 
 #include "import/model_gen_import.hpp"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <cmath>
@@ -770,6 +771,12 @@ private:
             // where g2d's empty match would match at every step.
             out_ << "// Its mother graph is empty, so the tool never applied it: left out.\n";
             warn(p.line, "production `" + p.name + "` has an empty mother graph, which the tool never matches: left out");
+            return;
+        }
+        if (std::all_of(p.options.begin(), p.options.end(), [](const MgOption& o) { return o.weight == 0; })) {
+            // The tool's random.choices refuses weights that sum to 0: applying it failed.
+            out_ << "// Every daughter has weight 0, which the tool could not choose from: left out.\n";
+            warn(p.line, "production `" + p.name + "` has only daughters of weight 0, which the tool cannot choose from: left out");
             return;
         }
         out_ << "rule " << scope.ruleName();

@@ -140,7 +140,9 @@ void build(const AngleGraph& g, const std::vector<char>& isFree, System& s) {
         cod.setThreshold(kRankTolerance);
         cod.compute(a);
         s.xhat = cod.solve(b);
-        s.kernel = cod.colsPermutation() * cod.matrixZ().bottomRows(cols - cod.rank()).transpose();
+        // Full rank: no kernel (Eigen would take an empty block of Z at a null pointer).
+        if (cod.rank() == cols) s.kernel = MatrixXd(cols, 0);
+        else s.kernel = cod.colsPermutation() * cod.matrixZ().bottomRows(cols - cod.rank()).transpose();
     }
     const double residual = rows == 0 ? 0.0 : (cols == 0 ? b.norm() : (a * s.xhat - b).norm());
     s.consistent = std::isfinite(residual) && s.xhat.allFinite() && residual <= kConsistency * std::max(1.0, b.norm());
