@@ -1,4 +1,5 @@
 #include "import/python_parse.hpp"
+#include "g2d/utf8.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,11 +33,7 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isIdentChar(char c) { return isIdentStart(c) || isDigit(c); }
 
 // Columns count code points, so a caret under the source lines up with UTF-8 text.
-int codePoints(std::string_view text) {
-    int n = 0;
-    for (unsigned char c : text) n += (c & 0xC0) != 0x80;
-    return n;
-}
+int codePoints(std::string_view text) { return static_cast<int>(rt::codePointCount(text)); }
 
 void appendUtf8(std::string& out, std::uint32_t cp) {
     if (cp < 0x80) {

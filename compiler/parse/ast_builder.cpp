@@ -1,4 +1,5 @@
 #include "parse/ast_builder.hpp"
+#include "g2d/utf8.hpp"
 
 #include <stdexcept>
 
@@ -11,12 +12,7 @@ namespace {
 using namespace ast;
 using P = G2dParser;
 
-std::uint32_t codePoints(const std::string& s) {
-    std::uint32_t n = 0;
-    for (unsigned char c : s)
-        if ((c & 0xC0) != 0x80) ++n;
-    return n;
-}
+std::uint32_t codePoints(const std::string& s) { return static_cast<std::uint32_t>(rt::codePointCount(s)); }
 
 // Unescapes a string literal's body (without the quotes).
 std::string unescape(const std::string& quoted) {

@@ -5,6 +5,7 @@
 
 #include "G2dLexer.h"
 #include "diag/suggest.hpp"
+#include "g2d/utf8.hpp"
 
 namespace g2d {
 
@@ -163,12 +164,8 @@ void SyntaxErrorListener::syntaxError(antlr4::Recognizer* recognizer, antlr4::To
     Span span{file_, static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(charPositionInLine + 1),
               static_cast<std::uint32_t>(line), 0};
     if (offending && offending->getType() != antlr4::Token::EOF) {
-        std::string text = offending->getText();
-        std::uint32_t width = 0;
-        for (unsigned char c : text) {
-            if (c == '\n') break;
-            if ((c & 0xC0) != 0x80) ++width;
-        }
+        const std::string text = offending->getText();
+        const auto width = static_cast<std::uint32_t>(rt::codePointCount(std::string_view(text).substr(0, text.find('\n'))));
         span.endCol = span.col + std::max<std::uint32_t>(width, 1);
     }
     // A missing `;` or `}` at the end of a line is reported right after the
@@ -194,9 +191,8 @@ void SyntaxErrorListener::syntaxError(antlr4::Recognizer* recognizer, antlr4::To
             if (prev && prev->getLine() < offending->getLine()) {
                 std::string text = prev->getText();
                 const auto nl = text.rfind('\n');
-                std::uint32_t width = 0;
-                for (unsigned char c : nl == std::string::npos ? text : text.substr(nl + 1))
-                    if ((c & 0xC0) != 0x80) ++width;
+                const auto width = static_cast<std::uint32_t>(
+                    rt::codePointCount(nl == std::string::npos ? std::string_view(text) : std::string_view(text).substr(nl + 1)));
                 const auto startCol = nl == std::string::npos ? prev->getCharPositionInLine() : 0;
                 std::uint32_t lineNo = static_cast<std::uint32_t>(prev->getLine());
                 if (nl != std::string::npos)

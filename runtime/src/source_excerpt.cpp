@@ -1,4 +1,5 @@
 #include "g2d/source_excerpt.hpp"
+#include "g2d/utf8.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -15,10 +16,8 @@ std::vector<std::string> printableCodePoints(const std::string& raw) {
         const auto c = static_cast<unsigned char>(raw[i]);
         if (c == '\t') { out.emplace_back(" "); ++i; continue; }
         if (c < 0x20 || c == 0x7f) { out.push_back(replacement); ++i; continue; }
-        const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-        bool ok = n > 0 && i + n <= raw.size();
-        for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(raw[i + k]) & 0xC0) == 0x80;
-        if (!ok) { out.push_back(replacement); ++i; continue; }
+        const std::size_t n = utf8SequenceLength(raw, i);
+        if (n == 0) { out.push_back(replacement); ++i; continue; }
         out.push_back(raw.substr(i, n));
         i += n;
     }

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "g2d/svg_element.hpp"
+#include "g2d/utf8.hpp"
 
 namespace g2d::rt {
 
@@ -156,8 +157,7 @@ void addPointsExtent(std::string_view points, SvgFrame& frame) {
 
 void addTextExtent(vec2 anchor, std::string_view text, double fontSize, std::string_view textAnchor, double degrees,
                    SvgFrame& frame) {
-    std::size_t chars = 0;
-    for (unsigned char c : text) chars += (c & 0xC0) != 0x80;   // code points of the UTF-8 text
+    const std::size_t chars = codePointCount(text);
     const double width = 0.6 * fontSize * static_cast<double>(chars);
     const double x0 = textAnchor == "start" ? 0 : textAnchor == "end" ? -width : -width / 2;
     const double a = degrees * 3.141592653589793 / 180.0, cs = std::cos(a), sn = std::sin(a);

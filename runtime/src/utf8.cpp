@@ -23,6 +23,12 @@ std::size_t utf8SequenceLength(std::string_view s, std::size_t i, std::uint32_t*
     return n;
 }
 
+std::size_t codePointCount(std::string_view text) {
+    std::size_t n = 0;
+    for (unsigned char c : text) n += (c & 0xC0) != 0x80;
+    return n;
+}
+
 std::size_t firstInvalidUtf8(std::string_view text) {
     for (std::size_t i = 0; i < text.size();) {
         const std::size_t n = utf8SequenceLength(text, i);

@@ -12,6 +12,10 @@ namespace g2d::rt {
 // a code point past U+10FFFF). With `codePoint`, the code point it encodes.
 std::size_t utf8SequenceLength(std::string_view text, std::size_t i, std::uint32_t* codePoint = nullptr);
 
+// Code points in UTF-8 text: the bytes that are not continuation bytes (so a
+// column counted on any text, valid or not, is the same everywhere).
+std::size_t codePointCount(std::string_view text);
+
 // The offset of the first byte that starts no valid sequence, or npos.
 std::size_t firstInvalidUtf8(std::string_view text);
 
