@@ -671,6 +671,7 @@ private:
     std::string translatedOrTodo(const std::string& source, const PyContext& context, int line, const std::string& what,
                                  std::vector<std::string>& todos, PyTranslation& t) {
         t = translatePython(source, context);
+        if (t.ok && t.type == PyType::None) t = {false, "", PyType::Unknown, "`None` has no g2d value", 0};
         if (t.ok) return t.text;
         warn(line, what + " cannot be translated (" + t.problem + "): left out, marked TODO");
         todos.push_back("TODO: " + what + ": " + source + "   (" + t.problem + ")");
