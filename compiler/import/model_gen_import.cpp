@@ -691,6 +691,16 @@ private:
             if (a.key == "new_x" || a.key == "new_y" || a.key == ".new_pos") {
                 std::string text = translatedOrTodo(styleReadsAsAttributes(a.value.text), context, a.line, a.key, todos, t);
                 if (text.empty()) continue;
+                const bool wantsVector = a.key == ".new_pos";
+                const bool fits = t.type == PyType::Unknown ||
+                                  (wantsVector ? t.type == PyType::Vec2 : t.type == PyType::Int || t.type == PyType::Float);
+                if (!fits) {   // e.g. a bare word read as text
+                    const std::string problem = std::string(wantsVector ? "a position must be a vector" : "a coordinate must be a number") +
+                                                ", not a " + std::string(pyTypeName(t.type));
+                    warn(a.line, a.key + " cannot be translated (" + problem + "): left out, marked TODO");
+                    todos.push_back("TODO: " + a.key + ": " + a.value.text + "   (" + problem + ")");
+                    continue;
+                }
                 (a.key == "new_x" ? newX : a.key == "new_y" ? newY : newPos) = text;
                 continue;
             }

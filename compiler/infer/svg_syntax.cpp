@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace g2d::infer::svg {
@@ -85,7 +86,11 @@ double tangent(const std::string& name, double degrees) {
     if (r == 0) return 0;
     if (r == 45) return 1;
     if (r == 135) return -1;
-    if (r == 90) throw SyntaxError{name + "(" + std::to_string(static_cast<int>(degrees)) + ") has no finite matrix"};
+    if (r == 90) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%.15g", degrees);
+        throw SyntaxError{name + "(" + angle + ") has no finite matrix"};
+    }
     return std::tan(r * std::numbers::pi / 180);
 }
 
