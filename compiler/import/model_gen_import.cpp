@@ -621,6 +621,12 @@ private:
         }
     }
 
+    static bool onAnEdge(const MgGraph& g, const std::string& vertexId) {
+        return std::any_of(g.edges.begin(), g.edges.end(), [&](const MgElement& e) {
+            return (e.vertex1 && *e.vertex1 == vertexId) || (e.vertex2 && *e.vertex2 == vertexId);
+        });
+    }
+
     void writeMatch(const MgProduction& p, const RuleScope& scope) {
         out_ << "    match {\n";
         // The tool strips helper nodes from the mother graph, so a helper, like
@@ -629,6 +635,10 @@ private:
         const bool ordered = isOrdered(p);
         for (const auto& v : p.mother.vertices) {
             const std::string& name = scope.motherName(v.id);
+            if (scope.isWildcard(v.id) && !onAnEdge(p.mother, v.id)) {
+                out_ << "        // the tool's helper node " << name << ", on no edge: stripped, as the tool does\n";
+                continue;
+            }
             if (scope.isWildcard(v.id)) {
                 out_ << "        " << name << ": *" << (ordered ? " @ " + vertexPosition(v) : "") << ";   // the tool's helper node\n";
                 continue;
@@ -776,7 +786,10 @@ private:
 
     void writeRule(const MgProduction& p, RuleScope& scope) {
         out_ << "\n// \"" << p.name << "\"\n";
-        if (p.mother.vertices.empty() && p.mother.edges.empty()) {
+        const bool onlyStripped = std::all_of(p.mother.vertices.begin(), p.mother.vertices.end(), [&](const MgElement& v) {
+            return scope.isWildcard(v.id) && !onAnEdge(p.mother, v.id);
+        });
+        if (p.mother.edges.empty() && onlyStripped) {
             // The tool's matcher starts from an element of the mother graph
             // (thesis Algorithm 5.1, line 3): an empty mother never matches,
             // where g2d's empty match would match at every step.
