@@ -721,7 +721,8 @@ private:
                 if (text.empty()) continue;
                 const auto* attr = kind.find(a.key);
                 if (attr->type == PyType::String && t.type != PyType::String && t.type != PyType::Unknown) text = "str(" + text + ")";
-                if (attr->type == PyType::Int && t.type == PyType::Float) text = "int(" + text + ")";
+                if (attr->type == PyType::Int && (t.type == PyType::Float || t.type == PyType::Bool)) text = "int(" + text + ")";
+                if (attr->type == PyType::Float && t.type == PyType::Bool) text = "float(" + text + ")";   // Python's True is 1
                 if (attr->type == PyType::Bool && t.type != PyType::Bool && t.type != PyType::Unknown)
                     text = "(" + text + ") != 0";
                 assignments.push_back(a.key + " = " + text);
