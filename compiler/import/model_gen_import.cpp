@@ -82,12 +82,17 @@ PyType literalType(const MgScalar& s) {
 }
 
 // A literal value as g2d source of the given type.
-std::string literalAs(const MgScalar& s, PyType type) {
+// The literal as a value of `type`; nullopt for an int g2d cannot hold.
+std::optional<std::string> literalAs(const MgScalar& s, PyType type) {
     switch (type) {
         case PyType::Bool: return isTrue(s) ? "true" : "false";
         case PyType::String: return quoted(s.kind == MgScalar::Kind::Null ? "" : s.text);
         case PyType::Int:
-            if (auto v = lengthInUnits(s.text)) return std::to_string(static_cast<long long>(*v * kPixelsPerUnit + (*v >= 0 ? 0.5 : -0.5)));
+            if (auto v = lengthInUnits(s.text)) {
+                const double rounded = std::round(*v * kPixelsPerUnit);
+                if (!(std::abs(rounded) < 9.2e18)) return std::nullopt;   // past g2d's 64-bit int
+                return std::to_string(static_cast<long long>(rounded));
+            }
             return "0";
         default:
             if (s.text == "True" || s.text == "False") return isTrue(s) ? "1" : "0";
@@ -495,7 +500,12 @@ private:
             if (!keptKey(a.key)) return std::nullopt;
             const auto* attr = kind.find(a.key);
             if (attr->presenceFlag) extra.push_back(presenceFlag(a.key) + " = true");
-            return a.key + " = " + literalAs(a.value, attr->type);
+            const auto value = literalAs(a.value, attr->type);
+            if (!value) {
+                warn(a.line, "`" + a.key + ": " + a.value.text + "` is past g2d's 64-bit integers: left out");
+                return std::nullopt;
+            }
+            return a.key + " = " + *value;
         }
         auto prop = stylePropertyOf(a.key);
         if (!prop) return std::nullopt;

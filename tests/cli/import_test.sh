@@ -169,6 +169,13 @@ printf 'host_graphs:\n  H: {vertices: [{id: 1, attr: {label: "a\001"}}]}\nproduc
 expect_code 1 "$g2d" import control.yml
 has err.txt 'control.yml:2: error: the control character U+0001 is not allowed in YAML text'
 
+# An integer past 64 bits is left out with a warning (it was undefined behaviour).
+printf 'host_graphs:\n  H:\n    vertices:\n    - {id: 1, attr: {x: 0, y: 0, count: 99999999999999999999}}\n    - {id: 2, attr: {x: 1, y: 0, count: 3}}\n    edges: []\nproductions: {}\n' > bigint.yml
+expect_code 0 "$g2d" import bigint.yml -o bigint.g2d
+has err.txt "bigint.yml:4: warning: \`count: 99999999999999999999\` is past g2d's 64-bit integers: left out"
+has bigint.g2d 'v2: Vertex at (1, 0) { count = 3 };'
+expect_code 0 "$g2d" check --werror bigint.g2d
+
 # A mapping key that is no mother element (one digit of facade3's changed, as a fuzzer did).
 sed '581s/139891385920816/139891385920817/' "$yml/ex_shape_ex1_facade3.yml" > badmap.yml
 expect_code 1 "$g2d" import badmap.yml -o badmap.g2d
