@@ -731,6 +731,10 @@ private:
                 if (text.empty()) continue;
                 const auto* attr = kind.find(a.key);
                 if (attr->type == PyType::String && t.type != PyType::String && t.type != PyType::Unknown) text = "str(" + text + ")";
+                if (t.type == PyType::Vec2 && attr->type != PyType::String) {   // settleCatalogue: a vector is kept as its length
+                    text = "length(" + text + ")";
+                    t.type = PyType::Float;
+                }
                 if (attr->type == PyType::Int && (t.type == PyType::Float || t.type == PyType::Bool)) text = "int(" + text + ")";
                 if (attr->type == PyType::Float && t.type == PyType::Bool) text = "float(" + text + ")";   // Python's True is 1
                 if (attr->type == PyType::Bool && t.type != PyType::Bool && t.type != PyType::Unknown)
