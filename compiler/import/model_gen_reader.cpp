@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 
 namespace g2d::import {
 namespace {
@@ -101,6 +102,13 @@ MgGraph graphOf(const YAML::Node& node, const char* what) {
         for (const auto& e : es)
             g.edges.push_back({idOf(e, "an edge"), attributesOf(e), endOf(e, "vertex1"), endOf(e, "vertex2"), lineOf(e)});
     }
+    // Ids name one element each (the tool's loader would make a repeated id
+    // the first element again; in one graph that is a corrupt file).
+    std::set<std::string> ids;
+    for (const auto* list : {&g.vertices, &g.edges})
+        for (const auto& e : *list)
+            if (!ids.insert(e.id).second)
+                throw MgError(e.line, std::string(what) + " has two elements with the id " + e.id);
     auto known = [&](const std::optional<std::string>& id) {
         if (!id) return true;
         for (const auto& v : g.vertices) if (v.id == *id) return true;

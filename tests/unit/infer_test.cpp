@@ -420,7 +420,8 @@ TEST_CASE("bad examples are refused with the place of the fault", "[infer][error
         }
         return std::string("no error");
     };
-    CHECK(error("[1, 1") == "x.json: not valid JSON (at byte 6)");
+    CHECK(error("[1, 1") == "x.json:1:6: not valid JSON: syntax error while parsing array - unexpected end of input; expected ']'");
+    CHECK(error("[1, 11e3081]") == "x.json:1:5: not valid JSON: the number 11e3081 is out of range");
     CHECK(error("[7]") == "x.json: data[0]: format version 7 is not 1 to 5");
     CHECK(error("[1, 1, \"0,0,10,0\", \"\", \"0,5,-1,-1\", 1, 0, 0, 0, false]") ==
           "x.json: data[4]: edge 0 names a vertex that does not exist");
