@@ -94,8 +94,9 @@ void writeObj(const Graph& g, const JsonSchema& schema, TextOut& out) {
     }
     for (std::size_t k = 0; k < g.kinds().size(); ++k) {
         if (g.kinds()[k].cls != ElemClass::Face) continue;
-        std::vector<FaceId> faces(g.facesOfKind(static_cast<int>(k)).begin(), g.facesOfKind(static_cast<int>(k)).end());
-        if (faces.empty()) continue;
+        const auto ofKind = g.facesOfKind(static_cast<int>(k));
+        if (ofKind.empty()) continue;
+        std::vector<FaceId> faces(ofKind.begin(), ofKind.end());
         std::sort(faces.begin(), faces.end());
         out.write("g ");
         out.write(schema.kindNames[k]);
