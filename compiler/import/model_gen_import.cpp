@@ -509,7 +509,20 @@ private:
         }
         auto prop = stylePropertyOf(a.key);
         if (!prop) return std::nullopt;
-        return styleAssignment(kind, *prop, a.value, std::nullopt);
+        std::string assignment = styleAssignment(kind, *prop, a.value, std::nullopt);
+        if (assignment.empty()) {
+            warnTextForNumber(a);
+            return std::nullopt;
+        }
+        return assignment;
+    }
+
+    void warnTextForNumber(const MgAttribute& a) {
+        warn(a.line, "`" + a.key + ": " + a.value.text + "` is text where the rules read a number: left out");
+    }
+    void addStyle(std::vector<std::string>& assignments, std::string assignment, const MgAttribute& a) {
+        if (assignment.empty()) warnTextForNumber(a);
+        else assignments.push_back(std::move(assignment));
     }
 
     // A style property set from a literal, or from a translated expression.
@@ -517,6 +530,18 @@ private:
                                 const std::optional<PyTranslation>& expression) {
         const bool kept = kind.readStyles.count(prop) != 0;
         const std::string target = kept ? "svg_" + prop : "style." + prop;
+        std::string assignment = styleValue(kind, prop, literal, expression, kept, target);
+        // A kept property is a typed attribute: text for a number cannot go there.
+        const CatalogueAttribute* typed = kept ? kind.find("svg_" + prop) : nullptr;
+        const bool numeric = typed && (typed->type == PyType::Float || typed->type == PyType::Int);
+        const bool text = expression ? expression->type == PyType::String
+                                     : assignment.size() > target.size() + 3 && assignment[target.size() + 3] == '"';
+        if (numeric && text) return "";
+        return assignment;
+    }
+
+    std::string styleValue(const KindCatalogue& kind, const std::string& prop, const MgScalar& literal,
+                           const std::optional<PyTranslation>& expression, bool kept, const std::string& target) {
         if (prop == "tag") {
             const std::string tag = tagOf(literal.kind == MgScalar::Kind::Null ? "none" : literal.text);
             if (kind.tagVaries) return "svg_tag = " + quoted(tag == "none" ? "none" : tag);
@@ -747,15 +772,17 @@ private:
             if (!prop) continue;
             std::string source = *prop == "d" ? withoutPixelScale(a.value.text) : a.value.text;
             if (auto literal = pythonLiteral(source)) {
-                assignments.push_back(styleAssignment(kind, *prop, *literal, std::nullopt));
+                addStyle(assignments, styleAssignment(kind, *prop, *literal, std::nullopt), a);
                 continue;
             }
             std::string text = translatedOrTodo(styleReadsAsAttributes(source), context, a.line, a.key, todos, t);
             if (text.empty()) continue;
             if (t.type == PyType::String && text.size() >= 2 && text.front() == '"' && text.back() == '"' &&
                 text.find_first_of("\"\\", 1) == text.size() - 1) {   // an older file's bare word (`.svg_tag: rect`)
-                assignments.push_back(styleAssignment(kind, *prop, MgScalar{text.substr(1, text.size() - 2), MgScalar::Kind::String, true},
-                                                      std::nullopt));
+                addStyle(assignments,
+                         styleAssignment(kind, *prop, MgScalar{text.substr(1, text.size() - 2), MgScalar::Kind::String, true},
+                                         std::nullopt),
+                         a);
                 continue;
             }
             if (*prop == "tag") {
@@ -763,7 +790,7 @@ private:
                 warn(a.line, "a computed .svg_tag is not imported: the element keeps its drawing");
                 continue;
             }
-            assignments.push_back(styleAssignment(kind, *prop, MgScalar{}, t));
+            addStyle(assignments, styleAssignment(kind, *prop, MgScalar{}, t), a);
         }
         for (const auto& t : todos) lines.push_back("// " + t);
         if (!isNode) {
