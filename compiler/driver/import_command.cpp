@@ -23,7 +23,7 @@ int runImport(const ImportCommandOptions& options) {
     try {
         const std::string name = options.input.substr(options.input.find_last_of('/') + 1);
         imported = import::importModelGen(import::readModelGenGrammar(text.str()), name,
-                                          {front::reservedNames(), front::attributeNamesRefused()});
+                                          {front::reservedNames(), front::attributeNamesRefused(), front::keywordNames()});
     } catch (const import::MgError& e) {
         std::fprintf(stderr, "%s:%d: error: %s\n", options.input.c_str(), e.line, e.what());
         return 1;

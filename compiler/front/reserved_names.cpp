@@ -9,6 +9,11 @@ namespace g2d::front {
 
 const std::vector<std::string>& keywords() { return parse::keywords(); }
 
+const std::set<std::string>& keywordNames() {
+    static const std::set<std::string> names(parse::keywords().begin(), parse::keywords().end());
+    return names;
+}
+
 const std::set<std::string>& reservedNames() {
     static const std::set<std::string> names = [] {
         std::set<std::string> out(parse::keywords().begin(), parse::keywords().end());

@@ -10,6 +10,7 @@
 namespace g2d::front {
 
 const std::vector<std::string>& keywords();
+const std::set<std::string>& keywordNames();   // the same, as a set
 const std::set<std::string>& reservedNames();
 // What an attribute cannot be named (keywords, and the facts the checker
 // refuses as attributes): the importer leaves such keys of the tool out.

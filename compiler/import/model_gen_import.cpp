@@ -151,7 +151,7 @@ class Importer {
 public:
     Importer(const MgGrammar& g, std::string fileName, const G2dNames& names)
         : g_(g), file_(std::move(fileName)), reserved_(withKinds(names.reserved)), notAttributes_(names.notAttributes),
-          ruleNames_(reserved_) {
+          notStyles_(names.notStyles), ruleNames_(reserved_) {
         nodes_.isNode = true;
         edges_.isNode = false;
     }
@@ -186,6 +186,7 @@ private:
     std::ostringstream out_;
     std::set<std::string> reserved_;     // g2d's names and the imported kinds'
     const std::set<std::string>& notAttributes_;
+    const std::set<std::string>& notStyles_;
     NameSet ruleNames_;                  // rules and constants share the global namespace
 
     static std::set<std::string> withKinds(std::set<std::string> names) {
@@ -206,12 +207,18 @@ private:
     // A key of the tool's that g2d keeps as an attribute: a name g2d can
     // declare (the tool's keys are any text). The others are left out, with a
     // warning the first time.
+    // The style property a `.svg_` key sets, if g2d can name it (a keyword cannot follow `style.`).
+    std::optional<std::string> styleOf(std::string_view key) const {
+        auto prop = stylePropertyOf(key);
+        if (prop && notStyles_.count(*prop)) return std::nullopt;
+        return prop;
+    }
     bool keptKey(const std::string& key) const {
         return isUserKey(key) && isIdentifier(key) && !notAttributes_.count(key);
     }
     void noteRefusedKey(const MgAttribute& a) {
         const bool styleKey = a.key.rfind(".svg_", 0) == 0 || a.key.rfind(".svgx_", 0) == 0;
-        if (styleKey && !stylePropertyOf(a.key) && refusedKeys_.insert(a.key).second)
+        if (styleKey && !styleOf(a.key) && refusedKeys_.insert(a.key).second)
             warn(a.line, "`" + a.key + "` names no style property g2d can write: it is left out");
         if (!isUserKey(a.key) || keptKey(a.key) || !refusedKeys_.insert(a.key).second) return;
         warn(a.line, "the attribute key `" + a.key + "` " +
@@ -251,7 +258,7 @@ private:
                         for (const auto& a : e.attributes) {
                             noteRefusedKey(a);
                             if (keptKey(a.key)) kindOf(isNode).add(a.key);
-                            if (auto prop = stylePropertyOf(a.key); prop && *prop == "tag" && tagOf(a.value.text) != "none")
+                            if (auto prop = styleOf(a.key); prop && *prop == "tag" && tagOf(a.value.text) != "none")
                                 kindOf(isNode).tagVaries = true;
                             for (const char* form : {"attr['.svg_", "attr[\".svg_"}) {
                                 for (std::size_t at = a.value.text.find(form); at != std::string::npos;
@@ -261,6 +268,7 @@ private:
                                     if (end == std::string::npos) continue;
                                     const std::string prop = a.value.text.substr(start, end - start);
                                     // Which kind sets it decides where it is kept.
+                                    if (!styleOf(".svg_" + prop)) continue;   // no property g2d can name
                                     for (bool k : {true, false}) kindOf(k).readStyles.insert(prop);
                                 }
                             }
@@ -269,7 +277,7 @@ private:
         for (bool isNode : {true, false})
             for (const auto& e : isNode ? host().vertices : host().edges)
                 for (const auto& a : e.attributes)
-                    if (auto prop = stylePropertyOf(a.key); prop && *prop == "tag" && tagOf(a.value.text) != "none")
+                    if (auto prop = styleOf(a.key); prop && *prop == "tag" && tagOf(a.value.text) != "none")
                         kindOf(isNode).tagVaries = true;
         for (bool isNode : {true, false}) {
             auto& kind = kindOf(isNode);
@@ -287,7 +295,7 @@ private:
 
     bool setsStyle(bool isNode, const std::string& prop) const {
         auto sets = [&](const MgElement& e) {
-            for (const auto& a : e.attributes) if (stylePropertyOf(a.key) == prop) return true;
+            for (const auto& a : e.attributes) if (styleOf(a.key) == prop) return true;
             return false;
         };
         for (const auto& e : isNode ? host().vertices : host().edges) if (sets(e)) return true;
@@ -507,7 +515,7 @@ private:
             }
             return a.key + " = " + *value;
         }
-        auto prop = stylePropertyOf(a.key);
+        auto prop = styleOf(a.key);
         if (!prop) return std::nullopt;
         std::string assignment = styleAssignment(kind, *prop, a.value, std::nullopt);
         if (assignment.empty()) {
@@ -768,7 +776,7 @@ private:
                 if (attr->presenceFlag) assignments.push_back(presenceFlag(a.key) + " = true");
                 continue;
             }
-            auto prop = stylePropertyOf(a.key);
+            auto prop = styleOf(a.key);
             if (!prop) continue;
             std::string source = *prop == "d" ? withoutPixelScale(a.value.text) : a.value.text;
             if (auto literal = pythonLiteral(source)) {

@@ -27,6 +27,9 @@ struct G2dNames {
     // What an attribute cannot be named (front::attributeNamesRefused): keys
     // of the tool's that are such names (or no names) are left out.
     const std::set<std::string>& notAttributes;
+    // What cannot follow `style.` (the keywords, front::keywordNames); such
+    // `.svg_` properties are left out.
+    const std::set<std::string>& notStyles;
 };
 
 // fileName is named in the output's header comment.

@@ -143,7 +143,7 @@ void checkImportYaml(const std::uint8_t* data, std::size_t size) {
         import::ImportedGrammar imported;
         try {
             imported = import::importModelGen(import::readModelGenGrammar(text), "input.yml",
-                                                  {front::reservedNames(), front::attributeNamesRefused()});
+                                                  {front::reservedNames(), front::attributeNamesRefused(), front::keywordNames()});
         } catch (const import::MgError& e) {
             if (e.line < 1 || e.line > lines) violated("an import error on line " + std::to_string(e.line) + " of " + std::to_string(lines));
             if (std::string(e.what()).empty()) violated("an import error without a message");
