@@ -75,8 +75,13 @@ std::vector<MgAttribute> attributesOf(const YAML::Node& element) {
     YAML::Node attr = element["attr"];
     if (!attr || attr.IsNull()) return out;
     if (!attr.IsMap()) fail(attr, "`attr` must be a mapping");
-    for (const auto& kv : attr)
-        out.push_back({kv.first.Scalar(), scalarOf(kv.second), lineOf(kv.first)});
+    for (const auto& kv : attr) {
+        MgAttribute a{kv.first.Scalar(), scalarOf(kv.second), lineOf(kv.first)};
+        // A repeated key: PyYAML builds a dict, so the later value wins, in the first one's place.
+        auto same = std::find_if(out.begin(), out.end(), [&](const MgAttribute& b) { return b.key == a.key; });
+        if (same != out.end()) *same = std::move(a);
+        else out.push_back(std::move(a));
+    }
     return out;
 }
 
