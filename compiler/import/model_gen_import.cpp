@@ -538,18 +538,18 @@ private:
                                 const std::optional<PyTranslation>& expression) {
         const bool kept = kind.readStyles.count(prop) != 0;
         const std::string target = kept ? "svg_" + prop : "style." + prop;
-        std::string assignment = styleValue(kind, prop, literal, expression, kept, target);
+        bool wroteText = false;
+        std::string assignment = styleValue(kind, prop, literal, expression, kept, target, wroteText);
         // A kept property is a typed attribute: text for a number cannot go there.
         const CatalogueAttribute* typed = kept ? kind.find("svg_" + prop) : nullptr;
         const bool numeric = typed && (typed->type == PyType::Float || typed->type == PyType::Int);
-        const bool text = expression ? expression->type == PyType::String
-                                     : assignment.size() > target.size() + 3 && assignment[target.size() + 3] == '"';
-        if (numeric && text) return "";
+        if (numeric && (wroteText || (expression && expression->type == PyType::String))) return "";
         return assignment;
     }
 
     std::string styleValue(const KindCatalogue& kind, const std::string& prop, const MgScalar& literal,
-                           const std::optional<PyTranslation>& expression, bool kept, const std::string& target) {
+                           const std::optional<PyTranslation>& expression, bool kept, const std::string& target,
+                           bool& wroteText) {
         if (prop == "tag") {
             const std::string tag = tagOf(literal.kind == MgScalar::Kind::Null ? "none" : literal.text);
             if (kind.tagVaries) return "svg_tag = " + quoted(tag == "none" ? "none" : tag);
@@ -567,6 +567,7 @@ private:
         if (prop == "width" || prop == "height" || literal.kind == MgScalar::Kind::Int || literal.kind == MgScalar::Kind::Float)
             if (auto v = lengthInUnits(literal.text); v && literal.text.find_first_not_of("0123456789.-+e") == std::string::npos)
                 return target + " = " + numberText(*v * kPixelsPerUnit);
+        wroteText = true;
         return target + " = " + quoted(literal.text);
     }
 
