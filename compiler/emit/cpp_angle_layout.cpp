@@ -1,7 +1,6 @@
 #include "emit/cpp_angle_layout.hpp"
 
 #include "emit/cpp_expr.hpp"
-#include "lower/angle_layout.hpp"
 
 namespace g2d::emit {
 
@@ -10,28 +9,9 @@ namespace {
 std::string num(double x) { return cppLiteral(ir::Value{x}, ir::kFloatType); }
 std::string num(int x) { return std::to_string(x); }
 
-std::string ints(const std::vector<int>& v) {
-    std::string out = "std::vector<int>{";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + num(v[i]);
-    return out + "}";
-}
-
 }  // namespace
 
-std::string daughterShapesText(const std::vector<rt::DaughterShape>& shapes, const std::string& in) {
-    std::string out;
-    for (const auto& s : shapes) {
-        std::string edges;
-        for (const auto& e : s.newEdges)
-            edges += (edges.empty() ? "" : ", ") + std::string("{") + num(e.src) + ", " + num(e.dst) + ", " + num(e.kind) + "}";
-        out += in + "info.shapes.push_back(DaughterShape{" + ints(s.deletedNodes) + ", " + ints(s.deletedEdges) + ", " + num(s.newNodes) +
-               ", {" + edges + "}, " + ints(s.newNodeKinds) + "});\n";
-    }
-    return out;
-}
-
-std::string angleLayoutOverride(const ir::Program& prog) {
-    const auto spec = lower::angleLayoutSpec(prog);
+std::string angleLayoutOverride(const std::optional<rt::AngleLayoutSpec>& spec) {
     if (!spec) return "";
     const auto& s = spec->settings;
     std::string kinds;

@@ -5,10 +5,9 @@
 #include "emit/cpp_angle_layout.hpp"
 #include "emit/cpp_expr.hpp"
 #include "emit/cpp_rewrite.hpp"
+#include "emit/cpp_rule_info.hpp"
 #include "emit/cpp_rules.hpp"
-#include "lower/command_lists.hpp"
-#include "lower/start_program.hpp"
-#include "lower/rule_facts.hpp"
+#include "lower/lowered_program.hpp"
 
 #include <algorithm>
 
@@ -22,75 +21,6 @@ std::string str(long long i) { return std::to_string(i); }
 std::string cLiteral(const std::string& s) {
     std::string lit = cppString(s);                       // std::string("...", n)
     return lit.substr(12, lit.rfind("\", ") - 12 + 1);   // "..."
-}
-
-// `std::vector<int>{a, b}` or `std::vector<long long>{aLL, bLL}` (typed, so
-// that an empty list stays a vector).
-template <class T>
-std::string vectorLiteral(const std::vector<T>& v) {
-    constexpr bool wide = sizeof(T) > sizeof(int);
-    std::string out = wide ? "std::vector<long long>{" : "std::vector<int>{";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + str(v[i]) + (wide ? "LL" : "");
-    return out + "}";
-}
-
-std::string incidenceName(rt::Incidence r) {
-    switch (r) {
-    case rt::Incidence::None: return "Incidence::None";
-    case rt::Incidence::PatternEdges: return "Incidence::PatternEdges";
-    case rt::Incidence::AllEdges: return "Incidence::AllEdges";
-    }
-    return "Incidence::AllEdges";
-}
-
-template <class T>
-std::string listOf(const std::vector<T>& v, std::string (*item)(T)) {
-    std::string out = "{";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + item(v[i]);
-    return out + "}";
-}
-std::string byteText(std::uint8_t b) { return std::to_string(static_cast<int>(b)); }
-
-// `RuleInfo info` as the lowering made it (lower::ruleFacts), field by field:
-// the generated grammar holds the same data the interpreter computes.
-std::string ruleInfo(const rt::RuleInfo& i, const std::string& in) {
-    std::string out = in + "RuleInfo info;\n";
-    out += in + "info.name = " + cppString(i.name) + ";\n";
-    out += in + "info.priority = " + cppLiteral(ir::Value{i.priority}, ir::kIntType) + ";\n";
-    out += in + "info.pick = " + (i.pick == rt::Pick::OldestGeneration ? "Pick::OldestGeneration"
-                                  : i.pick == rt::Pick::Oldest          ? "Pick::Oldest"
-                                                                        : "Pick::Random") + ";\n";
-    out += in + "info.parallel = " + (i.parallel ? "true" : "false") + ";\n";
-    if (i.matchWeighted) out += in + "info.matchWeighted = true;\n";
-    out += in + "info.generation = " + (i.generation ? "true" : "false") + ";\n";
-    out += in + "info.weights = {";
-    for (std::size_t d = 0; d < i.weights.size(); ++d) out += (d ? ", " : "") + cppLiteral(ir::Value{i.weights[d]}, ir::kFloatType);
-    out += "};\n";
-    if (i.choiceWeight != 1) out += in + "info.choiceWeight = " + cppLiteral(ir::Value{i.choiceWeight}, ir::kFloatType) + ";\n";
-    out += in + "info.radius = " + str(i.radius) + ";\n";
-    out += in + "info.nearKinds = " + vectorLiteral(i.nearKinds) + ";\n";
-    if (!i.joinKinds.empty()) out += in + "info.joinKinds = " + vectorLiteral(i.joinKinds) + ";\n";
-    out += in + "info.readsIncidence = " + listOf(i.readsIncidence, incidenceName) + ";\n";
-    out += in + "info.readDirections = " + listOf(i.readDirections, byteText) + ";\n";
-    out += in + "info.newHostAddsNothing = " + listOf(i.newHostAddsNothing, byteText) + ";\n";
-    out += in + "info.edgeCount = " + str(i.edgeCount) + ";\n";
-    out += in + "info.faceCount = " + str(i.faceCount) + ";\n";
-    out += in + "info.nodeKinds = " + vectorLiteral(i.nodeKinds) + ";\n";
-    out += in + "info.kindsKnown = " + (i.kindsKnown ? "true" : "false") + ";\n";
-    out += in + "info.readKinds = " + vectorLiteral(i.readKinds) + ";\n";
-    out += in + "info.readsDegrees = " + (i.readsDegrees ? "true" : "false") + ";\n";
-    out += in + "info.readsNeighbours = " + (i.readsNeighbours ? "true" : "false") + ";\n";
-    out += in + "info.readValues = " + vectorLiteral(i.readValues) + ";\n";
-    for (std::size_t d = 0; d < i.changedKinds.size(); ++d) {
-        out += in + "info.changedKinds.push_back(" + vectorLiteral(i.changedKinds[d]) + ");\n";
-        out += in + "info.changedValues.push_back(" + vectorLiteral(i.changedValues[d]) + ");\n";
-    }
-    out += in + "info.deletesNodes = " + listOf(i.deletesNodes, byteText) + ";\n";
-    if (i.mergeTolerance > 0) out += in + "info.mergeTolerance = " + cppLiteral(ir::Value{i.mergeTolerance}, ir::kFloatType) + ";\n";
-    if (!i.globalMatches) out += in + "info.globalMatches = false;\n";
-    if (i.intersect) out += in + "info.intersect = true;\n";
-    out += daughterShapesText(i.shapes, in);
-    return out;
 }
 
 std::string paramType(const ir::Type& t) {
@@ -114,7 +44,7 @@ std::string fromValue(const ir::Type& t, const std::string& v) {
 class ProgramEmitter {
 public:
     ProgramEmitter(const ir::Program& prog, const EmitOptions& options)
-        : prog_(prog), options_(options), gen_(prog, places_) {}
+        : prog_(prog), lowered_(lower::lowerProgram(prog)), options_(options), gen_(prog, places_) {}
 
     std::string emit() {
         std::string functions = emitFunctions();
@@ -124,7 +54,7 @@ public:
         std::string rules;
         int firstDaughter = 0;
         for (std::size_t r = 0; r < prog_.rules.size(); ++r) {
-            rules += emitRule(prog_, prog_.rules[r], static_cast<int>(r), firstDaughter, gen_, places_, constants_);
+            rules += emitRule(prog_, lowered_.rules[r], static_cast<int>(r), firstDaughter, gen_, places_, constants_);
             firstDaughter += static_cast<int>(prog_.rules[r].daughters.size());
         }
         std::string styles = emitStyles();
@@ -276,7 +206,7 @@ private:
         out += "        (void)params;\n        rng_ = &rng;\n        current_ = \"\";\n        clearPending();\n        try {\n";
         for (std::size_t i = 0; i < prog_.params.size(); ++i)
             out += in + "P_.p" + str(static_cast<long long>(i)) + " = " + fromValue(prog_.params[i].type, "params[" + str(static_cast<long long>(i)) + "]") + ";\n";
-        const lower::StartProgram start = lower::lowerStart(prog_);
+        const lower::StartProgram& start = lowered_.start;
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k)
             if (!prog_.kinds[k].attrs.empty())
                 out += in + "default_" + str(static_cast<long long>(k)) + " = Kind" + str(static_cast<long long>(k)) + "{};\n";
@@ -304,9 +234,9 @@ private:
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";
         if (prog_.tracksGenerations) out += in + "tracksGenerations = true;\n";
-        for (const auto& r : prog_.rules) {
-            const lower::RuleFacts facts = lower::ruleFacts(prog_, r);
-            out += in + "{\n" + ruleInfo(facts.info, in + "    ");
+        for (const auto& rule : lowered_.rules) {
+            const lower::RuleFacts& facts = rule.facts;
+            out += in + "{\n" + ruleInfoText(facts.info, in + "    ");
             // `target = check(expr);`, a failure placed at the expression.
             auto checked = [&](const ir::Expr& expr, const std::string& target, const std::string& check) {
                 const std::string v = gen_.gen(expr, noElements(), out, in + "    ");
@@ -375,7 +305,7 @@ private:
         std::string out, cases;
         for (std::size_t r = 0; r < prog_.rules.size(); ++r) {
             const ir::Rule& rule = prog_.rules[r];
-            const lower::RuleFacts facts = lower::ruleFacts(prog_, rule);
+            const lower::RuleFacts& facts = lowered_.rules[r].facts;
             if (!facts.info.matchWeighted) continue;
             const std::string rs = str(static_cast<long long>(r));
             const ExprContext ctx = matchElements(rule);
@@ -463,13 +393,13 @@ private:
                 const std::string rd = str(static_cast<long long>(r)) + "_" + str(static_cast<long long>(d));
                 out += "            case " + str(static_cast<long long>(key)) + ": apply_" + rd + "(G, step, pending_" + rd + "_[ref.index]); break;\n";
                 clears += "        pending_" + rd + "_.clear();\n";
-                const std::size_t loops = lower::lowerRewrite(prog_, prog_.rules[r], d).loops.size();
+                const std::size_t loops = lowered_.rules[r].daughters[d].loops.size();
                 for (std::size_t l = 0; l < loops; ++l)
                     clears += "        turns_" + rd + "_" + str(static_cast<long long>(l)) + "_.clear();\n";
             }
         out += "            default: break;\n            }\n            applicationDone(G);\n        }\n        (void)G; (void)step;\n        clearPending();\n    }\n\n";
         out += "    void discard() override { clearPending(); }\n\n";
-        out += angleLayoutOverride(prog_);
+        out += angleLayoutOverride(lowered_.angleLayout);
         out += emitDrawingCost();
         out += "    void clearPending() {\n        pendingOrder_.clear();\n" + clears + "    }\n\n";
         out += emitPrefetchData(perRule);
@@ -508,11 +438,11 @@ private:
         };
         if (!prog_.sequence.empty()) {
             out += "    const std::vector<SequenceEntry>& sequence() const override {\n        static const std::vector<SequenceEntry> list = " +
-                   entries(lower::sequenceOf(prog_)) + ";\n        return list;\n    }\n\n";
+                   entries(lowered_.sequence) + ";\n        return list;\n    }\n\n";
         }
         if (!prog_.compounds.empty()) {
             std::string list;
-            for (const auto& c : lower::compoundsOf(prog_))
+            for (const auto& c : lowered_.compounds)
                 list += "            {" + cppString(c.name) + ", " + str(static_cast<long long>(c.matchRule)) + ", " + entries(c.entries) + "},\n";
             out += "    const std::vector<CompoundInfo>& compounds() const override {\n        static const std::vector<CompoundInfo> list = {\n" + list +
                    "        };\n        return list;\n    }\n\n";
@@ -629,6 +559,7 @@ private:
     }
 
     const ir::Program& prog_;
+    const lower::LoweredProgram lowered_;
     const EmitOptions& options_;
     Places places_;
     ConstantValues constants_;

@@ -194,8 +194,19 @@ std::string ExprGen::gen(const ir::Expr& e, const ExprContext& ctx, std::string&
         for (std::size_t i = 0; i < args.size(); ++i) c += (i ? ", " : "") + args[i];
         return bind(c + ")");
     }
-    default: return binary(e, ctx, out, in);
+    case ExprOp::Add:
+    case ExprOp::Sub:
+    case ExprOp::Mul:
+    case ExprOp::Div:
+    case ExprOp::Mod:
+    case ExprOp::Lt:
+    case ExprOp::Le:
+    case ExprOp::Gt:
+    case ExprOp::Ge:
+    case ExprOp::Eq:
+    case ExprOp::Ne: return binary(e, ctx, out, in);
     }
+    throw std::logic_error("an expression operation out of range");
 }
 
 std::string ExprGen::binary(const ir::Expr& e, const ExprContext& ctx, std::string& out, const std::string& in) {

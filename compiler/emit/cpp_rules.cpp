@@ -3,9 +3,6 @@
 #include <algorithm>
 
 #include "emit/cpp_rewrite.hpp"
-#include "lower/match_program.hpp"
-#include "lower/rule_facts.hpp"
-#include "lower/rewrite_program.hpp"
 
 namespace g2d::emit {
 
@@ -16,10 +13,10 @@ std::string str(int i) { return std::to_string(i); }
 
 class RuleEmitter {
 public:
-    RuleEmitter(const ir::Program& prog, const ir::Rule& r, int index, int firstDaughter, ExprGen& gen, Places& places,
-                ConstantValues& constants)
-        : prog_(prog), r_(r), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen),
-          rewrite_(prog, gen, places, constants), match_(lower::lowerMatch(prog, r)), facts_(lower::ruleFacts(prog, r)) {}
+    RuleEmitter(const ir::Program& prog, const lower::LoweredRule& lowered, int index, int firstDaughter, ExprGen& gen,
+                Places& places, ConstantValues& constants)
+        : prog_(prog), r_(*lowered.rule), ri_(str(index)), firstDaughter_(firstDaughter), gen_(gen),
+          rewrite_(prog, gen, places, constants), match_(lowered.match), facts_(lowered.facts), daughters_(lowered.daughters) {}
 
     std::string emit() {
         std::string out;
@@ -28,7 +25,7 @@ public:
         out += repair();
         for (std::size_t k = 0; k < r_.nacs.size(); ++k) out += nac(static_cast<int>(k));
         for (std::size_t d = 0; d < r_.daughters.size(); ++d) {
-            const lower::RewriteProgram p = lower::lowerRewrite(prog_, r_, d);
+            const lower::RewriteProgram& p = daughters_[d];
             out += writeSet(static_cast<int>(d), p);
             out += prepare(static_cast<int>(d), p);
         }
@@ -406,15 +403,16 @@ private:
     int firstDaughter_;
     ExprGen& gen_;
     RewritePrinter rewrite_;
-    lower::MatchProgram match_;
+    const lower::MatchProgram& match_;
     // What the runtime knows of the rule, as its generic repair reads it
     // (RuleSet::repair): the inlined repair reads the same.
-    lower::RuleFacts facts_;
+    const lower::RuleFacts& facts_;
+    const std::vector<lower::RewriteProgram>& daughters_;
 };
 
 }  // namespace
 
-std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
+std::string emitRule(const ir::Program& prog, const lower::LoweredRule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
                      Places& places, ConstantValues& constants) {
     return RuleEmitter(prog, rule, ruleIndex, firstDaughter, gen, places, constants).emit();
 }

@@ -4,12 +4,13 @@
 #include <string>
 
 #include "emit/cpp_expr.hpp"
+#include "lower/lowered_program.hpp"
 
 namespace g2d::emit {
 
 // `firstDaughter` numbers the rule's first daughter among all rules' daughters
 // (the key of its pending rewrites).
-std::string emitRule(const ir::Program& prog, const ir::Rule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
+std::string emitRule(const ir::Program& prog, const lower::LoweredRule& rule, int ruleIndex, int firstDaughter, ExprGen& gen,
                      Places& places, ConstantValues& constants);
 
 }  // namespace g2d::emit

@@ -112,14 +112,23 @@ Value evaluateUnchecked(const ir::Expr& e, EvalFrame& f) {
         inner.fnArgs = &args;
         return evaluate(f.prog->functions[e.index].body, inner);
     }
-    default: {
+    case ExprOp::Add:
+    case ExprOp::Sub:
+    case ExprOp::Mul:
+    case ExprOp::Div:
+    case ExprOp::Mod:
+    case ExprOp::Lt:
+    case ExprOp::Le:
+    case ExprOp::Gt:
+    case ExprOp::Ge:
+    case ExprOp::Eq:
+    case ExprOp::Ne: {
         Value l = evaluate(e.args[0], f);
         Value r = evaluate(e.args[1], f);
-        const auto op = ir::binaryOperator(e.op);
-        if (!op) throw std::logic_error("the evaluator has no case for an expression operation");
-        return rt::binaryOp(*op, l, r);
+        return rt::binaryOp(*ir::binaryOperator(e.op), l, r);
     }
     }
+    throw std::logic_error("an expression operation out of range");
 }
 
 }  // namespace

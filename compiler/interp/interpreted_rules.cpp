@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lower/angle_layout.hpp"
-#include "lower/command_lists.hpp"
-#include "lower/rule_facts.hpp"
 
 namespace g2d::interp {
 
@@ -13,24 +10,17 @@ using rt::EdgeId;
 using rt::kNoId;
 using rt::NodeId;
 
-InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st) {
+InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st), lowered_(*st.lowered) {
     tracksGenerations = st.prog->tracksGenerations;
-    sequence_ = lower::sequenceOf(*st.prog);
-    compounds_ = lower::compoundsOf(*st.prog);
-    angleLayout_ = lower::angleLayoutSpec(*st.prog);
     std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
-    for (const auto& r : st.prog->rules) {
-        lower::RuleFacts facts = lower::ruleFacts(*st.prog, r);
-        rt::RuleInfo& info = facts.info;
+    for (const auto& rule : lowered_.rules) {
+        const lower::RuleFacts& facts = rule.facts;
+        rt::RuleInfo& info = infos_.emplace_back(facts.info);
         for (std::size_t d = 0; d < facts.weightExprs.size(); ++d)
             if (facts.weightExprs[d]) info.weights[d] = checkedNumber(*facts.weightExprs[d], nullptr, rt::checkedWeight);
         if (facts.choiceWeightExpr) info.choiceWeight = checkedNumber(*facts.choiceWeightExpr, nullptr, rt::checkedWeight);
         if (facts.mergeExpr) info.mergeTolerance = checkedNumber(*facts.mergeExpr, nullptr, rt::checkedMergeTolerance);
-        infos_.push_back(std::move(info));
-        matchWeights_.push_back(facts.matchWeightExprs);
-        auto& rewrites = rewrites_.emplace_back();
-        for (std::size_t d = 0; d < r.daughters.size(); ++d) rewrites.push_back(lower::lowerRewrite(*st.prog, r, d));
-        const lower::MatchProgram& m = matches_.emplace_back(lower::lowerMatch(*st.prog, r));
+        const lower::MatchProgram& m = rule.match;
         maxNodes = std::max(maxNodes, static_cast<std::size_t>(m.nodeSlots));
         maxEdges = std::max(maxEdges, static_cast<std::size_t>(m.edgeSlots));
         maxFaces = std::max(maxFaces, static_cast<std::size_t>(m.faceSlots));
@@ -277,13 +267,13 @@ void InterpretedRules::collect(const rt::Graph& g, const lower::MatchProgram& m,
 void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) {
     current_ = &st_.prog->rules[rule];
     currentIndex_ = rule;
-    const lower::MatchProgram& m = matches_[rule];
+    const lower::MatchProgram& m = lowered_.rules[rule].match;
     collect(g, m, m.full, out);
 }
 
 void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host,
                                     rt::MatchBuffer& out, rt::EdgeId newEdgesFrom) {
-    const lower::MatchProgram& m = matches_[rule];
+    const lower::MatchProgram& m = lowered_.rules[rule].match;
     const std::uint32_t need = m.anchorEdgeKinds[static_cast<std::size_t>(node)];
     if ((g.edgeKindsAt(host) & need) != need) return;
     current_ = &st_.prog->rules[rule];
@@ -298,7 +288,7 @@ void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int no
 // ---- rewriting: the lowered rewrite programs, operation by operation ------------
 
 void InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& w) const {
-    const lower::RewriteProgram& p = rewrites_[rule][daughter];
+    const lower::RewriteProgram& p = lowered_.rules[rule].daughters[daughter];
     for (int n : p.writtenNodes) w.nodes.push_back(m.nodes[n]);
     for (int e : p.writtenEdges) w.edges.push_back(m.edges[e]);
     for (int f : p.writtenFaces) w.faces.push_back(m.faces[f]);
@@ -325,7 +315,7 @@ void InterpretedRules::weigh(std::size_t rule, rt::Match m, const rt::Graph& g, 
     f.faces = m.faces;
     const ir::Expr* first = nullptr;
     for (std::size_t d = 0; d < weights.size(); ++d) {
-        const ir::Expr* expr = matchWeights_[rule][d];
+        const ir::Expr* expr = lowered_.rules[rule].facts.matchWeightExprs[d];
         if (!expr) continue;
         first = first ? first : expr;
         try {
@@ -344,7 +334,7 @@ void InterpretedRules::weigh(std::size_t rule, rt::Match m, const rt::Graph& g, 
 void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
                                rt::Rng& rng, long long) {
     const ir::Rule& r = st_.prog->rules[rule];
-    const lower::RewriteProgram& program = rewrites_[rule][daughter];
+    const lower::RewriteProgram& program = lowered_.rules[rule].daughters[daughter];
     EvalFrame f = matchFrame(r, m, g, rng);
 
     if (pendingCount_ == pending_.size()) pending_.emplace_back();
@@ -373,7 +363,7 @@ std::vector<rt::Value> InterpretedRules::compoundValues(std::size_t compound, rt
 void InterpretedRules::commit(rt::Graph& g, long long step) {
     for (std::size_t k = 0; k < pendingCount_; ++k) {
         Prepared& p = pending_[k];
-        executor_.commit(rewrites_[p.rule][p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, p.loops,
+        executor_.commit(lowered_.rules[p.rule].daughters[p.daughter], rt::Match{p.nodes.data(), p.edges.data(), p.faces.data()}, p.registers, p.loops,
                          g, step);
         applicationDone(g);
     }

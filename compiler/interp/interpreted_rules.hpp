@@ -7,8 +7,7 @@
 #include "g2d/derivation.hpp"
 #include "interp/program_state.hpp"
 #include "interp/rewrite_executor.hpp"
-#include "lower/match_program.hpp"
-#include "lower/rewrite_program.hpp"
+#include "lower/lowered_program.hpp"
 
 namespace g2d::interp {
 
@@ -19,8 +18,8 @@ public:
 
     std::size_t ruleCount() const override { return infos_.size(); }
     const rt::RuleInfo& info(std::size_t rule) const override { return infos_[rule]; }
-    const std::vector<rt::SequenceEntry>& sequence() const override { return sequence_; }
-    const std::vector<rt::CompoundInfo>& compounds() const override { return compounds_; }
+    const std::vector<rt::SequenceEntry>& sequence() const override { return lowered_.sequence; }
+    const std::vector<rt::CompoundInfo>& compounds() const override { return lowered_.compounds; }
     std::vector<rt::Value> compoundValues(std::size_t compound, rt::Match m, const rt::Graph& g, rt::Rng& rng) override;
     void findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) override;
     void findAnchored(std::size_t rule, const rt::Graph& g, int node, rt::NodeId host, rt::MatchBuffer& out,
@@ -31,7 +30,7 @@ public:
                  long long step) override;
     void commit(rt::Graph& g, long long step) override;
     void discard() override { pendingCount_ = 0; }
-    const rt::AngleLayoutSpec* angleLayout() const override { return angleLayout_ ? &*angleLayout_ : nullptr; }
+    const rt::AngleLayoutSpec* angleLayout() const override { return lowered_.angleLayout ? &*lowered_.angleLayout : nullptr; }
     bool hasDrawingCost() const override;
     double drawingCost(const rt::KindCounts& counts) override;
     double drawingTemperature() override;
@@ -43,9 +42,6 @@ public:
 private:
     // The frame of rule r's expressions on match m (its locals cleared).
     EvalFrame matchFrame(const ir::Rule& r, rt::Match m, const rt::Graph& g, rt::Rng& rng);
-    std::vector<rt::SequenceEntry> sequence_;   // lower::sequenceOf
-    std::vector<std::vector<const ir::Expr*>> matchWeights_;   // per rule and daughter (lower::RuleFacts)
-    std::vector<rt::CompoundInfo> compounds_;
     // One prepared application; kept in a pool so that its vectors are reused.
     struct Prepared {
         std::size_t rule = 0, daughter = 0;
@@ -72,9 +68,8 @@ private:
     bool keptByNewEdgeGate(bool gateHere) const;
 
     const ProgramState& st_;
-    std::vector<rt::RuleInfo> infos_;
-    std::vector<std::vector<lower::RewriteProgram>> rewrites_;   // per rule, per daughter
-    std::vector<lower::MatchProgram> matches_;   // per rule
+    const lower::LoweredProgram& lowered_;
+    std::vector<rt::RuleInfo> infos_;   // the lowering's, with the weights of this run's parameters
     std::vector<Prepared> pending_;   // the first pendingCount_ are in use
     std::size_t pendingCount_ = 0;
     RewriteExecutor executor_;
@@ -87,7 +82,6 @@ private:
     EvalFrame boundFrame(const rt::Graph& g);
     const ir::Rule* current_ = nullptr;
     std::size_t currentIndex_ = 0;   // current_'s index (near queries record under it)
-    std::optional<rt::AngleLayoutSpec> angleLayout_;
 };
 
 }  // namespace g2d::interp

@@ -31,10 +31,11 @@ std::vector<rt::ParamSpec> paramSpecs(const ir::Program& prog) {
 }
 
 InterpretedRun::InterpretedRun(const ir::Program& prog, const SourceManager* sources)
-    : prog_(prog), sources_(sources), params_(paramSpecs(prog)), schema_(interp::jsonSchema(prog)) {}
+    : prog_(prog), lowered_(std::make_shared<const lower::LoweredProgram>(lower::lowerProgram(prog))), sources_(sources),
+      params_(paramSpecs(prog)), schema_(interp::jsonSchema(prog)) {}
 
 void InterpretedRun::start(const std::vector<rt::Value>& params, rt::Rng& rng) {
-    graph_ = startRun(prog_, params, rng, state_);
+    graph_ = startRun(lowered_, params, rng, state_);
     rules_ = std::make_unique<InterpretedRules>(state_);
 }
 

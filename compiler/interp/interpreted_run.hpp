@@ -31,6 +31,7 @@ public:
 
 private:
     const ir::Program& prog_;
+    std::shared_ptr<const lower::LoweredProgram> lowered_;
     const SourceManager* sources_;
     std::vector<rt::ParamSpec> params_;
     rt::JsonSchema schema_;

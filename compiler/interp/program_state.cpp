@@ -1,7 +1,6 @@
 #include "interp/program_state.hpp"
 
 #include "interp/rewrite_executor.hpp"
-#include "lower/start_program.hpp"
 
 namespace g2d::interp {
 
@@ -21,9 +20,16 @@ std::vector<rt::KindInfo> kindInfos(const ir::Program& prog) {
 }
 
 rt::Graph startRun(const ir::Program& prog, std::vector<rt::Value> params, rt::Rng& rng, ProgramState& st) {
-    const lower::StartProgram start = lower::lowerStart(prog);
+    return startRun(std::make_shared<const lower::LoweredProgram>(lower::lowerProgram(prog)), std::move(params), rng, st);
+}
+
+rt::Graph startRun(std::shared_ptr<const lower::LoweredProgram> lowered, std::vector<rt::Value> params, rt::Rng& rng,
+                   ProgramState& st) {
+    const ir::Program& prog = *lowered->ir;
+    const lower::StartProgram& start = lowered->start;
     st = ProgramState{};
     st.prog = &prog;
+    st.lowered = std::move(lowered);
     st.params = std::move(params);
     st.consts.resize(prog.consts.size());
     for (const auto& k : prog.kinds) st.kindDefaults.emplace_back(k.attrs.size());

@@ -142,8 +142,12 @@ std::optional<Value> fold(const Expr& e, const ir::Program& prog, std::string* e
         if (!l || !r) return std::nullopt;
         return foldArith(e.op, *l, *r, error);
     }
-    default: return std::nullopt;
+    // Values known only when the program runs (a function call may draw, or recurse).
+    case ExprOp::Param: case ExprOp::Local: case ExprOp::FnArg: case ExprOp::Attr: case ExprOp::SelfAttr:
+    case ExprOp::SelfFact: case ExprOp::Placed: case ExprOp::CompoundValue: case ExprOp::Fact: case ExprOp::CallFn:
+    case ExprOp::Count: return std::nullopt;
     }
+    return std::nullopt;
 }
 
 bool usesRandom(const Expr& e, const ir::Program& prog) {

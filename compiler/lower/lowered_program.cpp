@@ -1,0 +1,26 @@
+#include "lower/lowered_program.hpp"
+
+#include "lower/angle_layout.hpp"
+#include "lower/command_lists.hpp"
+
+namespace g2d::lower {
+
+LoweredProgram lowerProgram(const ir::Program& prog) {
+    LoweredProgram out;
+    out.ir = &prog;
+    out.start = lowerStart(prog);
+    out.rules.reserve(prog.rules.size());
+    for (const auto& r : prog.rules) {
+        LoweredRule& rule = out.rules.emplace_back();
+        rule.rule = &r;
+        rule.match = lowerMatch(prog, r);
+        for (std::size_t d = 0; d < r.daughters.size(); ++d) rule.daughters.push_back(lowerRewrite(prog, r, d));
+        rule.facts = ruleFacts(prog, r);
+    }
+    out.sequence = sequenceOf(prog);
+    out.compounds = compoundsOf(prog);
+    out.angleLayout = angleLayoutSpec(prog);
+    return out;
+}
+
+}  // namespace g2d::lower
