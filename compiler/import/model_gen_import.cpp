@@ -133,15 +133,15 @@ std::string styleReadsAsAttributes(const std::string& source) {
     return out;
 }
 
-// String literals are escaped as they are written; a NUL or carriage return
-// left in the text is in a comment (the tool's text quoted in a TODO), where
-// g2d would read it as the end of the file or of the comment: spelled out.
-std::string visibleControls(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
+// A line comment quoting the tool's text: a line feed, carriage return or NUL
+// in it would end the comment (or the file) for g2d, so they are spelled out.
+std::string comment(const std::string& text) {
+    std::string out = "// ";
+    out.reserve(text.size() + 3);
     for (char c : text) {
-        if (c == '\0') out += "\\0";
+        if (c == '\n') out += "\\n";
         else if (c == '\r') out += "\\r";
+        else if (c == '\0') out += "\\0";
         else out += c;
     }
     return out;
@@ -173,7 +173,7 @@ public:
         out_.str("");
         writeHeader(body);
         out_ << body;
-        return {visibleControls(wrapLongLines(out_.str())), std::move(warnings_)};
+        return {wrapLongLines(out_.str()), std::move(warnings_)};
     }
 
 private:
@@ -420,7 +420,7 @@ private:
     // ---- writing ------------------------------------------------------------
 
     void writeHeader(const std::string& body) {
-        out_ << "// Imported by `g2d import` from " << file_ << ",\n"
+        out_ << comment("Imported by `g2d import` from " + file_ + ",") << "\n"
              << "// a grammar of the original tool of Pogrzebacz 2019 (docs/import.md).\n"
              << "// The tool's elements are untyped, so every node is a Vertex and every edge an\n"
              << "// Edge; its attributes keep their names, its conditions are `where` clauses.\n\n";
@@ -441,12 +441,12 @@ private:
         for (const auto& gv : g_.globals) {
             const ConstName& c = consts_.at(gv.name);
             if (!used.count(c.name)) {   // g2d warns of a const nothing reads
-                out_ << "// " << gv.name << ": " << gv.expression << "   (a global no rule reads: not imported)\n";
+                out_ << comment(gv.name + ": " + gv.expression + "   (a global no rule reads: not imported)") << "\n";
                 continue;
             }
-            if (!c.todo.empty()) out_ << "// " << c.todo << "\n";
-            out_ << "const " << c.name << ": " << g2dTypeName(c.type) << " = " << c.text << ";   // " << gv.name
-                 << ": " << gv.expression << "\n";
+            if (!c.todo.empty()) out_ << comment(c.todo) << "\n";
+            out_ << "const " << c.name << ": " << g2dTypeName(c.type) << " = " << c.text << ";   "
+                 << comment(gv.name + ": " + gv.expression) << "\n";
         }
         if (!g_.globals.empty()) out_ << "\n";
     }
@@ -680,7 +680,7 @@ private:
         for (const auto& v : p.mother.vertices) {
             const std::string& name = scope.motherName(v.id);
             if (scope.isWildcard(v.id) && !onAnEdge(p.mother, v.id)) {
-                out_ << "        // the tool's helper node " << name << ", on no edge: stripped, as the tool does\n";
+                out_ << "        " << comment("the tool's helper node " + name + ", on no edge: stripped, as the tool does") << "\n";
                 continue;
             }
             if (scope.isWildcard(v.id)) {
@@ -689,7 +689,7 @@ private:
             }
             std::vector<std::string> conditions, todos;
             writeCondition(scope, v, true, conditions, todos);
-            for (const auto& t : todos) out_ << "        // " << t << "\n";
+            for (const auto& t : todos) out_ << "        " << comment(t) << "\n";
             out_ << "        " << name << ": Vertex @ " << vertexPosition(v);
             for (std::size_t i = 0; i < conditions.size(); ++i) out_ << (i ? " and " : " where ") << conditions[i];
             out_ << ";\n";
@@ -713,7 +713,7 @@ private:
             std::vector<std::string> conditions, todos;
             writeCondition(scope, e, false, conditions, todos);
             if (auto direction = directionCondition(scope, e); !direction.empty()) conditions.push_back(direction);
-            for (const auto& t : todos) out_ << "        // " << t << "\n";
+            for (const auto& t : todos) out_ << "        " << comment(t) << "\n";
             out_ << "        " << scope.motherName(e.id) << ": " << scope.endName(e, true) << " -[Edge]"
                  << (directed_ ? "-> " : "- ") << scope.endName(e, false);
             for (std::size_t i = 0; i < conditions.size(); ++i) out_ << (i ? " and " : " where ") << conditions[i];
@@ -801,7 +801,7 @@ private:
             }
             addStyle(assignments, styleAssignment(kind, *prop, MgScalar{}, t), a);
         }
-        for (const auto& t : todos) lines.push_back("// " + t);
+        for (const auto& t : todos) lines.push_back(comment(t));
         if (!isNode) {
             std::vector<ScopeWarning> edgeWarnings;
             auto head = scope.daughterEdgeHead(oi, e, directed_, edgeWarnings);
@@ -886,9 +886,9 @@ private:
         const std::set<std::string> used = usedNames(daughters.str(), lets);
         for (const auto& let : scope.lets()) {
             if (!used.count(let.name)) continue;
-            if (!let.todo.empty()) out_ << "    // " << let.todo << "\n";
+            if (!let.todo.empty()) out_ << "    " << comment(let.todo) << "\n";
             out_ << "    let " << let.name << " = " << let.text << ";";
-            if (!let.comment.empty()) out_ << "   // " << let.comment;
+            if (!let.comment.empty()) out_ << "   " << comment(let.comment);
             out_ << "\n";
         }
         for (const auto& w : scope.takeWarnings()) warn(w.line, w.message);
