@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The stages depend on each other in one direction only (docs/architecture.md):
-every quoted #include of compiler/ must name a stage this file allows for
-the including one. A new folder must be listed.
+every quoted #include of compiler/ and tools/ must name a stage this file
+allows for the including one. A new folder must be listed.
 Also: the runtime's public headers (runtime/include, installed) include no
 internal ones, and the runtime includes nothing of the compiler.
 
@@ -12,7 +12,7 @@ import re
 import sys
 
 root = sys.argv[1]
-# Folder of compiler/ -> the folders of compiler/ it may include ("g2d" is the
+# Folder of compiler/ or tools/ -> the folders it may include ("g2d" is the
 # runtime, "antlr" the parser ANTLR generates from grammar/G2d.g4).
 ALLOWED = {
     "diag": {"g2d"},
@@ -26,9 +26,12 @@ ALLOWED = {
     "emit": {"diag", "ir", "lower", "g2d"},
     "lsp": {"ast", "diag", "front", "sema", "g2d", "antlr"},   # the lexer's keyword list
     "show": {"diag", "ir", "sema", "g2d"},
+    "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "infer", "import", "g2d"},
+}
+# The tools beside the compiler (tools/) include none of its stages.
+TOOLS = {
     "infer": {"g2d"},   # the runtime's plane geometry
     "import": {"g2d"},   # the runtime's UTF-8 helpers
-    "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "infer", "import", "g2d"},
 }
 INTERNAL = set(os.listdir(os.path.join(root, "runtime", "internal", "g2d")))
 include = re.compile(r'^\s*#include "([^"]+)"', re.M)
@@ -40,22 +43,23 @@ def includes(path):
         return include.findall(f.read())
 
 
-compiler = os.path.join(root, "compiler")
-for folder in sorted(os.listdir(compiler)):
-    path = os.path.join(compiler, folder)
-    if not os.path.isdir(path):
-        continue
-    if folder not in ALLOWED:
-        failures.append("compiler/%s: a folder tests/arch/check_layers.py does not place" % folder)
-        continue
-    for name in sorted(os.listdir(path)):
-        if not name.endswith((".cpp", ".hpp")):
+for top, table in (("compiler", ALLOWED), ("tools", TOOLS)):
+    base = os.path.join(root, top)
+    for folder in sorted(os.listdir(base)):
+        path = os.path.join(base, folder)
+        if not os.path.isdir(path):
             continue
-        for inc in includes(os.path.join(path, name)):
-            checked += 1
-            stage = "antlr" if re.fullmatch(r"G2d\w+\.h", inc) else inc.split("/")[0]
-            if stage != folder and stage not in ALLOWED[folder]:
-                failures.append("compiler/%s/%s includes %s: %s may not depend on %s" % (folder, name, inc, folder, stage))
+        if folder not in table:
+            failures.append("%s/%s: a folder tests/arch/check_layers.py does not place" % (top, folder))
+            continue
+        for name in sorted(os.listdir(path)):
+            if not name.endswith((".cpp", ".hpp")):
+                continue
+            for inc in includes(os.path.join(path, name)):
+                checked += 1
+                stage = "antlr" if re.fullmatch(r"G2d\w+\.h", inc) else inc.split("/")[0]
+                if stage != folder and stage not in table[folder]:
+                    failures.append("%s/%s/%s includes %s: %s may not depend on %s" % (top, folder, name, inc, folder, stage))
 
 for part in ("include", "internal", "src"):
     base = os.path.join(root, "runtime", part)

@@ -20,6 +20,25 @@ namespace {
 
 int lineOf(const YAML::Node& node) { return node.Mark().line + 1; }
 
+// The tool reads each mapping into a Python dict (PyYAML): a key written again
+// replaces the earlier value, in the earlier one's place. Every mapping of the
+// file is kept so.
+template <class Value>
+std::string keyOf(const std::pair<std::string, Value>& entry) {
+    return entry.first;
+}
+std::string keyOf(const MgAttribute& a) { return a.key; }
+template <class Entry>
+std::string keyOf(const Entry& e) { return e.name; }
+
+template <class Entry>
+void putInDict(std::vector<Entry>& dict, Entry entry) {
+    const std::string key = keyOf(entry);
+    auto same = std::find_if(dict.begin(), dict.end(), [&](const Entry& e) { return keyOf(e) == key; });
+    if (same != dict.end()) *same = std::move(entry);
+    else dict.push_back(std::move(entry));
+}
+
 [[noreturn]] void fail(const YAML::Node& node, const std::string& message) {
     throw MgError(lineOf(node), message);
 }
@@ -76,11 +95,7 @@ std::vector<MgAttribute> attributesOf(const YAML::Node& element) {
     if (!attr || attr.IsNull()) return out;
     if (!attr.IsMap()) fail(attr, "`attr` must be a mapping");
     for (const auto& kv : attr) {
-        MgAttribute a{kv.first.Scalar(), scalarOf(kv.second), lineOf(kv.first)};
-        // A repeated key: PyYAML builds a dict, so the later value wins, in the first one's place.
-        auto same = std::find_if(out.begin(), out.end(), [&](const MgAttribute& b) { return b.key == a.key; });
-        if (same != out.end()) *same = std::move(a);
-        else out.push_back(std::move(a));
+        putInDict(out, MgAttribute{kv.first.Scalar(), scalarOf(kv.second), lineOf(kv.first)});
     }
     return out;
 }
@@ -129,7 +144,7 @@ std::vector<std::pair<std::string, MgScalar>> conditionsOf(const YAML::Node& nod
     std::vector<std::pair<std::string, MgScalar>> out;
     if (!node || node.IsNull()) return out;
     if (!node.IsMap()) fail(node, "`conditions` must be a mapping");
-    for (const auto& kv : node) out.emplace_back(kv.first.Scalar(), scalarOf(kv.second));
+    for (const auto& kv : node) putInDict(out, std::pair{kv.first.Scalar(), scalarOf(kv.second)});
     return out;
 }
 
@@ -188,8 +203,8 @@ MgOption optionOf(const YAML::Node& node, const MgGraph& mother) {
         for (const auto& kv : r) {
             std::vector<MgRequirement> names;
             if (!kv.second.IsMap()) fail(kv.second, "an attribute requirement must map names to mother ids");
-            for (const auto& nv : kv.second) names.push_back({nv.first.Scalar(), nv.second.Scalar()});
-            o.requirements.emplace_back(kv.first.Scalar(), std::move(names));
+            for (const auto& nv : kv.second) putInDict(names, MgRequirement{nv.first.Scalar(), nv.second.Scalar()});
+            putInDict(o.requirements, std::pair{kv.first.Scalar(), std::move(names)});
         }
     }
     o.conditions = conditionsOf(node["conditions"]);
@@ -227,7 +242,7 @@ MgProduction productionOf(const std::string& name, const YAML::Node& node) {
                 v.from = kv.second[0].Scalar();
                 v.to = kv.second[1].Scalar();
             } else fail(kv.second, "a vector is a mother vertex id or a pair of them");
-            p.vectors.push_back(std::move(v));
+            putInDict(p.vectors, std::move(v));
         }
     }
     p.mother = graphOf(required(node, "mother_graph", "a production"), "the mother graph");
@@ -301,14 +316,14 @@ MgGrammar readModelGenGrammar(const std::string& yamlText) {
     try {
         YAML::Node hosts = required(root, "host_graphs", "the grammar");
         if (!hosts.IsMap() || hosts.size() == 0) fail(hosts, "`host_graphs` must name at least one graph");
-        for (const auto& kv : hosts) g.hosts.emplace_back(kv.first.Scalar(), graphOf(kv.second, "a host graph"));
+        for (const auto& kv : hosts) putInDict(g.hosts, std::pair{kv.first.Scalar(), graphOf(kv.second, "a host graph")});
         YAML::Node prods = required(root, "productions", "the grammar");
         if (prods.IsMap())
-            for (const auto& kv : prods) g.productions.push_back(productionOf(kv.first.Scalar(), kv.second));
+            for (const auto& kv : prods) putInDict(g.productions, productionOf(kv.first.Scalar(), kv.second));
         else if (!prods.IsNull()) fail(prods, "`productions` must be a mapping of names to productions");
         if (YAML::Node gv = root["global_vars"]; gv && !gv.IsNull()) {
             if (!gv.IsMap()) fail(gv, "`global_vars` must be a mapping");
-            for (const auto& kv : gv) g.globals.push_back({kv.first.Scalar(), scalarOf(kv.second).text, lineOf(kv.first)});
+            for (const auto& kv : gv) putInDict(g.globals, MgGlobal{kv.first.Scalar(), scalarOf(kv.second).text, lineOf(kv.first)});
         }
         if (YAML::Node opts = root["options"]; opts && opts.IsMap())
             if (YAML::Node md = opts["max_derivations"]; md && md.IsMap()) {
@@ -316,14 +331,14 @@ MgGrammar readModelGenGrammar(const std::string& yamlText) {
                 for (const auto& kv : md) {
                     MgScalar n = scalarOf(kv.second);
                     if (!isInteger(n.text) || n.text[0] == '-') fail(kv.second, "a step limit must be a non-negative integer");
-                    g.maxDerivations.emplace_back(kv.first.Scalar(), std::atoll(n.text.c_str()));
+                    putInDict(g.maxDerivations, std::pair{kv.first.Scalar(), std::atoll(n.text.c_str())});
                 }
             }
         if (YAML::Node svg = root["svg"]; svg && svg.IsMap())
             if (YAML::Node pre = svg["preamble"]; pre && pre.IsMap())
                 if (YAML::Node filters = pre["filter"]; filters && filters.IsMap())
                     for (const auto& kv : filters)
-                        g.svgFilters.emplace_back(kv.first.Scalar(), filterElement(kv.first.Scalar(), kv.second));
+                        putInDict(g.svgFilters, std::pair{kv.first.Scalar(), filterElement(kv.first.Scalar(), kv.second)});
     } catch (const YAML::Exception& e) {
         throw MgError(e.mark.line + 1, e.msg);
     }
