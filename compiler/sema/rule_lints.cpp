@@ -1,0 +1,123 @@
+// The rule-wide checks and warnings, once the match and daughters are read.
+#include "sema/rule_checker.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <functional>
+#include <set>
+
+#include "g2d/style_store.hpp"
+#include "sema/builtins.hpp"
+#include "sema/const_fold.hpp"
+#include "sema/decl_checker.hpp"
+#include "sema/dpo_conditions.hpp"
+
+#include "sema/graph_statements.hpp"
+
+namespace g2d::sema {
+
+using ir::ElemClass;
+using ir::ElemRef;
+using ir::Type;
+using ir::TypeKind;
+
+void RuleChecker::warnAnonymousEdgesDeleted(const ir::Daughter& dg) {
+    if (d_.name.span.file != g_.mainFile) return;
+    for (int e : dg.deletedEdges) {
+        const auto& me = rule_.edges[e];
+        if (!me.name.empty() || me.kind < 0 || me.src < 0 || me.dst < 0) continue;
+        const bool srcKept = std::find(dg.deletedNodes.begin(), dg.deletedNodes.end(), me.src) == dg.deletedNodes.end();
+        const bool dstKept = std::find(dg.deletedNodes.begin(), dg.deletedNodes.end(), me.dst) == dg.deletedNodes.end();
+        if (!srcKept || !dstKept) continue;
+        const bool directed = g_.prog.kinds[me.kind].directed;
+        const std::string edge = rule_.nodes[me.src].name + " -[" + g_.prog.kinds[me.kind].name +
+                                 (directed ? "]-> " : "]- ") + rule_.nodes[me.dst].name;
+        Diagnostic d;
+        d.span = me.span;
+        d.message = "edge `" + edge + "` is deleted although both its nodes are kept (an edge without a name "
+                    "cannot be kept); to keep it, name it (`e: " + edge + "`) and write `e;` in the daughter";
+        d.notes.push_back({dg.span, "in this daughter"});
+        pendingWarnings_.push_back(std::move(d));
+    }
+}
+
+void RuleChecker::warnKeptFacesLosingCorners(const ir::Daughter& dg) {
+    if (d_.name.span.file != g_.mainFile) return;
+    for (const auto& kf : dg.keptFaces) {
+        const auto& mf = rule_.faces[static_cast<std::size_t>(kf.motherFace)];
+        for (int c : mf.corners) {
+            if (std::find(dg.deletedNodes.begin(), dg.deletedNodes.end(), c) == dg.deletedNodes.end()) continue;
+            const std::string corner = rule_.nodes[static_cast<std::size_t>(c)].name;
+            Diagnostic d;
+            d.span = kf.span;
+            d.message = "face `" + mf.name + "` is kept but its corner `" + corner + "` is deleted, and the face with it; " +
+                        "to keep the face, keep `" + corner + "` too (`" + corner + ";`)";
+            d.notes.push_back({dg.span, "in this daughter"});
+            pendingWarnings_.push_back(std::move(d));
+            break;
+        }
+    }
+}
+
+void RuleChecker::checkAutoPlacement(const ir::Daughter& dg) {
+    if (!dg.autoPlacement) return;
+    for (const auto& mn : rule_.nodes) {
+        if (mn.sketch || mn.anchorOf >= 0 || mn.kind < 0) continue;   // a wildcard without one takes no part
+        auto& d = g_.diags.error(mn.span, "automatic placement needs a sketch position for every matched node but wildcards: "
+                                          "give `" + mn.name + "` one with `@ (x, y)`");
+        d.notes.push_back({dg.span, "a new node of this daughter is placed automatically"});
+        return;
+    }
+}
+
+void RuleChecker::checkOnlyAdds() {
+    if (rule_.merge) {
+        g_.diags.error(d_.name.span, "rule `" + rule_.name + "` cannot both `merge` and `intersect` (G^3 does one or the other per command)");
+        return;
+    }
+    for (const auto& d : rule_.daughters) {
+        std::string what;
+        if (!d.deletedNodes.empty()) what = "deletes node `" + rule_.nodes[static_cast<std::size_t>(d.deletedNodes[0])].name + "`";
+        else if (!d.deletedEdges.empty()) what = "deletes an edge of the match";
+        else if (!d.deletedFaces.empty()) what = "deletes face `" + rule_.faces[static_cast<std::size_t>(d.deletedFaces[0])].name + "`";
+        else if (!d.inserts.empty()) what = "inserts a node into faces";
+        else if (!d.splits.empty()) what = "splits a face";
+        for (const auto& n : d.nodes)
+            if (what.empty() && n.motherNode >= 0 && (n.position || n.radius || !n.assigns.empty() || !n.styles.empty()))
+                what = "changes node `" + n.name + "`";
+        for (const auto& e : d.edges)
+            if (what.empty() && e.motherEdge >= 0) {
+                const auto& me = rule_.edges[static_cast<std::size_t>(e.motherEdge)];
+                const bool rewired = d.nodes[static_cast<std::size_t>(e.src)].motherNode != me.src ||
+                                     d.nodes[static_cast<std::size_t>(e.dst)].motherNode != me.dst;
+                if (rewired || !e.assigns.empty() || !e.styles.empty()) what = "changes edge `" + e.name + "`";
+            }
+        for (const auto& k : d.keptFaces)
+            if (what.empty() && (!k.assigns.empty() || !k.styles.empty()))
+                what = "changes face `" + rule_.faces[static_cast<std::size_t>(k.motherFace)].name + "`";
+        if (!what.empty()) {
+            auto& diag = g_.diags.error(d.span, "a rule with `intersect` may only add elements (an application that would intersect "
+                                                "the model is undone), but this daughter " + what);
+            diag.notes.push_back({d_.name.span, "rule `" + rule_.name + "` has `intersect`"});
+            return;
+        }
+    }
+}
+
+void RuleChecker::warnUnusedLets() {
+    for (const auto& l : locals_) finishedLocals_.push_back(l);
+    for (const auto& l : finishedLocals_)
+        if (!l.used && l.span.file == g_.mainFile && !d_.compoundMatch)
+            g_.diags.warning(l.span, "`" + l.name + "` is never used");
+    if (rule_.ordered)
+        for (const auto& n : rule_.nodes)
+            if (!n.sketch && n.anchorOf < 0) {
+                g_.diags.error(n.span, "rule `" + rule_.name + "` is `ordered`: every matched node needs a sketch "
+                                                              "position; give `" + n.name + "` one with `@ (x, y)`");
+                break;
+            }
+    if (neverMatches_ && d_.name.span.file == g_.mainFile)
+        g_.diags.warning(d_.name.span, "rule `" + rule_.name + "` can never match: one of its conditions is always false");
+}
+
+}  // namespace g2d::sema
