@@ -1,5 +1,7 @@
 #include "g2d/compound_run.hpp"
 
+#include "g2d/applied_hook.hpp"
+
 #include <array>
 
 namespace g2d::rt {
@@ -121,14 +123,10 @@ bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& inst
             for (const auto& o : owners) scopes.push_back(&instances_[o.front()].scope);
             std::vector<Capacities> after;
             Capacities from = capacities();
-            rules_.onApplied = [&] { after.push_back(capacities()); };
-            try {
+            {
+                AppliedHook hook(rules_, [&] { after.push_back(capacities()); });
                 applications += static_cast<long long>(hooks_.apply(e.index, set, step, scopes.data()));
-            } catch (...) {
-                rules_.onApplied = nullptr;
-                throw;
             }
-            rules_.onApplied = nullptr;
             std::size_t j = 0;
             for (std::size_t i = 0; i < set.size() && j < after.size(); ++i) {
                 if (!parallel_.taken(i)) continue;
