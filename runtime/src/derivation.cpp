@@ -2,7 +2,6 @@
 
 #include <numeric>
 
-#include "g2d/scheduler.hpp"
 
 namespace g2d::rt {
 
@@ -27,11 +26,6 @@ std::size_t chooseDaughter(RuleSet& rules, std::size_t rule, const RuleInfo& inf
     scratch = info.weights;
     rules.weigh(rule, m, g, scratch);
     return pickDaughter(scratch, rng);
-}
-
-void derive(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits, DerivationResult& result,
-            const StepObserver& observer, StepTracer* tracer) {
-    Scheduler(g, rules, rng, limits, result, observer, tracer).run();
 }
 
 }  // namespace g2d::rt
