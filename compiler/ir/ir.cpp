@@ -59,4 +59,19 @@ Value fromRuntime(const rt::Value& v) {
         v);
 }
 
+bool runsParallel(const Program& p, const Rule& r) {
+    const auto prio = p.priorities.find(r.priority);
+    return r.parallel || (prio != p.priorities.end() && prio->second.parallel);
+}
+
+bool inGeneration(const Program& p, const Rule& r) {
+    const auto prio = p.priorities.find(r.priority);
+    return prio != p.priorities.end() && prio->second.generation;
+}
+
+bool keptEdgeRewired(const Rule& r, const Daughter& d, const DaughterEdge& e) {
+    const PatternEdge& me = r.edges[static_cast<std::size_t>(e.motherEdge)];
+    return d.nodes[static_cast<std::size_t>(e.src)].motherNode != me.src || d.nodes[static_cast<std::size_t>(e.dst)].motherNode != me.dst;
+}
+
 }  // namespace g2d::ir

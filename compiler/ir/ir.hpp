@@ -517,4 +517,14 @@ std::string typeName(const Type& t, const Program& p);
 // The type of a node's position: vec3 in a grammar declared `space 3d;`.
 inline Type positionType(const Program& p) { return p.space3d ? kVec3Type : kVec2Type; }
 
+// Whether rule `r` steps in parallel: `parallel` on the rule or on its
+// priority (`priority P parallel;`). A generation is its own way of stepping.
+bool runsParallel(const Program& p, const Rule& r);
+// Whether the priority of rule `r` is a generation (`priority P generation;`).
+bool inGeneration(const Program& p, const Rule& r);
+
+// Whether kept edge `e` of daughter `d` (motherEdge >= 0) joins other nodes
+// than it did in the match: its rewrite reconnects it.
+bool keptEdgeRewired(const Rule& r, const Daughter& d, const DaughterEdge& e);
+
 }  // namespace g2d::ir

@@ -37,8 +37,7 @@ rt::DaughterShape daughterShape(const ir::Rule& rule, std::size_t d) {
     }
     for (const auto& e : dg.edges) {
         if (e.motherEdge >= 0) {
-            const auto& me = rule.edges[static_cast<std::size_t>(e.motherEdge)];
-            if (end[static_cast<std::size_t>(e.src)] == me.src && end[static_cast<std::size_t>(e.dst)] == me.dst) continue;
+            if (!ir::keptEdgeRewired(rule, dg, e)) continue;
             out.deletedEdges.push_back(e.motherEdge);
         }
         out.newEdges.push_back(rt::DaughterShape::NewEdge{end[static_cast<std::size_t>(e.src)], end[static_cast<std::size_t>(e.dst)], e.kind});

@@ -102,12 +102,9 @@ void describeDaughter(const ir::Rule& rule, const ir::Daughter& d, const std::ve
             changed.add(e.kind, ir::ElemClass::Edge);   // new
             continue;
         }
-        const ir::DaughterNode* src = at(d.nodes, e.src);
-        const ir::DaughterNode* dst = at(d.nodes, e.dst);
-        const bool sameEnds = src && dst && src->motherNode == mother->src && dst->motherNode == mother->dst;
         const bool retyped = e.kind != mother->kind;
         if (retyped) changed.add(e.kind, ir::ElemClass::Edge);
-        if (retyped || !sameEnds || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
+        if (retyped || ir::keptEdgeRewired(rule, d, e) || !e.assigns.empty()) changed.add(mother->kind, ir::ElemClass::Edge);
     }
     for (const auto& f : d.faces) changed.add(f.kind, ir::ElemClass::Face);   // new
     for (const auto& ins : d.inserts) {   // faces of any kind grow a corner

@@ -210,10 +210,7 @@ private:
         p_.placement = true;
     }
 
-    bool rewired(const ir::DaughterEdge& de) const {
-        const auto& me = r_.edges[de.motherEdge];
-        return d_.nodes[de.src].motherNode != me.src || d_.nodes[de.dst].motherNode != me.dst;
-    }
+    bool rewired(const ir::DaughterEdge& de) const { return ir::keptEdgeRewired(r_, d_, de); }
 
     // The order of the updates: deleted faces and edges go; new nodes come;
     // kept edges that change ends are reconnected (before their old end

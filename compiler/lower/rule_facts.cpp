@@ -16,10 +16,8 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.name = r.name;
     info.priority = r.priority;
     info.pick = r.pick;
-    // `parallel` on the rule, or on its priority (`priority P parallel;`).
-    const auto prio = prog.priorities.find(r.priority);
-    info.parallel = r.parallel || (prio != prog.priorities.end() && prio->second.parallel);
-    info.generation = prio != prog.priorities.end() && prio->second.generation;
+    info.parallel = ir::runsParallel(prog, r);
+    info.generation = ir::inGeneration(prog, r);
     for (const auto& d : r.daughters) {
         info.weights.push_back(d.weight ? *d.weight : d.weightExpr ? 0.0 : 1.0);
         const ir::Expr* expr = !d.weight && d.weightExpr ? &*d.weightExpr : nullptr;

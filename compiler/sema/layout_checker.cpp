@@ -264,8 +264,7 @@ void checkAngleLayoutUse(Globals& g, const std::vector<const ast::KindDecl*>& ki
     if (!g.prog.sequence.empty()) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with a `sequence`");
     if (g.prog.mergeAll) g.diags.error(g.prog.angleLayout->span, "`layout angles` cannot be used with `merge within`");
     for (const auto& r : g.prog.rules) {
-        if (r.parallel || (g.prog.priorities.count(r.priority) &&
-                           (g.prog.priorities.at(r.priority).parallel || g.prog.priorities.at(r.priority).generation)))
+        if (ir::runsParallel(g.prog, r) || ir::inGeneration(g.prog, r))
             g.diags.error(r.span, "rule `" + r.name + "` is parallel, but with `layout angles` each application is drawn on "
                                   "its own");
         if (r.merge || r.intersect) g.diags.error(r.span, "rule `" + r.name + "`: `merge` and `intersect` do not combine with `layout angles`");

@@ -87,10 +87,7 @@ void RuleChecker::checkOnlyAdds() {
                 what = "changes node `" + n.name + "`";
         for (const auto& e : d.edges)
             if (what.empty() && e.motherEdge >= 0) {
-                const auto& me = rule_.edges[static_cast<std::size_t>(e.motherEdge)];
-                const bool rewired = d.nodes[static_cast<std::size_t>(e.src)].motherNode != me.src ||
-                                     d.nodes[static_cast<std::size_t>(e.dst)].motherNode != me.dst;
-                if (rewired || !e.assigns.empty() || !e.styles.empty()) what = "changes edge `" + e.name + "`";
+                if (ir::keptEdgeRewired(rule_, d, e) || !e.assigns.empty() || !e.styles.empty()) what = "changes edge `" + e.name + "`";
             }
         for (const auto& k : d.keptFaces)
             if (what.empty() && (!k.assigns.empty() || !k.styles.empty()))

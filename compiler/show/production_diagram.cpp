@@ -316,7 +316,7 @@ std::string ruleHeading(const ir::Rule& r, const ir::Program& prog, const Source
     if (r.pick == ir::Pick::Oldest) h += " · pick oldest";
     if (r.pick == ir::Pick::OldestGeneration) h += " · pick oldest generation";
     if (r.ordered) h += " · ordered";
-    if (r.parallel || (config && config->parallel)) h += " · parallel";
+    if (ir::runsParallel(prog, r)) h += " · parallel";
     return h;
 }
 
