@@ -34,6 +34,17 @@ std::string defaultLiteral(PyType type) {
     }
 }
 
-std::string presenceFlag(const std::string& key) { return key.rfind("has_", 0) == 0 ? key + "_set" : "has_" + key; }
+void presenceFlags(KindCatalogue& kind, const std::set<std::string>& needFlag, const std::set<std::string>& otherNames) {
+    std::set<std::string> taken = otherNames;
+    for (const auto& a : kind.attributes) taken.insert(a.key);
+    for (auto& a : kind.attributes) {
+        if (!needFlag.count(a.key)) continue;
+        const std::string base = a.key.rfind("has_", 0) == 0 ? a.key + "_set" : "has_" + a.key;
+        std::string name = base;
+        for (int n = 2; taken.count(name); ++n) name = base + std::to_string(n);
+        taken.insert(name);
+        a.presence = name;
+    }
+}
 
 }  // namespace g2d::import

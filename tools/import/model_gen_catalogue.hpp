@@ -17,12 +17,10 @@ struct CatalogueAttribute {
     bool usedInCondition = false;
     bool setEverywhere = true; // every host element and every new element sets it
     bool conditionFalseOnDefault = false;   // e.g. attr=='Wall': an unset "" never matches
-    bool presenceFlag = false; // presenceFlag(key): the tool's condition also asks that the key exist
+    // The tool's condition also asks that the key exist: the name of the
+    // flag attribute that remembers it was set ("" for none; presenceFlags).
+    std::string presence;
 };
-
-// The flag attribute that remembers that `key` was set: `has_grown`, and for
-// a key that already says so, `has_door_set` (not `has_has_door`).
-std::string presenceFlag(const std::string& key);
 
 struct KindCatalogue {
     bool isNode = true;
@@ -40,10 +38,16 @@ struct KindCatalogue {
     }
     CatalogueAttribute& add(const std::string& key) {
         if (auto* a = find(key)) return *a;
-        attributes.push_back({key});
-        return attributes.back();
+        CatalogueAttribute& a = attributes.emplace_back();
+        a.key = key;
+        return a;
     }
 };
+
+// Names the flags of the attributes in `needFlag` (CatalogueAttribute::presence):
+// `has_grown`, for a key that already says so `has_door_set` (not
+// `has_has_door`), numbered on when the kind already has that name.
+void presenceFlags(KindCatalogue& kind, const std::set<std::string>& needFlag, const std::set<std::string>& otherNames);
 
 // Int and Float make Float, Bool and a number the number; a String and
 // anything else String (conflict set).

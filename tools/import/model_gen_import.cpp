@@ -339,6 +339,7 @@ void Importer::settleCatalogue(KindCatalogue& kind) {
         for (const auto& e : elements) if (!e.attribute(key)) return false;
         return true;
     };
+    std::set<std::string> needFlag;
     for (auto& attr : kind.attributes) {
         if (!attr.usedInCondition) continue;
         bool everywhere = hasAll(kind.isNode ? host().vertices : host().edges, attr.key);
@@ -353,8 +354,9 @@ void Importer::settleCatalogue(KindCatalogue& kind) {
             for (const auto& e : kind.isNode ? p.mother.vertices : p.mother.edges)
                 if (const auto* c = e.attribute(attr.key); c && !falseOnEmptyString(c->value.text)) allStringTests = false;
         attr.setEverywhere = everywhere;
-        attr.presenceFlag = !everywhere && !allStringTests;
+        if (!everywhere && !allStringTests) needFlag.insert(attr.key);
     }
+    presenceFlags(kind, needFlag, {"svg_tag"});
 }
 
 bool Importer::isKept(const MgOption& o, const std::string& daughterId) {

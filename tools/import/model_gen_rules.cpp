@@ -20,7 +20,7 @@ void Importer::writeCondition(const RuleScope& scope, const MgElement& e, bool i
         context.conditionElementIsNode = isNode;
         context.conditionKey = a.key;
         PyTranslation t = translatePython(a.value.text, context);
-        std::string presence = attr && attr->presenceFlag ? context.conditionElement + "." + presenceFlag(a.key) : "";
+        std::string presence = attr && !attr->presence.empty() ? context.conditionElement + "." + attr->presence : "";
         if (!t.ok) {
             warn(a.line, "the condition `" + a.key + ": " + a.value.text + "` cannot be translated (" + t.problem +
                              "); the imported rule matches without it");
@@ -152,7 +152,7 @@ void Importer::writeDaughterElement(std::size_t oi, const MgElement& e, bool isN
             if (attr->type == PyType::Bool && t.type != PyType::Bool && t.type != PyType::Unknown)
                 text = "(" + text + ") != 0";
             assignments.push_back(a.key + " = " + text);
-            if (attr->presenceFlag) assignments.push_back(presenceFlag(a.key) + " = true");
+            if (!attr->presence.empty()) assignments.push_back(attr->presence + " = true");
             continue;
         }
         auto prop = styleOf(a.key);

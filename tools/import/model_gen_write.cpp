@@ -75,8 +75,8 @@ void Importer::writeKind(const KindCatalogue& kind) {
         out_ << "    " << a.key << ": " << g2dTypeName(a.type) << " = " << (style ? "-1" : defaultLiteral(a.type)) << ";";
         if (style) out_ << "   // the tool's ." << a.key << ", read by rules; -1: not set";
         out_ << "\n";
-        if (a.presenceFlag)
-            out_ << "    " << presenceFlag(a.key) << ": bool = false;   // the tool's conditions on `" << a.key
+        if (!a.presence.empty())
+            out_ << "    " << a.presence << ": bool = false;   // the tool's conditions on `" << a.key
                  << "` also asked that it be set\n";
     }
     if (kind.tagVaries) out_ << "    svg_tag: string = \"\";   // the tool's .svg_tag: \"\" is its default drawing\n";
@@ -93,7 +93,7 @@ std::optional<std::string> Importer::hostAssignment(const KindCatalogue& kind, c
     if (isUserKey(a.key)) {
         if (!keptKey(a.key)) return std::nullopt;
         const auto* attr = kind.find(a.key);
-        if (attr->presenceFlag) extra.push_back(presenceFlag(a.key) + " = true");
+        if (!attr->presence.empty()) extra.push_back(attr->presence + " = true");
         const auto value = literalAs(a.value, attr->type);
         if (!value) {
             warn(a.line, "`" + a.key + ": " + a.value.text + "` is past g2d's 64-bit integers: left out");
