@@ -34,17 +34,24 @@ std::string defaultLiteral(PyType type) {
     }
 }
 
-void presenceFlags(KindCatalogue& kind, const std::set<std::string>& needFlag, const std::set<std::string>& otherNames) {
-    std::set<std::string> taken = otherNames;
+namespace {
+
+// `base`, or `base2`, `base3`, … : the first name not in `taken`, which then takes it.
+std::string freeName(const std::string& base, std::set<std::string>& taken) {
+    std::string name = base;
+    for (int n = 2; taken.count(name); ++n) name = base + std::to_string(n);
+    taken.insert(name);
+    return name;
+}
+
+}  // namespace
+
+void nameAddedAttributes(KindCatalogue& kind, const std::set<std::string>& needFlag) {
+    std::set<std::string> taken;
     for (const auto& a : kind.attributes) taken.insert(a.key);
-    for (auto& a : kind.attributes) {
-        if (!needFlag.count(a.key)) continue;
-        const std::string base = a.key.rfind("has_", 0) == 0 ? a.key + "_set" : "has_" + a.key;
-        std::string name = base;
-        for (int n = 2; taken.count(name); ++n) name = base + std::to_string(n);
-        taken.insert(name);
-        a.presence = name;
-    }
+    if (kind.tagVaries) kind.tagAttribute = freeName("svg_tag", taken);
+    for (auto& a : kind.attributes)
+        if (needFlag.count(a.key)) a.presence = freeName(a.key.rfind("has_", 0) == 0 ? a.key + "_set" : "has_" + a.key, taken);
 }
 
 }  // namespace g2d::import

@@ -26,7 +26,10 @@ struct KindCatalogue {
     bool isNode = true;
     std::vector<CatalogueAttribute> attributes;
     std::set<std::string> readStyles;   // style properties read back (kept as svg_<prop>)
-    bool tagVaries = false;             // some element is drawn as a rect, path, … (svg_tag)
+    bool tagVaries = false;             // some element is drawn as a rect, path, … (tagAttribute)
+    // The attribute holding the tool's .svg_tag when it varies: `svg_tag`,
+    // numbered on when an element carries a key of that name.
+    std::string tagAttribute = "svg_tag";
 
     CatalogueAttribute* find(const std::string& key) {
         for (auto& a : attributes) if (a.key == key) return &a;
@@ -44,10 +47,11 @@ struct KindCatalogue {
     }
 };
 
-// Names the flags of the attributes in `needFlag` (CatalogueAttribute::presence):
-// `has_grown`, for a key that already says so `has_door_set` (not
-// `has_has_door`), numbered on when the kind already has that name.
-void presenceFlags(KindCatalogue& kind, const std::set<std::string>& needFlag, const std::set<std::string>& otherNames);
+// Names the attributes the importer adds to the tool's keys, none equal to a
+// key: the tag attribute, and the flags of the attributes in `needFlag`
+// (CatalogueAttribute::presence): `has_grown`, for a key that already says
+// so `has_door_set` (not `has_has_door`).
+void nameAddedAttributes(KindCatalogue& kind, const std::set<std::string>& needFlag);
 
 // Int and Float make Float, Bool and a number the number; a String and
 // anything else String (conflict set).

@@ -356,7 +356,7 @@ void Importer::settleCatalogue(KindCatalogue& kind) {
         attr.setEverywhere = everywhere;
         if (!everywhere && !allStringTests) needFlag.insert(attr.key);
     }
-    presenceFlags(kind, needFlag, {"svg_tag"});
+    nameAddedAttributes(kind, needFlag);
 }
 
 bool Importer::isKept(const MgOption& o, const std::string& daughterId) {

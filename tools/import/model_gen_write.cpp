@@ -55,13 +55,14 @@ void Importer::writeStyle(const KindCatalogue& kind) {
         out_ << "        stroke_width = " << readOr("stroke_width", "0.1") << ";   // 1 mm\n";
         if (node) out_ << "        fill = \"none\";\n";
     } else {
+        const std::string& tag = kind.tagAttribute;
         // The tool's defaults differ by tag: none given is a 0.4 circle (or a
         // line) with a 1 mm stroke; a 'circle' is r 1, 0.1 mm; others are SVG's.
-        out_ << "        tag = svg_tag == \"\" ? " << plain << " : svg_tag;\n";
-        if (node) out_ << "        r = " << readOr("r", "(svg_tag == \"\" ? 0.4 : 1)") << ";\n";
-        out_ << "        stroke = svg_tag == \"\" or svg_tag == \"circle\" or svg_tag == \"line\" ? \"black\" : \"none\";\n";
-        out_ << "        stroke_width = " << readOr("stroke_width", "(svg_tag == \"circle\" ? 0.01 : 0.1)") << ";\n";
-        out_ << "        fill = svg_tag == \"\" or svg_tag == \"circle\" ? \"none\" : \"black\";\n";
+        out_ << "        tag = " << tag << " == \"\" ? " << plain << " : " << tag << ";\n";
+        if (node) out_ << "        r = " << readOr("r", "(" + tag + " == \"\" ? 0.4 : 1)") << ";\n";
+        out_ << "        stroke = " << tag << " == \"\" or " << tag << " == \"circle\" or " << tag << " == \"line\" ? \"black\" : \"none\";\n";
+        out_ << "        stroke_width = " << readOr("stroke_width", "(" + tag + " == \"circle\" ? 0.01 : 0.1)") << ";\n";
+        out_ << "        fill = " << tag << " == \"\" or " << tag << " == \"circle\" ? \"none\" : \"black\";\n";
     }
     for (const auto& prop : kind.readStyles)
         if (prop != "r" && prop != "stroke_width") out_ << "        " << prop << " = svg_" << prop << ";\n";
@@ -79,7 +80,7 @@ void Importer::writeKind(const KindCatalogue& kind) {
             out_ << "    " << a.presence << ": bool = false;   // the tool's conditions on `" << a.key
                  << "` also asked that it be set\n";
     }
-    if (kind.tagVaries) out_ << "    svg_tag: string = \"\";   // the tool's .svg_tag: \"\" is its default drawing\n";
+    if (kind.tagVaries) out_ << "    " << kind.tagAttribute << ": string = \"\";   // the tool's .svg_tag: \"\" is its default drawing\n";
     writeStyle(kind);
     out_ << "}\n\n";
 }
@@ -138,7 +139,7 @@ std::string Importer::styleValue(const KindCatalogue& kind, const std::string& p
                        bool& wroteText) {
     if (prop == "tag") {
         const std::string tag = tagOf(literal.kind == MgScalar::Kind::Null ? "none" : literal.text);
-        if (kind.tagVaries) return "svg_tag = " + quoted(tag == "none" ? "none" : tag);
+        if (kind.tagVaries) return kind.tagAttribute + " = " + quoted(tag == "none" ? "none" : tag);
         return "style.tag = " + quoted(tag);
     }
     if (expression) {
