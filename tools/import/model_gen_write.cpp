@@ -2,9 +2,26 @@
 // attributes and styles, and the axiom (the first host graph).
 #include "import/model_gen_importer.hpp"
 
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 
 namespace g2d::import::detail {
+
+namespace {
+
+// A whole decimal integer of 64 bits (an optional sign), as Python's int() reads a priority.
+std::optional<long long> integerKey(const std::string& key) {
+    if (key.empty()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const long long v = std::strtoll(key.c_str(), &end, 10);
+    if (errno != 0 || end != key.c_str() + key.size() || std::isspace(static_cast<unsigned char>(key[0]))) return std::nullopt;
+    return v;
+}
+
+}  // namespace
 
 void Importer::writeHeader(const std::string& body) {
     out_ << comment("Imported by `g2d import` from " + file_ + ",") << "\n"
@@ -18,8 +35,16 @@ void Importer::writeHeader(const std::string& body) {
     if (hasAll && all > 0) out_ << "limit " << all << ";\n";
     else if (hasAll) out_ << "// The tool's `all: 0`: no global limit (g2d's default stops a runaway).\n";
     else out_ << "limit 500;   // the original tool's default global limit\n";
-    for (const auto& [key, n] : g_.maxDerivations)
-        if (key != "all" && n > 0) out_ << "priority " << key << " limit " << n << ";\n";
+    for (const auto& [key, n] : g_.maxDerivations) {
+        if (key == "all" || n <= 0) continue;
+        // The tool looks its limits up by priority: a key that is no integer never applies.
+        const std::optional<long long> priority = integerKey(key);
+        if (!priority) {
+            warn(g_.maxDerivationsLine, "the step limit for `" + key + "` names no priority (the tool's are integers): left out");
+            continue;
+        }
+        out_ << "priority " << *priority << " limit " << n << ";\n";
+    }
     for (const auto& [id, filter] : g_.svgFilters) out_ << "defs " << quoted(filter) << ";\n";
     out_ << "\n";
     std::vector<std::pair<std::string, std::string>> declared;
