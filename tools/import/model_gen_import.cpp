@@ -161,7 +161,7 @@ std::optional<std::string> Importer::styleOf(std::string_view key) const {
 }
 
 bool Importer::keptKey(const std::string& key) const {
-    return isUserKey(key) && isIdentifier(key) && !notAttributes_.count(key);
+    return isUserKey(key) && isIdentifier(key) && !notAttributes_.count(key) && !styleAttributes_.count(key);
 }
 
 void Importer::noteRefusedKey(const MgAttribute& a) {
@@ -169,6 +169,11 @@ void Importer::noteRefusedKey(const MgAttribute& a) {
     if (styleKey && !styleOf(a.key) && refusedKeys_.insert(a.key).second)
         warn(a.line, "`" + a.key + "` names no style property g2d can write: it is left out");
     if (!isUserKey(a.key) || keptKey(a.key) || !refusedKeys_.insert(a.key).second) return;
+    if (styleAttributes_.count(a.key)) {
+        warn(a.line, "the attribute key `" + a.key + "` is the name the tool's ." + a.key + " is kept under, which rules read: "
+                     "the key is left out");
+        return;
+    }
     warn(a.line, "the attribute key `" + a.key + "` " +
                      (isIdentifier(a.key) ? "is a name g2d reserves" : "is not a g2d name") + ": it is left out");
 }
@@ -181,7 +186,30 @@ void Importer::noteLiteral(KindCatalogue& kind, const MgAttribute& a) {
     attr.type = mergeTypes(attr.type, literalType(a.value), conflict);
 }
 
+std::set<std::string> Importer::stylesReadBack() const {
+    std::set<std::string> props;
+    for (const auto& p : g_.productions)
+        for (const auto& o : p.options)
+            for (bool isNode : {true, false})
+                for (const auto& e : isNode ? o.daughter.vertices : o.daughter.edges)
+                    for (const auto& a : e.attributes)
+                        for (const char* form : {"attr['.svg_", "attr[\".svg_"})
+                            for (std::size_t at = a.value.text.find(form); at != std::string::npos;
+                                 at = a.value.text.find(form, at + 1)) {
+                                const std::size_t start = at + std::string(form).size();
+                                const std::size_t end = a.value.text.find_first_of("'\"", start);
+                                if (end == std::string::npos) continue;
+                                const std::string prop = a.value.text.substr(start, end - start);
+                                if (styleOf(".svg_" + prop)) props.insert(prop);   // else no property g2d can name
+                            }
+    return props;
+}
+
 void Importer::collectKeys() {
+    // A style the rules read back is kept as attribute svg_<prop>: a key of
+    // the tool's elements with that name cannot be kept beside it.
+    for (const auto& prop : stylesReadBack())
+        if (setsStyle(true, prop) || setsStyle(false, prop)) styleAttributes_.insert("svg_" + prop);
     for (bool isNode : {true, false}) {
         const auto& elements = isNode ? host().vertices : host().edges;
         for (const auto& e : elements) for (const auto& a : e.attributes) noteLiteral(kindOf(isNode), a);
@@ -207,20 +235,11 @@ void Importer::collectKeys() {
                         if (keptKey(a.key)) kindOf(isNode).add(a.key);
                         if (auto prop = styleOf(a.key); prop && *prop == "tag" && tagOf(a.value.text) != "none")
                             kindOf(isNode).tagVaries = true;
-                        for (const char* form : {"attr['.svg_", "attr[\".svg_"}) {
-                            for (std::size_t at = a.value.text.find(form); at != std::string::npos;
-                                 at = a.value.text.find(form, at + 1)) {
-                                const std::size_t start = at + std::string(form).size();
-                                const std::size_t end = a.value.text.find_first_of("'\"", start);
-                                if (end == std::string::npos) continue;
-                                const std::string prop = a.value.text.substr(start, end - start);
-                                // Which kind sets it decides where it is kept.
-                                if (!styleOf(".svg_" + prop)) continue;   // no property g2d can name
-                                for (bool k : {true, false}) kindOf(k).readStyles.insert(prop);
-                            }
-                        }
                     }
     }
+    // Which kind sets a style read back decides where it is kept.
+    for (const auto& prop : stylesReadBack())
+        for (bool k : {true, false}) kindOf(k).readStyles.insert(prop);
     for (bool isNode : {true, false})
         for (const auto& e : isNode ? host().vertices : host().edges)
             for (const auto& a : e.attributes)

@@ -83,9 +83,12 @@ private:
     bool keptKey(const std::string& key) const;
     void noteRefusedKey(const MgAttribute& a);
     std::set<std::string> refusedKeys_;
+    std::set<std::string> styleAttributes_;   // svg_<prop> of each style the rules read back (kept as an attribute)
 
     void noteLiteral(KindCatalogue& kind, const MgAttribute& a);
 
+    // The style properties daughters read back (`X.attr['.svg_stroke_width']`) that g2d can name.
+    std::set<std::string> stylesReadBack() const;
     void collectKeys();
 
     bool setsStyle(bool isNode, const std::string& prop) const;
