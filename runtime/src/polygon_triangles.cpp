@@ -4,16 +4,17 @@
 #include <cmath>
 #include <cstddef>
 
+#include "g2d/plane_geometry.hpp"
+
 namespace g2d::rt {
 
 namespace {
 
-double cross(vec2 a, vec2 b, vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
 bool same(vec2 a, vec2 b) { return a.x == b.x && a.y == b.y; }
 
 // p in triangle abc or on its sides, whichever way round it runs.
 bool inTriangle(vec2 a, vec2 b, vec2 c, vec2 p) {
-    const double d1 = cross(a, b, p), d2 = cross(b, c, p), d3 = cross(c, a, p);
+    const double d1 = orient2(a, b, p), d2 = orient2(b, c, p), d3 = orient2(c, a, p);
     return !((d1 < 0 || d2 < 0 || d3 < 0) && (d1 > 0 || d2 > 0 || d3 > 0));
 }
 
@@ -129,7 +130,7 @@ private:
         n = start;
         do {
             const vec2 r = pos(n);
-            if (n != best && r.x > m.x && cross(pos(prev(n)), r, pos(next(n))) < 0 && inTriangle(m, I, P, r)) {
+            if (n != best && r.x > m.x && orient2(pos(prev(n)), r, pos(next(n))) < 0 && inTriangle(m, I, P, r)) {
                 const double t = std::abs(r.y - m.y) / (r.x - m.x);
                 if (t < bestTan || (t == bestTan && r.x < pos(best).x)) bestTan = t, best = n;
             }
@@ -147,8 +148,8 @@ private:
         do {
             if (same(pos(n), pos(p))) {
                 const vec2 a = pos(prev(n)), b = pos(n), c = pos(next(n));
-                const bool convex = cross(a, b, c) > 0;
-                const bool left1 = cross(a, b, m) >= 0, left2 = cross(b, c, m) >= 0;
+                const bool convex = orient2(a, b, c) > 0;
+                const bool left1 = orient2(a, b, m) >= 0, left2 = orient2(b, c, m) >= 0;
                 if (convex ? left1 && left2 : left1 || left2) return n;
             }
             n = next(n);
@@ -159,7 +160,7 @@ private:
     bool isEar(int b) const {
         const int a = prev(b), c = next(b);
         const vec2 A = pos(a), B = pos(b), C = pos(c);
-        if (!(cross(A, B, C) > 0)) return false;
+        if (!(orient2(A, B, C) > 0)) return false;
         for (int p = next(c); p != a; p = next(p)) {
             const vec2 P = pos(p);
             if (!same(P, A) && !same(P, B) && !same(P, C) && inTriangle(A, B, C, P)) return false;
@@ -175,7 +176,7 @@ private:
         do {
             const vec2 a = pos(prev(n)), b = pos(n), c = pos(next(n));
             const double lengths = std::hypot(b.x - a.x, b.y - a.y) * std::hypot(c.x - b.x, c.y - b.y);
-            const double turn = lengths > 0 ? std::abs(cross(a, b, c)) / lengths : 0;
+            const double turn = lengths > 0 ? std::abs(orient2(a, b, c)) / lengths : 0;
             if (turn <= least) least = turn, flattest = n;
             n = next(n);
         } while (n != start && least > 0);
