@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace g2d::interp {
 
 using rt::EdgeId;
