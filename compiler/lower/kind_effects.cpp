@@ -1,5 +1,7 @@
 #include "lower/kind_effects.hpp"
 
+#include "lower/fact_reads.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -25,34 +27,6 @@ private:
     const std::vector<ir::Kind>& kinds_;
     std::set<int> set_;
 };
-
-bool readsDegree(const ir::Expr& e) {
-    if (e.op == ir::ExprOp::Fact &&
-        (e.fact == ir::ElemFact::Degree || e.fact == ir::ElemFact::InDegree || e.fact == ir::ElemFact::OutDegree))
-        return true;
-    return std::any_of(e.args.begin(), e.args.end(), readsDegree);
-}
-
-bool anyReadsDegree(const std::vector<ir::Condition>& conditions) {
-    return std::any_of(conditions.begin(), conditions.end(), [](const ir::Condition& c) { return readsDegree(c.expr); });
-}
-
-bool readsFact(const ir::Expr& e, ir::ElemFact fact) {
-    if (e.op == ir::ExprOp::Fact && e.fact == fact) return true;
-    return std::any_of(e.args.begin(), e.args.end(), [&](const ir::Expr& a) { return readsFact(a, fact); });
-}
-
-// Facts counting faces of any kind around an element.
-bool readsFaceCounts(const ir::Expr& e) {
-    if (e.op == ir::ExprOp::Fact &&
-        (e.fact == ir::ElemFact::Faces || e.fact == ir::ElemFact::Neighbours || e.fact == ir::ElemFact::Touching))
-        return true;
-    return std::any_of(e.args.begin(), e.args.end(), readsFaceCounts);
-}
-
-bool anyReadsFaceCounts(const std::vector<ir::Condition>& conditions) {
-    return std::any_of(conditions.begin(), conditions.end(), [](const ir::Condition& c) { return readsFaceCounts(c.expr); });
-}
 
 template <class T>
 const T* at(const std::vector<T>& v, int i) {
@@ -139,7 +113,7 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
     for (const auto& n : rule.nodes) read.add(n.kind, ir::ElemClass::Node);
     for (const auto& e : rule.edges) read.add(e.kind, ir::ElemClass::Edge);
     for (const auto& f : rule.faces) read.add(f.kind, ir::ElemClass::Face);
-    out.readsDegrees = anyReadsDegree(rule.conditions);
+    std::uint8_t reads = factReads(rule.conditions);
     std::set<long long> values;
     const auto matchKind = [&](int i) { return at(rule.nodes, i) ? at(rule.nodes, i)->kind : -1; };
     for (const auto& c : rule.conditions) readValues(c.expr, matchKind, rule, nullptr, values);
@@ -147,7 +121,7 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
         for (const auto& n : nac.nodes) read.add(n.kind, ir::ElemClass::Node);
         for (const auto& e : nac.edges) read.add(e.kind, ir::ElemClass::Edge);
         for (const auto& f : nac.faces) read.add(f.kind, ir::ElemClass::Face);
-        out.readsDegrees = out.readsDegrees || anyReadsDegree(nac.conditions);
+        reads |= factReads(nac.conditions);
         const auto nacKind = [&](int i) {
             return i < nac.outerNodes ? matchKind(i) : at(nac.nodes, i - nac.outerNodes) ? at(nac.nodes, i - nac.outerNodes)->kind : -1;
         };
@@ -155,23 +129,13 @@ KindEffects kindEffects(const ir::Rule& rule, const std::vector<ir::Kind>& kinds
     }
     // A face's geometry moves with any corner, of any node kind, and
     // removing a node removes its faces; face counts count every face kind.
-    bool facesCounted = anyReadsFaceCounts(rule.conditions), facePatterns = !rule.faces.empty();
-    for (const auto& nac : rule.nacs) {
-        facesCounted = facesCounted || anyReadsFaceCounts(nac.conditions);
-        facePatterns = facePatterns || !nac.faces.empty();
-    }
-    if (facePatterns || facesCounted) {
-        read.add(-1, ir::ElemClass::Node);
-        out.readsDegrees = true;
-    }
+    bool facePatterns = !rule.faces.empty();
+    for (const auto& nac : rule.nacs) facePatterns = facePatterns || !nac.faces.empty();
+    const bool facesCounted = reads & (rt::kReadsFacesAt | rt::kReadsFaceSides);
+    out.readsDegrees = (reads & rt::kReadsEdgesAt) || facePatterns || facesCounted;
+    if (facePatterns || facesCounted) read.add(-1, ir::ElemClass::Node);
     if (facesCounted) read.add(-1, ir::ElemClass::Face);
-    auto neighbours = [](const std::vector<ir::Condition>& cs) {
-        return std::any_of(cs.begin(), cs.end(), [](const ir::Condition& c) {
-            return readsFact(c.expr, ir::ElemFact::Neighbours) || readsFact(c.expr, ir::ElemFact::Touching);
-        });
-    };
-    out.readsNeighbours = neighbours(rule.conditions);
-    for (const auto& nac : rule.nacs) out.readsNeighbours = out.readsNeighbours || neighbours(nac.conditions);
+    out.readsNeighbours = reads & rt::kReadsFaceSides;
     out.readValues.assign(values.begin(), values.end());
     // A degree counts the edges of every kind.
     if (out.readsDegrees) read.add(-1, ir::ElemClass::Edge);

@@ -1,5 +1,7 @@
 #include "lower/near_negative.hpp"
 
+#include "lower/fact_reads.hpp"
+
 #include <algorithm>
 #include <vector>
 
@@ -18,19 +20,11 @@ bool readsNode(const ir::Expr& e, int node) {
 // Whether `e` reads something of node `node` that its position, attributes,
 // age, generation, id and radius do not show (what the spatial index does not follow).
 bool readsIncidence(const ir::Expr& e, int node) {
-    if (e.op == ir::ExprOp::Fact && e.elem.cls == ir::ElemClass::Node && e.elem.index == node)
-        switch (e.fact) {
-        case ir::ElemFact::Pos:
-        case ir::ElemFact::Pos3:
-        case ir::ElemFact::Radius:
-        case ir::ElemFact::Age:
-        case ir::ElemFact::Generation:
-        case ir::ElemFact::Id: break;
-        default: return true;
-        }
-    for (const auto& a : e.args)
-        if (readsIncidence(a, node)) return true;
-    return false;
+    bool reads = false;
+    eachFact(e, [&](const ir::Expr& f, std::uint8_t factReads) {
+        reads = reads || (f.elem.cls == ir::ElemClass::Node && f.elem.index == node && (factReads & kReadsOthers));
+    });
+    return reads;
 }
 
 bool isPosOf(const ir::Expr& e, int node) {

@@ -1,5 +1,7 @@
 #include "lower/search_plan.hpp"
 
+#include "lower/fact_reads.hpp"
+
 #include "lower/near_negative.hpp"
 
 #include <algorithm>
@@ -238,16 +240,17 @@ int repairRadius(const ir::Rule& rule) {
 
 namespace {
 
-// Degrees read every edge at a node; an edge's degree reads every edge at its ends.
-void markDegreeReads(const ir::Expr& e, const ir::Rule& rule, std::vector<bool>& reads) {
+// Facts reading the edges at a node (degrees) read every edge there; an
+// edge's read every edge at its ends.
+void markDegreeReads(const ir::Expr& expr, const ir::Rule& rule, std::vector<bool>& reads) {
     const int matchNodes = static_cast<int>(rule.nodes.size());
-    const bool degree = e.op == ir::ExprOp::Fact &&
-                        (e.fact == ir::ElemFact::Degree || e.fact == ir::ElemFact::InDegree || e.fact == ir::ElemFact::OutDegree);
-    if (degree && e.elem.cls == ir::ElemClass::Node && e.elem.index < matchNodes) reads[static_cast<std::size_t>(e.elem.index)] = true;
-    if (degree && e.elem.cls == ir::ElemClass::Edge && e.elem.index < static_cast<int>(rule.edges.size()))
-        for (int end : {rule.edges[static_cast<std::size_t>(e.elem.index)].src, rule.edges[static_cast<std::size_t>(e.elem.index)].dst})
-            if (end >= 0 && end < matchNodes) reads[static_cast<std::size_t>(end)] = true;
-    for (const auto& a : e.args) markDegreeReads(a, rule, reads);
+    eachFact(expr, [&](const ir::Expr& e, std::uint8_t factReads) {
+        if (!(factReads & rt::kReadsEdgesAt)) return;
+        if (e.elem.cls == ir::ElemClass::Node && e.elem.index < matchNodes) reads[static_cast<std::size_t>(e.elem.index)] = true;
+        if (e.elem.cls == ir::ElemClass::Edge && e.elem.index < static_cast<int>(rule.edges.size()))
+            for (int end : {rule.edges[static_cast<std::size_t>(e.elem.index)].src, rule.edges[static_cast<std::size_t>(e.elem.index)].dst})
+                if (end >= 0 && end < matchNodes) reads[static_cast<std::size_t>(end)] = true;
+    });
 }
 
 }  // namespace

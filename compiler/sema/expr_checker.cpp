@@ -1,6 +1,7 @@
 #include "sema/expr_checker.hpp"
 
 #include "g2d/drawing_cost.hpp"
+#include "g2d/element_facts.hpp"
 
 #include "sema/element_facts.hpp"
 
@@ -180,7 +181,7 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
             Expr r;
             r.op = ExprOp::SelfFact;
             r.fact = f->fact;
-            if (f->fact == ir::ElemFact::Generation) g_.prog.tracksGenerations = true;
+            if (rt::elementFactEntry(f->fact).reads & rt::kReadsGenerations) g_.prog.tracksGenerations = true;
             r.type = ir::Type::of(f->type);
             r.span = e.span;
             return r;
@@ -385,7 +386,7 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         r.op = ExprOp::Fact;
         r.elem = b.ref;
         r.fact = f->fact;
-        if (f->fact == ir::ElemFact::Generation) g_.prog.tracksGenerations = true;
+        if (rt::elementFactEntry(f->fact).reads & rt::kReadsGenerations) g_.prog.tracksGenerations = true;
         r.type = ir::Type::of(f->type);
         r.span = e.span;
         if (env.deps) env.deps->insert(b.ref);

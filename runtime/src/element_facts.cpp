@@ -5,8 +5,8 @@ namespace g2d::rt {
 namespace {
 
 const ElementFactEntry kFacts[] = {
-#define G2D_FACT_ENTRY(id, fn, name, type, typeName, classes, spaces, meaning) \
-    {ElemFact::id, #fn, #name, typeName, classes, spaces, meaning},
+#define G2D_FACT_ENTRY(id, fn, name, type, typeName, classes, spaces, reads, meaning) \
+    {ElemFact::id, #fn, #name, typeName, classes, spaces, reads, meaning},
     G2D_ELEMENT_FACTS(G2D_FACT_ENTRY)
 #undef G2D_FACT_ENTRY
 };
@@ -22,7 +22,7 @@ const ElementFactEntry& elementFactEntry(ElemFact id) { return kFacts[static_cas
 
 Value elementFact(const Graph& g, ElemClass cls, std::uint32_t id, ElemFact f) {
     switch (f) {
-#define G2D_FACT_CASE(fid, fn, name, type, typeName, classes, spaces, meaning) \
+#define G2D_FACT_CASE(fid, fn, name, type, typeName, classes, spaces, reads, meaning) \
     case ElemFact::fid: return Value{fact::fn(g, cls, id)};
         G2D_ELEMENT_FACTS(G2D_FACT_CASE)
 #undef G2D_FACT_CASE

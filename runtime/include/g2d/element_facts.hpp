@@ -23,56 +23,68 @@ constexpr std::uint8_t classBit(ElemClass c) {
 // A 2D and a 3D fact may share a name (`pos` is a vec2 or a vec3).
 inline constexpr std::uint8_t kIn2d = 1, kIn3d = 2, kInBoth = 3;
 
-// X(Id, function, name, C++ type, type name, classes, spaces, meaning)
-#define G2D_ELEMENT_FACTS(X)                                                                                         \
-    X(Pos, pos, pos, vec2, "vec2", kOnNodes, kIn2d, "the node's position")                                          \
-    X(Pos3, pos3, pos, vec3, "vec3", kOnNodes, kIn3d, "the node's position")                                        \
-    X(Radius, radius, radius, double, "float", kOnNodes, kIn3d,                                                      \
-      "the node's radius (G^3: the thickness of its edges; 0 unless set)")                                           \
-    X(Age, age, age, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth,                                      \
-      "the step that created the element (0: the axiom)")                                                            \
-    X(Generation, generation, generation, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth,                 \
+// What can change a fact besides a write to the element itself (its
+// position, radius or kind): a bit each. The lowering reads these to know
+// which changes a rule that reads the fact must see (lower/fact_reads.hpp);
+// a new fact declares them here and nowhere else.
+inline constexpr std::uint8_t kReadsOwn = 0;           // only the element's own record
+inline constexpr std::uint8_t kReadsEnds = 1;          // the positions of an edge's ends or a face's corners (any kind)
+inline constexpr std::uint8_t kReadsEdgesAt = 2;       // the edges at a node (an edge: at its ends), of any kind
+inline constexpr std::uint8_t kReadsFacesAt = 4;       // the faces at a node or along an edge, of any kind
+inline constexpr std::uint8_t kReadsFaceSides = 8;     // the faces sharing a side or corner with a face
+inline constexpr std::uint8_t kReadsCorners = 16;      // a face's corner list
+inline constexpr std::uint8_t kReadsGenerations = 32;  // generation stamps, which a run keeps only when read
+
+// X(Id, function, name, C++ type, type name, classes, spaces, reads, meaning)
+#define G2D_ELEMENT_FACTS(X)                                                                                                                \
+    X(Pos, pos, pos, vec2, "vec2", kOnNodes, kIn2d, kReadsOwn, "the node's position")                                                       \
+    X(Pos3, pos3, pos, vec3, "vec3", kOnNodes, kIn3d, kReadsOwn, "the node's position")                                                     \
+    X(Radius, radius, radius, double, "float", kOnNodes, kIn3d, kReadsOwn,                                                                  \
+      "the node's radius (G^3: the thickness of its edges; 0 unless set)")                                                                  \
+    X(Age, age, age, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, kReadsOwn,                                                  \
+      "the step that created the element (0: the axiom)")                                                                                   \
+    X(Generation, generation, generation, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, kReadsGenerations,                     \
       "one more than the highest generation among the elements matched by the application that created it (0: the axiom; the thesis tool's .generation)") \
-    X(Id, id, id, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, "the element's id (never reused)")     \
-    X(Degree, degree, degree, long long, "int", kOnNodes | kOnEdges, kInBoth,                                        \
-      "the node's edges, both directions; for an edge, the other edges at its ends (G^3's neighbouring edges)")      \
-    X(InDegree, in_degree, in_degree, long long, "int", kOnNodes, kInBoth, "the node's incoming edges")             \
-    X(OutDegree, out_degree, out_degree, long long, "int", kOnNodes, kInBoth, "the node's outgoing edges")          \
-    X(Faces, faces, faces, long long, "int", kOnNodes | kOnEdges, kInBoth,                                           \
-      "the faces the node is a corner of; for an edge, the faces with a side between its ends")                      \
-    X(Length, length, length, double, "float", kOnEdges, kIn2d, "the distance between the edge's ends")             \
-    X(Length3, length3, length, double, "float", kOnEdges, kIn3d, "the distance between the edge's ends")           \
-    X(Direction, direction, direction, vec2, "vec2", kOnEdges, kIn2d,                                                \
-      "the unit vector from the edge's source to its target")                                                        \
-    X(Direction3, direction3, direction, vec3, "vec3", kOnEdges, kIn3d,                                              \
-      "the unit vector from the edge's source to its target")                                                        \
-    X(Corners, corners, corners, long long, "int", kOnFaces, kInBoth, "the face's corner count")                    \
-    X(Area, area, area, double, "float", kOnFaces, kIn2d, "the face's area (by its corners' positions)")            \
-    X(Area3, area3, area, double, "float", kOnFaces, kIn3d,                                                          \
-      "the face's area: the sum of its triangles (G^3: shortest diagonals first)")                                    \
-    X(SignedArea, signed_area, signed_area, double, "float", kOnFaces, kIn2d,                                        \
-      "the face's area, positive when its corners run counter-clockwise (y up)")                                     \
-    X(Perimeter, perimeter, perimeter, double, "float", kOnFaces, kIn2d, "the face's perimeter")                    \
-    X(Perimeter3, perimeter3, perimeter, double, "float", kOnFaces, kIn3d, "the face's perimeter")                  \
-    X(Centroid, centroid, centroid, vec2, "vec2", kOnFaces, kIn2d, "the mean of the face's corners (as G^3 defines it)") \
-    X(Centroid3, centroid3, centroid, vec3, "vec3", kOnFaces, kIn3d,                                                 \
-      "the mean of the face's corners (as G^3 defines it)")                                                          \
-    X(Normal, normal, normal, vec3, "vec3", kOnFaces, kIn3d,                                                         \
-      "the face's unit normal (Newell's; counter-clockwise corners seen from its tip)")                               \
-    X(Neighbours, neighbours, neighbours, long long, "int", kOnFaces, kInBoth, "the faces sharing a side with the face") \
-    X(Touching, touching, touching, long long, "int", kOnFaces, kInBoth,                                               \
-      "the faces sharing at least a corner with the face (G^3's neighbouring faces)")                               \
-    X(Lo, lo, lo, vec2, "vec2", kOnEdges | kOnFaces, kIn2d,                                                          \
-      "the least x and y of its nodes (an edge's ends, a face's corners): `f.lo.x > 1` holds when every corner has x > 1") \
-    X(Hi, hi, hi, vec2, "vec2", kOnEdges | kOnFaces, kIn2d,                                                          \
-      "the greatest x and y of its nodes: `f.hi.x < 1` holds when every corner has x < 1")                         \
-    X(Lo3, lo3, lo, vec3, "vec3", kOnEdges | kOnFaces, kIn3d,                                                        \
-      "the least x, y and z of its nodes (an edge's ends, a face's corners): `f.lo.z > 1` holds when every corner has z > 1") \
-    X(Hi3, hi3, hi, vec3, "vec3", kOnEdges | kOnFaces, kIn3d,                                                        \
+    X(Id, id, id, long long, "int", kOnNodes | kOnEdges | kOnFaces, kInBoth, kReadsOwn, "the element's id (never reused)")                  \
+    X(Degree, degree, degree, long long, "int", kOnNodes | kOnEdges, kInBoth, kReadsEdgesAt,                                                \
+      "the node's edges, both directions; for an edge, the other edges at its ends (G^3's neighbouring edges)")                             \
+    X(InDegree, in_degree, in_degree, long long, "int", kOnNodes, kInBoth, kReadsEdgesAt, "the node's incoming edges")                      \
+    X(OutDegree, out_degree, out_degree, long long, "int", kOnNodes, kInBoth, kReadsEdgesAt, "the node's outgoing edges")                   \
+    X(Faces, faces, faces, long long, "int", kOnNodes | kOnEdges, kInBoth, kReadsFacesAt,                                                   \
+      "the faces the node is a corner of; for an edge, the faces with a side between its ends")                                             \
+    X(Length, length, length, double, "float", kOnEdges, kIn2d, kReadsEnds, "the distance between the edge's ends")                         \
+    X(Length3, length3, length, double, "float", kOnEdges, kIn3d, kReadsEnds, "the distance between the edge's ends")                       \
+    X(Direction, direction, direction, vec2, "vec2", kOnEdges, kIn2d, kReadsEnds,                                                           \
+      "the unit vector from the edge's source to its target")                                                                               \
+    X(Direction3, direction3, direction, vec3, "vec3", kOnEdges, kIn3d, kReadsEnds,                                                         \
+      "the unit vector from the edge's source to its target")                                                                               \
+    X(Corners, corners, corners, long long, "int", kOnFaces, kInBoth, kReadsCorners, "the face's corner count")                             \
+    X(Area, area, area, double, "float", kOnFaces, kIn2d, kReadsEnds | kReadsCorners, "the face's area (by its corners' positions)")        \
+    X(Area3, area3, area, double, "float", kOnFaces, kIn3d, kReadsEnds | kReadsCorners,                                                     \
+      "the face's area: the sum of its triangles (G^3: shortest diagonals first)")                                                          \
+    X(SignedArea, signed_area, signed_area, double, "float", kOnFaces, kIn2d, kReadsEnds | kReadsCorners,                                   \
+      "the face's area, positive when its corners run counter-clockwise (y up)")                                                            \
+    X(Perimeter, perimeter, perimeter, double, "float", kOnFaces, kIn2d, kReadsEnds | kReadsCorners, "the face's perimeter")                \
+    X(Perimeter3, perimeter3, perimeter, double, "float", kOnFaces, kIn3d, kReadsEnds | kReadsCorners, "the face's perimeter")              \
+    X(Centroid, centroid, centroid, vec2, "vec2", kOnFaces, kIn2d, kReadsEnds | kReadsCorners, "the mean of the face's corners (as G^3 defines it)") \
+    X(Centroid3, centroid3, centroid, vec3, "vec3", kOnFaces, kIn3d, kReadsEnds | kReadsCorners,                                            \
+      "the mean of the face's corners (as G^3 defines it)")                                                                                 \
+    X(Normal, normal, normal, vec3, "vec3", kOnFaces, kIn3d, kReadsEnds | kReadsCorners,                                                    \
+      "the face's unit normal (Newell's; counter-clockwise corners seen from its tip)")                                                     \
+    X(Neighbours, neighbours, neighbours, long long, "int", kOnFaces, kInBoth, kReadsFaceSides, "the faces sharing a side with the face")   \
+    X(Touching, touching, touching, long long, "int", kOnFaces, kInBoth, kReadsFaceSides,                                                   \
+      "the faces sharing at least a corner with the face (G^3's neighbouring faces)")                                                       \
+    X(Lo, lo, lo, vec2, "vec2", kOnEdges | kOnFaces, kIn2d, kReadsEnds | kReadsCorners,                                                     \
+      "the least x and y of its nodes (an edge's ends, a face's corners): `f.lo.x > 1` holds when every corner has x > 1")                  \
+    X(Hi, hi, hi, vec2, "vec2", kOnEdges | kOnFaces, kIn2d, kReadsEnds | kReadsCorners,                                                     \
+      "the greatest x and y of its nodes: `f.hi.x < 1` holds when every corner has x < 1")                                                  \
+    X(Lo3, lo3, lo, vec3, "vec3", kOnEdges | kOnFaces, kIn3d, kReadsEnds | kReadsCorners,                                                   \
+      "the least x, y and z of its nodes (an edge's ends, a face's corners): `f.lo.z > 1` holds when every corner has z > 1")               \
+    X(Hi3, hi3, hi, vec3, "vec3", kOnEdges | kOnFaces, kIn3d, kReadsEnds | kReadsCorners,                                                   \
       "the greatest x, y and z of its nodes: `f.hi.z < 1` holds when every corner has z < 1")
 
 enum class ElemFact : std::uint8_t {
-#define G2D_FACT_ID(id, fn, name, type, typeName, classes, spaces, meaning) id,
+#define G2D_FACT_ID(id, fn, name, type, typeName, classes, spaces, reads, meaning) id,
     G2D_ELEMENT_FACTS(G2D_FACT_ID)
 #undef G2D_FACT_ID
 };
@@ -84,6 +96,7 @@ struct ElementFactEntry {
     const char* typeName;   // "int", "float", "vec2", "vec3"
     std::uint8_t classes;
     std::uint8_t spaces;
+    std::uint8_t reads;     // kReads* bits
     const char* meaning;
 };
 // Every fact, in the list's order.
