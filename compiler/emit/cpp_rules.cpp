@@ -338,9 +338,9 @@ private:
 
     std::string writeSet(int di, const lower::RewriteProgram& p) {
         std::string out = "    void writes_" + ri_ + "_" + str(di) + "(Match m, WriteSet& w) const {\n        (void)m;\n        (void)w;\n";
-        for (int n : p.writtenNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
-        for (int e : p.writtenEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
-        for (int f : p.writtenFaces) out += "        w.faces.push_back(m.faces[" + str(f) + "]);\n";
+        for (int n : p.effects.writtenNodes) out += "        w.nodes.push_back(m.nodes[" + str(n) + "]);\n";
+        for (int e : p.effects.writtenEdges) out += "        w.edges.push_back(m.edges[" + str(e) + "]);\n";
+        for (int f : p.effects.writtenFaces) out += "        w.faces.push_back(m.faces[" + str(f) + "]);\n";
         return out + "    }\n\n";
     }
 

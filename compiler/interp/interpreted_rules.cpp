@@ -288,9 +288,9 @@ void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int no
 
 void InterpretedRules::writeSet(std::size_t rule, std::size_t daughter, rt::Match m, rt::WriteSet& w) const {
     const lower::RewriteProgram& p = lowered_.rules[rule].daughters[daughter];
-    for (int n : p.writtenNodes) w.nodes.push_back(m.nodes[n]);
-    for (int e : p.writtenEdges) w.edges.push_back(m.edges[e]);
-    for (int f : p.writtenFaces) w.faces.push_back(m.faces[f]);
+    for (int n : p.effects.writtenNodes) w.nodes.push_back(m.nodes[n]);
+    for (int e : p.effects.writtenEdges) w.edges.push_back(m.edges[e]);
+    for (int f : p.effects.writtenFaces) w.faces.push_back(m.faces[f]);
 }
 
 EvalFrame InterpretedRules::matchFrame(const ir::Rule& r, rt::Match m, const rt::Graph& g, rt::Rng& rng) {

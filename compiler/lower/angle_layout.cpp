@@ -24,25 +24,4 @@ std::optional<rt::AngleLayoutSpec> angleLayoutSpec(const ir::Program& prog) {
     return spec;
 }
 
-rt::DaughterShape daughterShape(const ir::Rule& rule, std::size_t d) {
-    const ir::Daughter& dg = rule.daughters[d];
-    rt::DaughterShape out;
-    out.deletedNodes = dg.deletedNodes;
-    out.deletedEdges = dg.deletedEdges;
-    // Daughter node -> pattern node (kept) or -1 - k (the k-th new one, in creation order).
-    std::vector<int> end(dg.nodes.size());
-    for (std::size_t i = 0; i < dg.nodes.size(); ++i) {
-        end[i] = dg.nodes[i].motherNode >= 0 ? dg.nodes[i].motherNode : -1 - out.newNodes++;
-        if (dg.nodes[i].motherNode < 0) out.newNodeKinds.push_back(dg.nodes[i].kind);
-    }
-    for (const auto& e : dg.edges) {
-        if (e.motherEdge >= 0) {
-            if (!ir::keptEdgeRewired(rule, dg, e)) continue;
-            out.deletedEdges.push_back(e.motherEdge);
-        }
-        out.newEdges.push_back(rt::DaughterShape::NewEdge{end[static_cast<std::size_t>(e.src)], end[static_cast<std::size_t>(e.dst)], e.kind});
-    }
-    return out;
-}
-
 }  // namespace g2d::lower

@@ -12,8 +12,4 @@ namespace g2d::lower {
 // Null without `layout angles`.
 std::optional<rt::AngleLayoutSpec> angleLayoutSpec(const ir::Program& prog);
 
-// What daughter `d` of `rule` does to the graph. A kept edge given new ends
-// counts as removed and made again (its drawing is new).
-rt::DaughterShape daughterShape(const ir::Rule& rule, std::size_t d);
-
 }  // namespace g2d::lower

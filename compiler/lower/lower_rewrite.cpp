@@ -229,7 +229,7 @@ private:
             else c.push_back(CreateNode{h, dn.kind, posReg_[i], nodeAttrs_[i]});
         }
         for (const auto& de : d_.edges)
-            if (de.motherEdge >= 0 && rewired(de)) c.push_back(Rewire{de.motherEdge, de.src, de.dst});
+            if (de.motherEdge >= 0 && rewired(de)) c.push_back(Rewire{de.motherEdge, de.src, de.dst, de.kind});
         for (int n : d_.deletedNodes) c.push_back(DeleteNode{n});
         for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
             const auto& dn = d_.nodes[i];
@@ -274,34 +274,13 @@ private:
         for (std::size_t i = 0; i < d_.loops.size(); ++i) c.push_back(CommitLoop{static_cast<int>(i)});
         // Last, so the face has its attributes (and any inserted corners) when it is cut.
         for (std::size_t i = 0; i < d_.splits.size(); ++i) c.push_back(SplitFace{keptFaceHandle(d_.splits[i].motherFace), static_cast<int>(i)});
-        writeSet();
+        p_.effects = rewriteEffects(prog_, r_, p_);
     }
 
     int keptFaceHandle(int motherFace) const {
         for (std::size_t i = 0; i < d_.keptFaces.size(); ++i)
             if (d_.keptFaces[i].motherFace == motherFace) return static_cast<int>(d_.faces.size() + i);
         return -1;
-    }
-
-    // Deleted elements, and kept ones that move, change ends or are written
-    // (a split face is replaced).
-    void writeSet() {
-        p_.writtenNodes = d_.deletedNodes;
-        p_.writtenEdges = d_.deletedEdges;
-        p_.writtenFaces = d_.deletedFaces;
-        for (const auto& s : d_.splits) p_.writtenFaces.push_back(s.motherFace);
-        for (std::size_t i = 0; i < d_.keptFaces.size(); ++i)
-            if (!keptFaceAttrs_[i].empty() || !keptFaceStyles_[i].empty()) p_.writtenFaces.push_back(d_.keptFaces[i].motherFace);
-        for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
-            const auto& dn = d_.nodes[i];
-            if (dn.motherNode >= 0 && (dn.position || dn.radius || !nodeAttrs_[i].empty() || !nodeStyles_[i].empty()))
-                p_.writtenNodes.push_back(dn.motherNode);
-        }
-        for (std::size_t i = 0; i < d_.edges.size(); ++i) {
-            const auto& de = d_.edges[i];
-            if (de.motherEdge >= 0 && (rewired(de) || !edgeAttrs_[i].empty() || !edgeStyles_[i].empty()))
-                p_.writtenEdges.push_back(de.motherEdge);
-        }
     }
 
     const ir::Program& prog_;

@@ -15,7 +15,7 @@ LoweredProgram lowerProgram(const ir::Program& prog) {
         rule.rule = &r;
         rule.match = lowerMatch(prog, r);
         for (std::size_t d = 0; d < r.daughters.size(); ++d) rule.daughters.push_back(lowerRewrite(prog, r, d));
-        rule.facts = ruleFacts(prog, r);
+        rule.facts = ruleFacts(prog, r, rule.daughters);
     }
     out.sequence = sequenceOf(prog);
     out.compounds = compoundsOf(prog);

@@ -138,9 +138,9 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
     out += "commit\n";
     for (const auto& op : p.commit) out += "  " + commitLine(op) + "\n";
     std::string w;
-    for (int n : p.writtenNodes) w += " " + rule.nodes[n].name;
-    for (int e : p.writtenEdges) w += " " + rule.edges[e].name;
-    for (int f : p.writtenFaces) w += " " + rule.faces[f].name;
+    for (int n : p.effects.writtenNodes) w += " " + rule.nodes[n].name;
+    for (int e : p.effects.writtenEdges) w += " " + rule.edges[e].name;
+    for (int f : p.effects.writtenFaces) w += " " + rule.faces[f].name;
     return out + "writes" + w + "\n";
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ir/ir.hpp"
+#include "lower/rewrite_effects.hpp"
 
 namespace g2d::lower {
 
@@ -83,7 +84,11 @@ struct CreateNode {
     int posReg;
     std::vector<AttrWrite> attrs;                        // the rest keep the kind's defaults
 };
-struct Rewire { int matchEdge; int src, dst; };          // node handles
+struct Rewire {                                          // a kept edge given new ends (node handles)
+    int matchEdge;
+    int src, dst;
+    int kind;                                            // as the daughter names it (the drawing's shape; -1: any)
+};
 struct DeleteNode { int matchNode; };                    // with its remaining edges
 struct SetPos { int handle; int reg; };
 struct SetRadius { int handle; Operand value; };         // G^3's node radius (3D)
@@ -160,9 +165,7 @@ struct RewriteProgram {
     std::vector<ir::Type> registers;
     int nodeHandles = 0, edgeHandles = 0, faceHandles = 0;
     bool placement = false;             // prepare has a Place (the `placed` positions exist)
-    // What the rewrite deletes or changes, as pattern slots (parallel steps
-    // keep rewrites that write what others read apart: rt::WriteSet).
-    std::vector<int> writtenNodes, writtenEdges, writtenFaces;
+    RewriteEffects effects;             // read off the commit operations (rewriteEffects)
 };
 
 // For std::visit with one overload per operation and no catch-all: an

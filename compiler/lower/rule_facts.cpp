@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "lower/angle_layout.hpp"
 #include "lower/kind_effects.hpp"
 #include "lower/near_negative.hpp"
 #include "lower/search_plan.hpp"
@@ -10,7 +9,7 @@
 
 namespace g2d::lower {
 
-RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
+RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r, const std::vector<RewriteProgram>& daughters) {
     RuleFacts out;
     rt::RuleInfo& info = out.info;
     info.name = r.name;
@@ -59,19 +58,25 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
     info.readsDegrees = effects.readsDegrees;
     info.readsNeighbours = effects.readsNeighbours;
     info.readValues = std::move(effects.readValues);
-    info.changedKinds = std::move(effects.changedKinds);
-    info.changedValues = std::move(effects.changedValues);
+    for (const auto& d : daughters) {
+        info.changedKinds.push_back(d.effects.changedKinds);
+        info.changedValues.push_back(d.effects.changedValues);
+        info.deletesNodes.push_back(d.effects.deletesNodes ? 1 : 0);
+        if (prog.angleLayout) info.shapes.push_back(d.effects.shape);
+    }
     info.intersect = r.intersect;
     if ((r.merge || prog.mergeAll) && !r.intersect) {   // a command tests for intersection or merges (G^3 §4.3)
         if (!prog.mergeTolerance) info.mergeTolerance = rt::kDefaultMergeTolerance;
         else if (prog.mergeTolerance->op == ir::ExprOp::Literal) info.mergeTolerance = std::get<double>(prog.mergeTolerance->value);
         else out.mergeExpr = &*prog.mergeTolerance;
     }
-    if (prog.angleLayout)
-        for (std::size_t d = 0; d < r.daughters.size(); ++d) info.shapes.push_back(daughterShape(r, d));
-    // Removing a node removes its edges and faces, of any kind.
-    for (const auto& d : r.daughters) info.deletesNodes.push_back(d.deletedNodes.empty() ? 0 : 1);
     return out;
+}
+
+RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r) {
+    std::vector<RewriteProgram> daughters;
+    for (std::size_t d = 0; d < r.daughters.size(); ++d) daughters.push_back(lowerRewrite(prog, r, d));
+    return ruleFacts(prog, r, daughters);
 }
 
 }  // namespace g2d::lower

@@ -7,6 +7,7 @@
 
 #include "g2d/derivation.hpp"
 #include "ir/ir.hpp"
+#include "lower/rewrite_program.hpp"
 
 namespace g2d::lower {
 
@@ -18,6 +19,9 @@ struct RuleFacts {
     const ir::Expr* mergeExpr = nullptr;        // the merge tolerance when it reads parameters (info's is 0 then)
 };
 
+// `daughters`: the rule's lowered rewrites (what they change is theirs).
+RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& rule, const std::vector<RewriteProgram>& daughters);
+// The same, lowering the rewrites itself (tests).
 RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& rule);
 
 }  // namespace g2d::lower
