@@ -243,10 +243,15 @@ private:
                 out += in + "    try {\n" + in + "        " + target + " = " + check + "(" + v + ");\n" + in +
                        "    } catch (const OpError& e) {\n" + in + "        throw PlacedError(" + str(places_.add(expr.span)) + ", e.what());\n" + in + "    }\n";
             };
-            for (std::size_t d = 0; d < facts.weightExprs.size(); ++d)
-                if (const ir::Expr* expr = facts.weightExprs[d]) checked(*expr, "info.weights[" + str(static_cast<long long>(d)) + "]", "checkedWeight");
-            if (const ir::Expr* expr = facts.choiceWeightExpr) checked(*expr, "info.choiceWeight", "checkedWeight");
-            if (const ir::Expr* expr = facts.mergeExpr) checked(*expr, "info.mergeTolerance", "checkedMergeTolerance");
+            for (const lower::SetRuleNumber& n : facts.startNumbers) {
+                std::string target;
+                switch (n.field) {
+                case lower::SetRuleNumber::Field::DaughterWeight: target = "info.weights[" + str(static_cast<long long>(n.daughter)) + "]"; break;
+                case lower::SetRuleNumber::Field::ChoiceWeight: target = "info.choiceWeight"; break;
+                case lower::SetRuleNumber::Field::MergeTolerance: target = "info.mergeTolerance"; break;
+                }
+                checked(*n.value, target, n.check.name);
+            }
             out += in + "    infos_.push_back(std::move(info));\n" + in + "}\n";
         }
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n    }\n\n";
@@ -311,14 +316,12 @@ private:
             const ExprContext ctx = matchElements(rule);
             out += "    void weigh_" + rs + "(Match m, const Graph& g, std::vector<double>& w) {\n        (void)m;\n        (void)g;\n";
             int first = -1;
-            for (std::size_t d = 0; d < facts.matchWeightExprs.size(); ++d) {
-                const ir::Expr* expr = facts.matchWeightExprs[d];
-                if (!expr) continue;
-                const int place = places_.add(expr->span);
+            for (const auto& w : facts.matchWeights.weights) {
+                const int place = places_.add(w.value->span);
                 first = first < 0 ? place : first;
                 out += "        try {\n";
-                const std::string v = gen_.gen(*expr, ctx, out, "            ");
-                out += "            w[" + str(static_cast<long long>(d)) + "] = checkedMatchWeight(" + v + ");\n";
+                const std::string v = gen_.gen(*w.value, ctx, out, "            ");
+                out += "            w[" + str(static_cast<long long>(w.daughter)) + "] = checkedMatchWeight(" + v + ");\n";
                 out += "        } catch (const OpError& e) {\n            throw PlacedError(" + str(place) + ", e.what());\n        }\n";
             }
             out += "        try {\n            checkSomeWeight(w);\n        } catch (const OpError& e) {\n            throw PlacedError(" +
@@ -479,17 +482,18 @@ private:
     std::string emitCompoundValues() {
         std::string out = "    std::vector<Value> compoundValues(std::size_t compound, Match m, const Graph& g, Rng& rng) override {\n";
         out += "        rng_ = &rng;\n        switch (compound) {\n";
-        for (std::size_t c = 0; c < prog_.compounds.size(); ++c) {
-            const ir::Rule& r = prog_.rules[static_cast<std::size_t>(prog_.compounds[c].matchRule)];
-            if (r.lets.empty()) continue;
+        for (std::size_t c = 0; c < lowered_.compoundLets.size(); ++c) {
+            const lower::CompoundLets& lets = lowered_.compoundLets[c];
+            if (lets.lets.empty()) continue;
+            const ir::Rule& r = prog_.rules[static_cast<std::size_t>(lets.matchRule)];
             const ExprContext ctx = matchElements(r);
             const std::string in = "                ";
             std::string body, values;
-            for (const auto& l : r.lets) {
-                const std::string v = gen_.gen(l.value, ctx, body, in);
+            for (const lower::EvalLocal& l : lets.lets) {
+                const std::string v = gen_.gen(*l.value, ctx, body, in);
                 const std::string name = "L" + str(l.slot);
-                body += in + "const " + cppType(l.value.type) + " " + name + " = " + v + ";\n";
-                values += (values.empty() ? "" : ", ") + valueOf(l.value.type, name);
+                body += in + "const " + cppType(l.value->type) + " " + name + " = " + v + ";\n";
+                values += (values.empty() ? "" : ", ") + valueOf(l.value->type, name);
             }
             out += "        case " + str(static_cast<long long>(c)) + ":\n            current_ = " + cLiteral(r.name) + ";\n            try {\n" + body +
                    in + "return {" + values + "};\n            } catch (const OpError& e) {\n                throw PlacedError(loc_, e.what());\n            }\n";

@@ -8,6 +8,8 @@ std::string str(int i) { return std::to_string(i); }
 std::string node(int h) { return "h" + str(h); }
 std::string edge(int h) { return "k" + str(h); }
 std::string face(int h) { return "q" + str(h); }
+// The guard of a write the operation skips when the face is gone.
+std::string ifAlive(bool guarded, int h) { return guarded ? "if (G.faceAlive(" + face(h) + ")) " : ""; }
 
 }  // namespace
 
@@ -188,11 +190,11 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                            commit += c + "const FaceId " + face(o.handle) + " = m.faces[" + str(o.matchFace) + "];\n" + c + "(void)" + face(o.handle) + ";\n";
                        },
                        [&](const lower::SetFaceAttr& o) {
-                           commit += c + "if (G.faceAlive(" + face(o.handle) + ")) " +
+                           commit += c + ifAlive(o.ifAlive, o.handle) +
                                      gen_.attrAccess(o.kind, face(o.handle), ir::ElemClass::Face, o.write.attr, "G") + " = " + attrValue(o.write.value) + ";\n";
                        },
                        [&](const lower::TouchFace& o) {
-                           commit += c + "if (G.faceAlive(" + face(o.handle) + ")) G.touchFaceValues(" + face(o.handle) + ");\n";
+                           commit += c + ifAlive(o.ifAlive, o.handle) + "G.touchFaceValues(" + face(o.handle) + ");\n";
                        },
                        [&](const lower::CreateFace& o) {
                            std::string corners;
@@ -202,7 +204,7 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                                      ";\n" + record(o.kind, o.attrs, face(o.handle), ir::ElemClass::Face, c);
                        },
                        [&](const lower::SetFaceStyle& o) {
-                           commit += c + "if (G.faceAlive(" + face(o.handle) + ")) G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
+                           commit += c + ifAlive(o.ifAlive, o.handle) + "G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
                        [&](const lower::CommitLoop& o) { commit += commitLoop(o.loop, p, c); },
                        [&](const lower::SplitFace& o) { commit += splitFace(o, p, c); },

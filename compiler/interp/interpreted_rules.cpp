@@ -15,10 +15,14 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st), lowered_(*
     for (const auto& rule : lowered_.rules) {
         const lower::RuleFacts& facts = rule.facts;
         rt::RuleInfo& info = infos_.emplace_back(facts.info);
-        for (std::size_t d = 0; d < facts.weightExprs.size(); ++d)
-            if (facts.weightExprs[d]) info.weights[d] = checkedNumber(*facts.weightExprs[d], nullptr, rt::checkedWeight);
-        if (facts.choiceWeightExpr) info.choiceWeight = checkedNumber(*facts.choiceWeightExpr, nullptr, rt::checkedWeight);
-        if (facts.mergeExpr) info.mergeTolerance = checkedNumber(*facts.mergeExpr, nullptr, rt::checkedMergeTolerance);
+        for (const lower::SetRuleNumber& n : facts.startNumbers) {
+            const double v = checkedNumber(*n.value, nullptr, n.check.check);
+            switch (n.field) {
+            case lower::SetRuleNumber::Field::DaughterWeight: info.weights[static_cast<std::size_t>(n.daughter)] = v; break;
+            case lower::SetRuleNumber::Field::ChoiceWeight: info.choiceWeight = v; break;
+            case lower::SetRuleNumber::Field::MergeTolerance: info.mergeTolerance = v; break;
+            }
+        }
         const lower::MatchProgram& m = rule.match;
         maxNodes = std::max(maxNodes, static_cast<std::size_t>(m.nodeSlots));
         maxEdges = std::max(maxEdges, static_cast<std::size_t>(m.edgeSlots));
@@ -312,21 +316,18 @@ void InterpretedRules::weigh(std::size_t rule, rt::Match m, const rt::Graph& g, 
     f.nodes = m.nodes;
     f.edges = m.edges;
     f.faces = m.faces;
-    const ir::Expr* first = nullptr;
-    for (std::size_t d = 0; d < weights.size(); ++d) {
-        const ir::Expr* expr = lowered_.rules[rule].facts.matchWeightExprs[d];
-        if (!expr) continue;
-        first = first ? first : expr;
+    const auto& each = lowered_.rules[rule].facts.matchWeights.weights;
+    for (const auto& w : each) {
         try {
-            weights[d] = rt::checkedMatchWeight(std::get<double>(evaluate(*expr, f)));
+            weights[static_cast<std::size_t>(w.daughter)] = rt::checkedMatchWeight(std::get<double>(evaluate(*w.value, f)));
         } catch (const rt::OpError& e) {
-            throw EvalError(expr->span, e.what());
+            throw EvalError(w.value->span, e.what());
         }
     }
     try {
         rt::checkSomeWeight(weights);
     } catch (const rt::OpError& e) {
-        throw EvalError(first->span, e.what());
+        throw EvalError(each.front().value->span, e.what());
     }
 }
 
@@ -349,11 +350,11 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
 }
 
 std::vector<rt::Value> InterpretedRules::compoundValues(std::size_t compound, rt::Match m, const rt::Graph& g, rt::Rng& rng) {
-    const ir::Rule& r = st_.prog->rules[static_cast<std::size_t>(st_.prog->compounds[compound].matchRule)];
-    EvalFrame f = matchFrame(r, m, g, rng);
+    const lower::CompoundLets& lets = lowered_.compoundLets[compound];
+    EvalFrame f = matchFrame(st_.prog->rules[static_cast<std::size_t>(lets.matchRule)], m, g, rng);
     std::vector<rt::Value> values;
-    for (const auto& l : r.lets) {
-        locals_[static_cast<std::size_t>(l.slot)] = evaluate(l.value, f);
+    for (const lower::EvalLocal& l : lets.lets) {
+        locals_[static_cast<std::size_t>(l.slot)] = evaluate(*l.value, f);
         values.push_back(locals_[static_cast<std::size_t>(l.slot)]);
     }
     return values;

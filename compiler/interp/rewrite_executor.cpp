@@ -169,10 +169,10 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        },
                        [&](const lower::BindFace& o) { faces[o.handle] = m.faces[o.matchFace]; },
                        [&](const lower::SetFaceAttr& o) {
-                           if (g.faceAlive(faces[o.handle])) g.initFaceAttr(faces[o.handle], o.write.attr, value(o.write.value));
+                           if (!o.ifAlive || g.faceAlive(faces[o.handle])) g.initFaceAttr(faces[o.handle], o.write.attr, value(o.write.value));
                        },
                        [&](const lower::TouchFace& o) {
-                           if (g.faceAlive(faces[o.handle])) g.touchFaceValues(faces[o.handle]);
+                           if (!o.ifAlive || g.faceAlive(faces[o.handle])) g.touchFaceValues(faces[o.handle]);
                        },
                        [&](const lower::CreateFace& o) {
                            corners_.clear();
@@ -181,7 +181,7 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                            for (const auto& w : o.attrs) g.initFaceAttr(faces[o.handle], w.attr, value(w.value));
                        },
                        [&](const lower::SetFaceStyle& o) {
-                           if (g.faceAlive(faces[o.handle])) g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
+                           if (!o.ifAlive || g.faceAlive(faces[o.handle])) g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
                        [&](const lower::InsertBetween& o) { g.insertBetween(nodes[o.first], nodes[o.second], nodes[o.node]); },
                        [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },

@@ -87,7 +87,7 @@ private:
             for (const auto& r : f.corners) c.corners.push_back(handle(r));
             for (const auto& a : f.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
             lp.link.push_back(std::move(c));
-            for (const auto& st : f.styles) lp.link.push_back(SetFaceStyle{lp.faceHandles, &st, operand(st.value)});
+            for (const auto& st : f.styles) lp.link.push_back(SetFaceStyle{lp.faceHandles, &st, operand(st.value), false});
             ++lp.faceHandles;
         }
         return lp;
@@ -261,15 +261,15 @@ private:
             const auto& kf = d_.keptFaces[i];
             const int h = static_cast<int>(d_.faces.size() + i);
             c.push_back(BindFace{h, kf.motherFace});
-            for (const auto& w : keptFaceAttrs_[i]) c.push_back(SetFaceAttr{h, r_.faces[kf.motherFace].kind, w});
-            if (!keptFaceAttrs_[i].empty()) c.push_back(TouchFace{h});
-            for (const auto& [style, value] : keptFaceStyles_[i]) c.push_back(SetFaceStyle{h, style, value});
+            for (const auto& w : keptFaceAttrs_[i]) c.push_back(SetFaceAttr{h, r_.faces[kf.motherFace].kind, w, true});
+            if (!keptFaceAttrs_[i].empty()) c.push_back(TouchFace{h, true});
+            for (const auto& [style, value] : keptFaceStyles_[i]) c.push_back(SetFaceStyle{h, style, value, true});
         }
         for (std::size_t i = 0; i < d_.faces.size(); ++i) {
             const auto& df = d_.faces[i];
             const int h = static_cast<int>(i);
             c.push_back(CreateFace{h, df.kind, df.corners, faceAttrs_[i]});
-            for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value});
+            for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value, false});
         }
         for (std::size_t i = 0; i < d_.loops.size(); ++i) c.push_back(CommitLoop{static_cast<int>(i)});
         // Last, so the face has its attributes (and any inserted corners) when it is cut.

@@ -50,7 +50,7 @@ RewriteProgram lowerAxiom(const ir::Axiom& ax, const ir::Program& prog) {
         CreateFace create{h, f.kind, f.corners, {}};
         for (const auto& a : f.assigns) create.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
         faces.push_back(std::move(create));
-        for (const auto& s : f.styles) faces.push_back(SetFaceStyle{h, &s, operand(s.value)});
+        for (const auto& s : f.styles) faces.push_back(SetFaceStyle{h, &s, operand(s.value), false});
     }
     p.commit = std::move(nodes);
     p.commit.insert(p.commit.end(), std::make_move_iterator(edges.begin()), std::make_move_iterator(edges.end()));

@@ -19,6 +19,11 @@ LoweredProgram lowerProgram(const ir::Program& prog) {
     }
     out.sequence = sequenceOf(prog);
     out.compounds = compoundsOf(prog);
+    for (const auto& c : prog.compounds) {
+        CompoundLets& lets = out.compoundLets.emplace_back();
+        lets.matchRule = c.matchRule;
+        for (const auto& l : prog.rules[static_cast<std::size_t>(c.matchRule)].lets) lets.lets.push_back(EvalLocal{l.slot, &l.value});
+    }
     out.angleLayout = angleLayoutSpec(prog);
     return out;
 }

@@ -12,6 +12,7 @@
 #include "lower/match_program.hpp"
 #include "lower/rewrite_program.hpp"
 #include "lower/rule_facts.hpp"
+#include "lower/run_values.hpp"
 #include "lower/start_program.hpp"
 
 namespace g2d::lower {
@@ -29,6 +30,7 @@ struct LoweredProgram {
     std::vector<LoweredRule> rules;
     std::vector<rt::SequenceEntry> sequence;        // the `sequence` (empty: the priorities alone)
     std::vector<rt::CompoundInfo> compounds;
+    std::vector<CompoundLets> compoundLets;         // per compound
     std::optional<rt::AngleLayoutSpec> angleLayout;   // null without `layout angles`
 };
 

@@ -108,14 +108,17 @@ struct SetEdgeStyle { int handle; const ir::StyleAssign* style; Operand value; }
 // the faces it keeps (ir::Daughter::keptFaces order).
 struct DeleteFace { int matchFace; };                    // (a face a node deletion removed already: nothing)
 struct BindFace { int handle; int matchFace; };          // a kept face
-struct SetFaceAttr { int handle, kind; AttrWrite write; };   // a kept face's attribute (no change recorded)
-struct TouchFace { int handle; };                        // record that a kept face's attributes changed
+// A write to a kept face is skipped when the face is gone (`ifAlive`): a
+// node deletion of this rewrite, or another application of the same
+// parallel step, may have removed it with a corner. New faces are there.
+struct SetFaceAttr { int handle, kind; AttrWrite write; bool ifAlive; };   // a kept face's attribute (no change recorded)
+struct TouchFace { int handle; bool ifAlive; };          // record that a kept face's attributes changed
 struct CreateFace {
     int handle, kind;
     std::vector<int> corners;                            // node handles, in order (>= 3, distinct)
     std::vector<AttrWrite> attrs;
 };
-struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; };
+struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; bool ifAlive; };
 struct InsertBetween { int node, first, second; };    // node handles (rt::Graph::insertBetween)
 struct CommitLoop { int loop; };    // RewriteProgram::loops[loop]: every turn's create, then every turn's link
 struct SplitFace { int face; int split; };   // face handle; RewriteProgram::splits[split] (rt::splitFace)

@@ -17,15 +17,18 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r, const std::vecto
     info.pick = r.pick;
     info.parallel = ir::runsParallel(prog, r);
     info.generation = ir::inGeneration(prog, r);
-    for (const auto& d : r.daughters) {
-        info.weights.push_back(d.weight ? *d.weight : d.weightExpr ? 0.0 : 1.0);
-        const ir::Expr* expr = !d.weight && d.weightExpr ? &*d.weightExpr : nullptr;
-        out.weightExprs.push_back(d.weightReadsMatch ? nullptr : expr);
-        out.matchWeightExprs.push_back(d.weightReadsMatch ? expr : nullptr);
-        info.matchWeighted = info.matchWeighted || d.weightReadsMatch;
+    using Field = SetRuleNumber::Field;
+    for (std::size_t d = 0; d < r.daughters.size(); ++d) {
+        const ir::Daughter& dg = r.daughters[d];
+        info.weights.push_back(dg.weight ? *dg.weight : dg.weightExpr ? 0.0 : 1.0);
+        info.matchWeighted = info.matchWeighted || dg.weightReadsMatch;
+        if (dg.weight || !dg.weightExpr) continue;
+        if (dg.weightReadsMatch) out.matchWeights.weights.push_back({static_cast<int>(d), &*dg.weightExpr});
+        else out.startNumbers.push_back({Field::DaughterWeight, static_cast<int>(d), &*dg.weightExpr, kWeightCheck});
     }
-    info.choiceWeight = r.weightExpr && r.weightExpr->op != ir::ExprOp::Literal ? 0.0 : r.weight;
-    if (r.weightExpr && r.weightExpr->op != ir::ExprOp::Literal) out.choiceWeightExpr = &*r.weightExpr;
+    const bool choiceByParameter = r.weightExpr && r.weightExpr->op != ir::ExprOp::Literal;
+    info.choiceWeight = choiceByParameter ? 0.0 : r.weight;
+    if (choiceByParameter) out.startNumbers.push_back({Field::ChoiceWeight, -1, &*r.weightExpr, kWeightCheck});
     info.radius = repairRadius(r);
     for (std::size_t k = 0; k < r.nacs.size(); ++k)
         if (const auto near = nearNegative(r, k)) info.nearKinds.push_back(near->kind);
@@ -68,7 +71,7 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r, const std::vecto
     if ((r.merge || prog.mergeAll) && !r.intersect) {   // a command tests for intersection or merges (G^3 §4.3)
         if (!prog.mergeTolerance) info.mergeTolerance = rt::kDefaultMergeTolerance;
         else if (prog.mergeTolerance->op == ir::ExprOp::Literal) info.mergeTolerance = std::get<double>(prog.mergeTolerance->value);
-        else out.mergeExpr = &*prog.mergeTolerance;
+        else out.startNumbers.push_back({SetRuleNumber::Field::MergeTolerance, -1, &*prog.mergeTolerance, kMergeToleranceCheck});
     }
     return out;
 }

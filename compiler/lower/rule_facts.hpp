@@ -1,22 +1,21 @@
 #pragma once
 // What the runtime's scheduler and incremental matching know of a rule
 // (rt::RuleInfo), decided once from the IR for both back ends: the
-// interpreter uses it as it is, the emitter prints it as data. A weight
-// given by an expression of parameters is the one thing left to the run.
+// interpreter uses it as it is, the emitter prints it as data. The numbers
+// parameters give are left to the run, as SetRuleNumber.
 #include <vector>
 
 #include "g2d/derivation.hpp"
 #include "ir/ir.hpp"
 #include "lower/rewrite_program.hpp"
+#include "lower/run_values.hpp"
 
 namespace g2d::lower {
 
 struct RuleFacts {
-    rt::RuleInfo info;                          // weights: the known ones, 0 where weightExprs has one
-    std::vector<const ir::Expr*> weightExprs;   // per daughter: the weight's expression of parameters, or null
-    std::vector<const ir::Expr*> matchWeightExprs;   // per daughter: the weight's expression reading the match, or null
-    const ir::Expr* choiceWeightExpr = nullptr; // the rule's `weight` when it reads parameters (info's is 0 then)
-    const ir::Expr* mergeExpr = nullptr;        // the merge tolerance when it reads parameters (info's is 0 then)
+    rt::RuleInfo info;                          // the numbers startNumbers sets are 0
+    std::vector<SetRuleNumber> startNumbers;    // what parameters give, in order
+    MatchWeights matchWeights;                  // the weights reading the match (info.matchWeighted)
 };
 
 // `daughters`: the rule's lowered rewrites (what they change is theirs).
