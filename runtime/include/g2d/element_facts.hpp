@@ -58,6 +58,8 @@ inline constexpr std::uint8_t kReadsGenerations = 32;  // generation stamps, whi
       "the unit vector from the edge's source to its target")                                                                               \
     X(Direction3, direction3, direction, vec3, "vec3", kOnEdges, kIn3d, kReadsEnds,                                                         \
       "the unit vector from the edge's source to its target")                                                                               \
+    X(Midpoint, midpoint, midpoint, vec2, "vec2", kOnEdges, kIn2d, kReadsEnds, "the point halfway between the edge's ends")                 \
+    X(Midpoint3, midpoint3, midpoint, vec3, "vec3", kOnEdges, kIn3d, kReadsEnds, "the point halfway between the edge's ends")               \
     X(Corners, corners, corners, long long, "int", kOnFaces, kInBoth, kReadsCorners, "the face's corner count")                             \
     X(Area, area, area, double, "float", kOnFaces, kIn2d, kReadsEnds | kReadsCorners, "the face's area (by its corners' positions)")        \
     X(Area3, area3, area, double, "float", kOnFaces, kIn3d, kReadsEnds | kReadsCorners,                                                     \
@@ -142,6 +144,8 @@ inline double length(const Graph& g, ElemClass, std::uint32_t id) { return finit
 inline vec2 direction(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.pos(g.target(id)) - g.pos(g.source(id))); }
 inline double length3(const Graph& g, ElemClass, std::uint32_t id) { return finite(rt::length(g.pos3(g.target(id)) - g.pos3(g.source(id)))); }
 inline vec3 direction3(const Graph& g, ElemClass, std::uint32_t id) { return rt::normalize(g.pos3(g.target(id)) - g.pos3(g.source(id))); }
+inline vec2 midpoint(const Graph& g, ElemClass, std::uint32_t id) { return (g.pos(g.source(id)) + g.pos(g.target(id))) * 0.5; }
+inline vec3 midpoint3(const Graph& g, ElemClass, std::uint32_t id) { return (g.pos3(g.source(id)) + g.pos3(g.target(id))) * 0.5; }
 inline long long corners(const Graph& g, ElemClass, std::uint32_t id) { return g.cornerCount(id); }
 inline double area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.area(id)); }
 inline double signed_area(const Graph& g, ElemClass, std::uint32_t id) { return finite(g.signedArea(id)); }
