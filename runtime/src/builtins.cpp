@@ -1,5 +1,6 @@
 #include "g2d/builtins.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace g2d::rt {
@@ -45,6 +46,14 @@ long long randint(Rng& rng, long long lo, long long hi) {
     if (lo > hi) throw OpError("randint(" + std::to_string(lo) + ", " + std::to_string(hi) + "): empty range");
     return rng.range(lo, hi);
 }
+
+double smoothstep(double edge0, double edge1, double x) {
+    if (edge0 == edge1) throw OpError("smoothstep(" + formatNumber(edge0) + ", " + formatNumber(edge1) + ", x): the edges are equal");
+    double num = x - edge0, den = edge1 - edge0;
+    if (!std::isfinite(num) || !std::isfinite(den)) num = x * 0.5 - edge0 * 0.5, den = edge1 * 0.5 - edge0 * 0.5;   // no overflow
+    const double t = clamp(num / den, 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
 }  // namespace fn
 
 Value callBuiltin(Builtin id, const Value* a, std::size_t n, Rng* rng) {
@@ -72,6 +81,7 @@ Value callBuiltin(Builtin id, const Value* a, std::size_t n, Rng* rng) {
     case B::Degrees: return fn::degrees(F(a[0]));
     case B::Abs: return isInt(a[0]) ? Value{fn::abs(I(a[0]))} : Value{fn::abs(F(a[0]))};
     case B::Sign: return isInt(a[0]) ? Value{fn::sign(I(a[0]))} : Value{fn::sign(F(a[0]))};
+    case B::Smoothstep: return fn::smoothstep(F(a[0]), F(a[1]), F(a[2]));
     case B::Clamp:
         return isInt(a[0]) ? Value{fn::clamp(I(a[0]), I(a[1]), I(a[2]))} : Value{fn::clamp(F(a[0]), F(a[1]), F(a[2]))};
     case B::Min:

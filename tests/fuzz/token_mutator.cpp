@@ -30,7 +30,7 @@ const char* const kDictionary[] = {
     "limit", "match", "node", "not", "or", "ordered", "parallel", "param", "pick", "priority", "produce",
     "rule", "style", "true", "undirected", "weight", "where", "random", "oldest", "int", "float", "bool",
     "string", "vec2", "pi", "tau", "pos", "sqrt", "pow", "rotate", "perp_left", "length", "normalize",
-    "uniform", "randint", "choice", "min", "max", "abs", "round", "floor", "degree", "in_degree",
+    "uniform", "randint", "choice", "min", "max", "abs", "round", "floor", "smoothstep", "degree", "in_degree", "midpoint",
     "{", "}", "(", ")", "[", "]", ";", ":", ",", ".", "=", "==", "!=", "<", "<=", ">", ">=", "+", "-",
     "*", "/", "%", "?", "!", "&&", "||", "->", "-[", "]->", "]-", "<-[", "-[Seg]->", "_", "*:",
     "0", "1", "-1", "2", "0.5", "1e308", "1e-308", "9223372036854775807", "9223372036854775808",

@@ -42,7 +42,7 @@ syn match g2dNegative "\<not\ze\s*{"
 " ---- built-in types, functions (only before `(`) and constants
 syn match g2dPrimitiveType "\<\(int\|float\|bool\|string\|vec2\|vec3\)\>\(\s*(\)\@!"
 syn match g2dBuiltin "\<\(sin\|cos\|tan\|asin\|acos\|atan\|atan2\|sqrt\|exp\|log\|pow\|hypot\)\ze\s*("
-syn match g2dBuiltin "\<\(floor\|ceil\|round\|radians\|degrees\|abs\|sign\|clamp\|min\|max\)\ze\s*("
+syn match g2dBuiltin "\<\(floor\|ceil\|round\|radians\|degrees\|abs\|sign\|clamp\|smoothstep\|min\|max\)\ze\s*("
 syn match g2dBuiltin "\<\(vec2\|vec3\|dot\|cross\|length\|distance\|normalize\|perp_left\|perp_right\)\ze\s*("
 syn match g2dBuiltin "\<\(rotate\|angle\|lerp\|int\|float\|str\|format\)\ze\s*("
 syn match g2dBuiltin "\<\(random\|uniform\|randint\|choice\|normal\)\ze\s*("

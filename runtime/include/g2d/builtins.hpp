@@ -43,6 +43,7 @@ namespace g2d::rt {
     X(Radians, radians, Pure, true, false)            \
     X(Degrees, degrees, Pure, true, false)            \
     X(Hypot, hypot, Pure, true, false)                \
+    X(Smoothstep, smoothstep, Pure, true, false)      \
     /* vectors */                                     \
     X(MakeVec2, makeVec2, Pure, false, false)         \
     X(Dot, dot, Pure, true, false)                    \
@@ -134,6 +135,9 @@ inline double sign(double x) { return static_cast<double>((x > 0) - (x < 0)); }
 // clamp(x, lo, hi) = min(max(x, lo), hi): hi when lo > hi.
 inline long long clamp(long long x, long long lo, long long hi) { return std::min(std::max(x, lo), hi); }
 inline double clamp(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
+// 0 up to edge0, 1 from edge1 on, and the cubic 3t² − 2t³ between (t the
+// position of x from edge0 to edge1; edge1 < edge0 runs the other way).
+double smoothstep(double edge0, double edge1, double x);
 // Ties keep the earlier argument.
 inline long long min(long long a, long long b) { return b < a ? b : a; }
 inline double min(double a, double b) { return b < a ? b : a; }
