@@ -305,6 +305,8 @@ using StepObserver = std::function<void(long long step, const Graph& g)>;
 class StepTracer {
 public:
     virtual ~StepTracer() = default;
+    // The axiom is built, before the first step (deriveGrammar calls it).
+    virtual void started() {}
     virtual void applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) = 0;
     virtual void stepDone(long long step, const Graph& g) = 0;
 };

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "g2d/run_driver.hpp"
+#include "g2d/derive_grammar.hpp"
 
 namespace g2d {
 
