@@ -10,9 +10,9 @@
 #include <unistd.h>
 
 #include "g2d/atomic_file.hpp"
-#include "g2d/obj_writer.hpp"
 #include "g2d/image_links.hpp"
 #include "g2d/png_writer.hpp"
+#include "g2d/run_outputs.hpp"
 #include "g2d/seed_batch.hpp"
 #include "g2d/trace.hpp"
 #include "g2d/view_page.hpp"
@@ -88,8 +88,6 @@ private:
     bool enabled_, shown_ = false;
     std::chrono::steady_clock::time_point start_, last_;
 };
-
-const char* stopName(StopReason r) { return r == StopReason::Terminal ? "terminal" : "step_limit"; }
 
 }  // namespace
 
@@ -210,17 +208,15 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     try {
         const Graph& graph = grammar.graph();
         const std::string name = std::filesystem::path(request.grammarFile).filename().string();
-        // The SVG is streamed, its items made one at a time; the trace page,
-        // small by design, embeds it whole.
-        const bool space3d = grammar.jsonSchema().space3d;
-        const ItemMaker drawn = [&](ElemClass cls, std::uint32_t id, DrawItem& it) {
-            grammar.drawItem(cls, id, it);
-            if (space3d) projectItem(it, graph, view);
-        };
-        SvgOptions svgOptions;
-        svgOptions.compact = request.svgCompact;
-        svgOptions.precision = request.precision;
-        svgOptions.viewBox = viewBox ? viewBox : derived.canvas;   // --viewbox > canvas > fitted
+        RunOutputs outputs;
+        outputs.svgOptions.compact = request.svgCompact;
+        outputs.svgOptions.precision = request.precision;
+        outputs.svgOptions.viewBox = viewBox ? viewBox : derived.canvas;   // --viewbox > canvas > fitted
+        outputs.view = view;
+        outputs.grammarName = name;
+        outputs.seed = request.seed;
+        outputs.steps = result.steps;
+        outputs.stopped = stopped;
         // Images are named relative to the grammar; the SVG links them from
         // where it is written (a PNG is rendered with the grammar's folder as base).
         const bool png = svgFile && request.svgOut && isPngPath(*request.svgOut);
@@ -228,13 +224,18 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                                              : request.traceHtml.value_or(".");
         ImageLinks images(request.grammarFile, svgPlace, request.embedImages);
         if (!png || request.embedImages)
-            svgOptions.imageHref = [&images](const std::string& href) { return images.href(href); };
+            outputs.svgOptions.imageHref = [&images](const std::string& href) { return images.href(href); };
+        // The SVG is streamed into its file, but made whole in memory for a
+        // PNG (which librsvg renders) and for the trace page (which embeds it).
+        StringOut svgText;
+        const bool svgWhole = png || traceHtmlFile;
+        outputs.svg = svgWhole ? static_cast<TextOut*>(&svgText) : svgFile.get();
+        outputs.json = jsonFile.get();
+        outputs.obj = objFile.get();
+        writeRunOutputs(grammar, outputs);
         std::string svg;
+        if (svgWhole) svg = std::move(svgText.text());
         if (png) {
-            // A PNG: the SVG, made whole in memory, rendered by librsvg.
-            StringOut text;
-            writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
-            svg = std::move(text.text());
             PngOptions png;
             png.dpi = request.dpi;
             png.width = request.width;
@@ -246,34 +247,19 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                 throw OutputError("cannot write `" + *request.svgOut + "`: " + e.what());
             }
             svgFile->commit(bytes);
-        } else if (traceHtmlFile) {
-            StringOut text;
-            writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
-            svg = std::move(text.text());
-            if (svgFile) svgFile->commit(svg);
         } else if (svgFile) {
-            writeSvg(graph, drawn, grammar.svgDefs(), *svgFile, svgOptions);
-            svgFile->commit();
+            if (svgWhole)
+                svgFile->commit(svg);
+            else
+                svgFile->commit();
         }
         if (trace) {
             const std::string data = trace->json(name, request.seed, stopped);
             if (traceJsonFile) traceJsonFile->commit(data);
             if (traceHtmlFile) traceHtmlFile->commit(writeTracePage(data, svg, name));
         }
-        if (jsonFile) {
-            const std::vector<std::pair<std::string, Value>> meta = {
-                {"grammar", name},
-                {"seed", static_cast<long long>(request.seed)},
-                {"steps", result.steps},
-                {"stopped", stopped}};
-            writeJson(graph, grammar.jsonSchema(), meta, *jsonFile,
-                      [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); });
-            jsonFile->commit();
-        }
-        if (objFile) {
-            writeObj(graph, grammar.jsonSchema(), *objFile);
-            objFile->commit();
-        }
+        if (jsonFile) jsonFile->commit();
+        if (objFile) objFile->commit();
         if (viewFile) {
             ViewModel model = viewModelOf(graph, grammar.drawItems(), name);
             if (grammar.jsonSchema().space3d) model.home = view.toward;   // the SVG's view, z up
