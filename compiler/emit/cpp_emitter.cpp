@@ -235,7 +235,7 @@ private:
         out += axiom.prepare(start.axiom, noElements(), in + "    ") + axiom.commit(start.axiom, in + "    ") + in + "}\n";
         // Rule infos, with weights (parameter-dependent ones checked now).
         out += in + "infos_.clear();\n";
-        if (prog_.tracksGenerations) out += in + "tracksGenerations = true;\n";
+        if (prog_.tracksGenerations) out += in + "setTracksGenerations(true);\n";
         for (const auto& rule : lowered_.rules) {
             const lower::RuleFacts& facts = rule.facts;
             out += in + "{\n" + ruleInfoText(facts.info, in + "    ");

@@ -225,14 +225,17 @@ public:
         (void)compound, (void)m, (void)g, (void)rng;
         return {};
     }
-    // Called by commit() after each application it makes, when set (compound
-    // scopes take in what each application created).
-    std::function<void()> onApplied;
+    // The hook applicationDone calls after each application, when set:
+    // compound scopes take in what each application created, the
+    // intersection guard tests it. The scheduler sets one for a scope
+    // (AppliedHook, applied_hook.hpp), which puts back the one it replaced.
+    const std::function<void()>& appliedHook() const { return onApplied_; }
+    void setAppliedHook(std::function<void()> hook) { onApplied_ = std::move(hook); }
     // The scheduler's way to prepare and drop applications, and the back
     // ends' to report each one committed: they keep the thesis tool's
     // `.generation` (generations.hpp) when the grammar reads it.
     void prepareApplication(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng, long long step) {
-        if (tracksGenerations) {
+        if (tracksGenerations_) {
             const RuleInfo& i = info(rule);
             generations_.prepared(m, static_cast<int>(i.nodeKinds.size()), i.edgeCount, i.faceCount, g);
         }
@@ -243,19 +246,26 @@ public:
         discard();
     }
     void applicationDone(Graph& g) {
-        if (tracksGenerations) generations_.applied(g);
-        if (onApplied) onApplied();
+        if (tracksGenerations_) generations_.applied(g);
+        if (onApplied_) onApplied_();
     }
-    // Whether the grammar reads `.generation` (set by the back end).
-    bool tracksGenerations = false;
+    // Whether the grammar reads `.generation`.
+    bool tracksGenerations() const { return tracksGenerations_; }
     // The spatial index of negative conditions asking for a node near a
     // point (RuleInfo::nearKinds): the searches read it, IncrementalMatches
     // keeps it up to date while a derivation runs.
     NearQueries& nearQueries() { return near_; }
 
+protected:
+    // The back end says so (the interpreter when built, generated code in
+    // start()) for a grammar that reads `.generation`.
+    void setTracksGenerations(bool tracks) { tracksGenerations_ = tracks; }
+
 private:
     NearQueries near_;
     GenerationStamps generations_;
+    std::function<void()> onApplied_;
+    bool tracksGenerations_ = false;
 };
 
 // A runaway guard: a derivation stops with an error past this many nodes +

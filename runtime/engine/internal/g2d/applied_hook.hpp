@@ -1,5 +1,5 @@
 #pragma once
-// RuleSet::onApplied for the length of a scope.
+// RuleSet's applied hook for the length of a scope.
 #include <functional>
 #include <utility>
 
@@ -7,14 +7,14 @@
 
 namespace g2d::rt {
 
-// Sets rules.onApplied for a scope and puts back the hook it replaced,
-// however the scope ends.
+// Sets the rules' applied hook for a scope and puts back the hook it
+// replaced, however the scope ends.
 class AppliedHook {
 public:
-    AppliedHook(RuleSet& rules, std::function<void()> hook) : rules_(rules), previous_(rules.onApplied) {
-        rules_.onApplied = std::move(hook);
+    AppliedHook(RuleSet& rules, std::function<void()> hook) : rules_(rules), previous_(rules.appliedHook()) {
+        rules_.setAppliedHook(std::move(hook));
     }
-    ~AppliedHook() { rules_.onApplied = std::move(previous_); }
+    ~AppliedHook() { rules_.setAppliedHook(std::move(previous_)); }
     AppliedHook(const AppliedHook&) = delete;
     AppliedHook& operator=(const AppliedHook&) = delete;
 
