@@ -6,7 +6,9 @@ Also the runtime's two libraries (runtime/engine → g2d_engine, runtime/run →
 g2d_run, which builds on the engine):
   - every runtime #include names a header of the runtime (never the compiler),
     one the including library can see;
-  - public headers (LIB/include, installed) include no internal ones;
+  - public headers (LIB/include, installed) include no internal ones, and
+    each is reached from an entry point (ENTRIES): what embedding programs
+    and generated code include; a header nothing installed needs is internal;
   - the engine includes nothing of the run library, and none of the run
     library's third-party headers (CLI11, librsvg, cairo): embedding programs
     link the engine alone.
@@ -42,6 +44,9 @@ TOOLS = {
 }
 # The runtime's libraries, and those each may include (itself first).
 LIBRARIES = {"engine": ("engine",), "run": ("run", "engine")}
+# The public entry points: embedding programs include grammar.hpp, generated
+# code compiled.hpp, and a generated program with a main run_options.hpp.
+ENTRIES = ("grammar.hpp", "compiled.hpp", "run_options.hpp")
 # Third-party headers only the run library may include (<...>).
 RUN_ONLY_SYSTEM = re.compile(r"^(CLI/|librsvg/|cairo|gio/|glib)")
 
@@ -120,6 +125,22 @@ for lib, visible in LIBRARIES.items():
                     checked += 1
                     if lib == "engine" and RUN_ONLY_SYSTEM.match(inc):
                         failures.append("%s includes <%s>: the engine links no CLI11, librsvg or cairo" % (rel, inc))
+
+# Every public header is reached from an entry point through public headers.
+reached, todo = set(), [name for name in ENTRIES if name in HEADER]
+while todo:
+    name = todo.pop()
+    if name in reached or HEADER.get(name, (None, None))[1] != "include":
+        continue
+    reached.add(name)
+    lib = HEADER[name][0]
+    todo += [inc[4:] for inc in include.findall(read(os.path.join(root, "runtime", lib, "include", "g2d", name)))
+             if inc.startswith("g2d/")]
+for name, (lib, part) in sorted(HEADER.items()):
+    checked += 1
+    if part == "include" and name not in reached:
+        failures.append("runtime/%s/include/g2d/%s: public, but no entry point (%s) includes it: move it to internal/"
+                        % (lib, name, ", ".join(ENTRIES)))
 
 for f in failures:
     print("FAIL:", f)

@@ -39,6 +39,7 @@
 
 #include "g2d/angle_step.hpp"
 #include "g2d/command_list.hpp"
+#include "g2d/derivation_result.hpp"
 #include "g2d/drawing_cost.hpp"
 #include "g2d/generations.hpp"
 #include "g2d/graph.hpp"
@@ -272,8 +273,6 @@ private:
 // edges unless told otherwise (about 1 GB compiled).
 inline constexpr std::size_t kDefaultMaxElements = 10'000'000;
 
-enum class StopReason { Terminal, StepLimit };
-
 struct DerivationOptions {
     std::optional<long long> steps;               // global limit (none: unlimited)
     std::map<long long, long long> perPriority;   // priority -> limit
@@ -290,22 +289,7 @@ struct DerivationOptions {
     bool wholeDrawings = false;
 };
 
-struct DerivationResult {
-    long long steps = 0;
-    long long applications = 0;   // rewrites applied (a parallel step applies many)
-    long long rejectedDrawings = 0;   // `layout angles`: steps whose drawing was rejected (nothing applied)
-    long long rejectedByCost = 0;     // `layout angles` with a cost: proposals the Metropolis test refused (nothing applied)
-    long long rejectedSplits = 0;     // `layout angles { connected = true; }`: proposals refused for splitting what they touch
-    long long bendsReduced = 0;       // bent edges (edge_bends.hpp) whose bend was cut to keep the drawing planar
-    StopReason stopped = StopReason::Terminal;
-    double seconds = 0;
-    // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.
-    long long lookaheadGuesses = 0, lookaheadHits = 0;
-    // Rule sets repaired after steps, and left as they were because their
-    // step changed no kind or attribute their rule reads (RuleInfo::readKinds,
-    // readValues).
-    long long setRepairs = 0, setRepairsSkipped = 0;
-};
+// StopReason and DerivationResult: derivation_result.hpp.
 
 // Called after every step (for progress displays).
 using StepObserver = std::function<void(long long step, const Graph& g)>;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "g2d/derive_grammar.hpp"
+#include "g2d/graph.hpp"
 #include "g2d/run_outputs.hpp"
 
 namespace g2d {
@@ -49,6 +50,10 @@ rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
     return last_;
 }
 
+GraphView Grammar::view() const { return GraphView(run_->graph(), run_->jsonSchema().kindNames); }
+
+const rt::Graph& Grammar::graph() const { return run_->graph(); }
+
 rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::string& name) const {
     const int kind = run_->graph().kindOf(cls, id);
     const auto& names = run_->jsonSchema().attrNames.at(static_cast<std::size_t>(kind));
@@ -86,6 +91,14 @@ std::string Grammar::json() {
     rt::StringOut text;
     rt::RunOutputs out = lastRun(fileName_, seed_, last_);
     out.json = &text;
+    rt::writeRunOutputs(*run_, out);
+    return std::move(text.text());
+}
+
+std::string Grammar::obj() {
+    rt::StringOut text;
+    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
+    out.obj = &text;
     rt::writeRunOutputs(*run_, out);
     return std::move(text.text());
 }

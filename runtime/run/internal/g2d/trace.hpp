@@ -10,6 +10,7 @@
 
 #include "g2d/derivation.hpp"
 #include "g2d/grammar_run.hpp"
+#include "g2d/svg_writer.hpp"   // DrawItem
 
 namespace g2d::rt {
 
