@@ -142,7 +142,7 @@ class Suite:
             "bytes_per_element": rss / max(elements, 1),
             "interp_seconds": interp["seconds"] if interp else None,
             "original": original,
-            # Sequential picks guessed a step ahead for prefetching (runtime/include/g2d/pick_lookahead.hpp).
+            # Sequential picks guessed a step ahead for prefetching (runtime/engine/internal/g2d/pick_lookahead.hpp).
             "guesses": compiled.get("lookahead_guesses", 0),
             "hits": compiled.get("lookahead_hits", 0),
         }

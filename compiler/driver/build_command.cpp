@@ -33,10 +33,11 @@ int fail(const std::string& message) {
     return 1;
 }
 
-// Where the runtime's headers and library are: next to an installed g2d
-// (PREFIX/bin/g2d → PREFIX/include, PREFIX/lib), else the build tree.
+// Where the runtime's headers and libraries are: next to an installed g2d
+// (PREFIX/bin/g2d → PREFIX/include, PREFIX/lib), else the build tree. A
+// program with a main links g2d_run, then the g2d_engine it builds on.
 struct RuntimePaths {
-    std::string include, library;
+    std::vector<std::string> includes, libraries;
 };
 
 std::optional<RuntimePaths> findRuntime() {
@@ -44,12 +45,16 @@ std::optional<RuntimePaths> findRuntime() {
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) {
         const fs::path prefix = exe.parent_path().parent_path();
-        for (const char* lib : {"lib/libg2d_runtime.a", "lib64/libg2d_runtime.a"})
-            if (fs::exists(prefix / "include/g2d/compiled.hpp", ec) && fs::exists(prefix / lib, ec))
-                return RuntimePaths{(prefix / "include").string(), (prefix / lib).string()};
+        for (const char* lib : {"lib", "lib64"}) {
+            const fs::path run = prefix / lib / "libg2d_run.a", engine = prefix / lib / "libg2d_engine.a";
+            if (fs::exists(prefix / "include/g2d/compiled.hpp", ec) && fs::exists(run, ec) && fs::exists(engine, ec))
+                return RuntimePaths{{(prefix / "include").string()}, {run.string(), engine.string()}};
+        }
     }
-#if defined(G2D_BUILD_RUNTIME_INCLUDE) && defined(G2D_BUILD_RUNTIME_LIB)
-    if (fs::exists(G2D_BUILD_RUNTIME_LIB, ec)) return RuntimePaths{G2D_BUILD_RUNTIME_INCLUDE, G2D_BUILD_RUNTIME_LIB};
+#if defined(G2D_BUILD_ENGINE_INCLUDE) && defined(G2D_BUILD_RUN_INCLUDE) && defined(G2D_BUILD_ENGINE_LIB) && \
+    defined(G2D_BUILD_RUN_LIB)
+    if (fs::exists(G2D_BUILD_RUN_LIB, ec) && fs::exists(G2D_BUILD_ENGINE_LIB, ec))
+        return RuntimePaths{{G2D_BUILD_ENGINE_INCLUDE, G2D_BUILD_RUN_INCLUDE}, {G2D_BUILD_RUN_LIB, G2D_BUILD_ENGINE_LIB}};
 #endif
     return std::nullopt;
 }
@@ -125,7 +130,7 @@ int runBuild(const BuildOptions& options) {
     auto code = emitFor(options.file);
     if (!code) return 1;
     const auto runtime = findRuntime();
-    if (!runtime) return fail("cannot find the g2d runtime (include/g2d and lib/libg2d_runtime.a next to g2d, or the build tree)");
+    if (!runtime) return fail("cannot find the g2d runtime (include/g2d, lib/libg2d_run.a and lib/libg2d_engine.a next to g2d, or the build tree)");
     const char* envCxx = std::getenv("CXX");
     const std::string cxxName = options.cxx.value_or(envCxx && *envCxx ? envCxx : "c++");
     const auto cxx = findProgram(cxxName);
@@ -150,8 +155,11 @@ int runBuild(const BuildOptions& options) {
         return fail("cannot write `" + options.output + "`: it is a directory");
     }
     const fs::path temp = target.string() + ".tmp-" + std::to_string(getpid());
-    std::vector<std::string> args = {*cxx, "-std=c++20", "-O" + level, "-ffp-contract=off", "-I", runtime->include, cpp.string(),
-                                     runtime->library, "-o", temp.string()};
+    std::vector<std::string> args = {*cxx, "-std=c++20", "-O" + level, "-ffp-contract=off"};
+    for (const auto& dir : runtime->includes) args.insert(args.end(), {"-I", dir});
+    args.push_back(cpp.string());
+    args.insert(args.end(), runtime->libraries.begin(), runtime->libraries.end());
+    args.insert(args.end(), {"-o", temp.string()});
 #ifdef G2D_RUNTIME_LIBS
     // The runtime's own libraries (librsvg and cairo: PNG output), after it.
     for (const auto& f : splitFlags(G2D_RUNTIME_LIBS)) args.insert(args.end() - 2, f);

@@ -10,7 +10,7 @@ using rt::kNoId;
 using rt::NodeId;
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st), lowered_(*st.lowered) {
-    tracksGenerations = st.prog->tracksGenerations;
+    setTracksGenerations(st.prog->tracksGenerations);
     std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
     for (const auto& rule : lowered_.rules) {
         const lower::RuleFacts& facts = rule.facts;

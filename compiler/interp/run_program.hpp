@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "g2d/run_driver.hpp"
+#include "g2d/derive_grammar.hpp"
 #include "interp/interpreted_run.hpp"
 
 namespace g2d::interp {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Many seeds (`--seeds A..B -j N`, runtime/internal/g2d/seed_batch.hpp): each
+# Many seeds (`--seeds A..B -j N`, runtime/run/internal/g2d/seed_batch.hpp): each
 # seed's files equal a run of that seed alone (interpreted and compiled), the
 # summary has one line per seed in seed order whatever -j, failing seeds are
 # reported with a non-zero exit, and bad arguments exit 2 with a clear message.

@@ -18,7 +18,7 @@ PREFIXES = ["", "compiler/", "tools/", "runtime/", "runtime/engine/", "runtime/r
 SOURCE_DIRS = ["docs", "compiler", "runtime", "tools", "tests", "cmake", "web/view/src", "grammar", "bench", "scripts", "editors"]
 EXTENSIONS = (".cpp", ".hpp", ".py", ".sh", ".g4", ".md", ".cmake", ".vim", ".js", ".txt", ".in")
 # Words that look like paths or names but are neither (a library, placeholders).
-NOT_NAMES = {"three.js", "fnName", "fn::fnName"}
+NOT_NAMES = {"three.js", "fnName", "fn::fnName", "g2d/NAME.hpp"}
 
 sources = {}
 basenames = set()

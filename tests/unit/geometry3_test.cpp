@@ -1,4 +1,4 @@
-// The G^3 geometry kernel (runtime/include/g2d/geometry3.hpp): every branch
+// The G^3 geometry kernel (runtime/engine/internal/g2d/geometry3.hpp): every branch
 // of the intersection tests on hand-built cases with exact answers, the same
 // answers scaled and moved, triangulations checked triangle by triangle,
 // areas and normals.

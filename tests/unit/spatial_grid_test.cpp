@@ -1,4 +1,4 @@
-// The spatial hash grids (runtime/include/g2d/spatial_grid.hpp): small cases
+// The spatial hash grids (runtime/engine/include/g2d/spatial_grid.hpp): small cases
 // with exact answers, then random points and boxes against brute force
 // through inserts, removals and moves, including queries larger than the
 // table (which scan it) and boxes too big for the cells.

@@ -1,4 +1,4 @@
-// The script of the page `g2d run --view OUT.html` writes (runtime/src/view_page.cpp):
+// The script of the page `g2d run --view OUT.html` writes (runtime/run/src/pages/view_page.cpp):
 // reads the model from <script id="g2d-model"> and shows it with three.js —
 // faces as one flat-shaded mesh, edges as line segments, nodes as spheres —
 // with orbit controls. Bundled by esbuild into one file that the runtime

@@ -300,7 +300,7 @@ std::size_t Scheduler::applyCommand(std::size_t r, const MatchSet& set, long lon
         IntersectionGuard guard;
         guard.begin(g_);
         auto from = IntersectionGuard::capacities(g_);
-        const std::function<void()> previous = rules_.onApplied;
+        const std::function<void()> previous = rules_.appliedHook();
         AppliedHook hook(rules_, [&] {
             const auto to = IntersectionGuard::capacities(g_);
             guard.admit(g_, from, to);

@@ -1,7 +1,5 @@
 #include "g2d/run_driver.hpp"
 
-#include "g2d/drawn_faces.hpp"
-#include "g2d/edge_bends.hpp"
 #include "g2d/projection.hpp"
 
 #include <chrono>
@@ -12,12 +10,11 @@
 #include <unistd.h>
 
 #include "g2d/atomic_file.hpp"
-#include "g2d/obj_writer.hpp"
 #include "g2d/image_links.hpp"
 #include "g2d/png_writer.hpp"
+#include "g2d/run_outputs.hpp"
 #include "g2d/seed_batch.hpp"
 #include "g2d/trace.hpp"
-#include "g2d/source_excerpt.hpp"
 #include "g2d/view_page.hpp"
 
 namespace g2d::rt {
@@ -92,47 +89,7 @@ private:
     std::chrono::steady_clock::time_point start_, last_;
 };
 
-const char* stopName(StopReason r) { return r == StopReason::Terminal ? "terminal" : "step_limit"; }
-
 }  // namespace
-
-std::string renderLocatedError(const SourceLocation& at, const std::string& message) {
-    std::string out = at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.col) + ": error: " + message + "\n";
-    if (at.line == 0) return out;
-    const Excerpt ex = excerptLine(at.lineText, at.col, at.endCol);
-    return out + "  " + ex.line + "\n  " + std::string(ex.pad, ' ') + "^" + std::string(ex.width - 1, '~') + "\n";
-}
-
-void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed, const RunSettings& settings,
-                   DerivedRun& out, const StepObserver& observer, RunProgress* progress, TraceRecorder* trace) {
-    out = DerivedRun{};
-    Rng rng(seed);
-    grammar.start(params, rng);
-    if (trace) trace->started();
-    if (progress) *progress = RunProgress{true, 0};
-    DerivationOptions options;
-    const std::optional<long long> grammarLimit = grammar.stepLimit();
-    out.canvas = grammar.canvas();   // checked even when --viewbox overrides it, as the limit is
-    options.steps = settings.steps ? settings.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
-    options.perPriority = grammar.priorityLimits();
-    options.maxElements = settings.maxElements;
-    options.timeoutSeconds = settings.timeoutSeconds;
-    options.verifyMatches = settings.verifyMatches;
-    options.wholeDrawings = settings.wholeDrawings;
-    options.drawingCanvas = out.canvas;
-    derive(
-        grammar.graph(), grammar.rules(), rng, options, out.result,
-        [&](long long s, const Graph& g) {
-            if (progress) progress->step = s;
-            if (observer) observer(s, g);
-        },
-        trace);
-    if (const AngleLayoutSpec* layout = grammar.rules().angleLayout()) {
-        addDrawnFaces(grammar.graph(), grammar.rules(), *layout, out.result.steps);
-        out.result.bendsReduced = bendEdges(grammar.graph(), *layout, rng).reduced;
-    }
-    out.hitDefaultLimit = out.result.stopped == StopReason::StepLimit && !settings.steps && !grammarLimit;
-}
 
 namespace {
 
@@ -251,17 +208,15 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
     try {
         const Graph& graph = grammar.graph();
         const std::string name = std::filesystem::path(request.grammarFile).filename().string();
-        // The SVG is streamed, its items made one at a time; the trace page,
-        // small by design, embeds it whole.
-        const bool space3d = grammar.jsonSchema().space3d;
-        const ItemMaker drawn = [&](ElemClass cls, std::uint32_t id, DrawItem& it) {
-            grammar.drawItem(cls, id, it);
-            if (space3d) projectItem(it, graph, view);
-        };
-        SvgOptions svgOptions;
-        svgOptions.compact = request.svgCompact;
-        svgOptions.precision = request.precision;
-        svgOptions.viewBox = viewBox ? viewBox : derived.canvas;   // --viewbox > canvas > fitted
+        RunOutputs outputs;
+        outputs.svgOptions.compact = request.svgCompact;
+        outputs.svgOptions.precision = request.precision;
+        outputs.svgOptions.viewBox = viewBox ? viewBox : derived.canvas;   // --viewbox > canvas > fitted
+        outputs.view = view;
+        outputs.grammarName = name;
+        outputs.seed = request.seed;
+        outputs.steps = result.steps;
+        outputs.stopped = stopped;
         // Images are named relative to the grammar; the SVG links them from
         // where it is written (a PNG is rendered with the grammar's folder as base).
         const bool png = svgFile && request.svgOut && isPngPath(*request.svgOut);
@@ -269,13 +224,18 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                                              : request.traceHtml.value_or(".");
         ImageLinks images(request.grammarFile, svgPlace, request.embedImages);
         if (!png || request.embedImages)
-            svgOptions.imageHref = [&images](const std::string& href) { return images.href(href); };
+            outputs.svgOptions.imageHref = [&images](const std::string& href) { return images.href(href); };
+        // The SVG is streamed into its file, but made whole in memory for a
+        // PNG (which librsvg renders) and for the trace page (which embeds it).
+        StringOut svgText;
+        const bool svgWhole = png || traceHtmlFile;
+        outputs.svg = svgWhole ? static_cast<TextOut*>(&svgText) : svgFile.get();
+        outputs.json = jsonFile.get();
+        outputs.obj = objFile.get();
+        writeRunOutputs(grammar, outputs);
         std::string svg;
+        if (svgWhole) svg = std::move(svgText.text());
         if (png) {
-            // A PNG: the SVG, made whole in memory, rendered by librsvg.
-            StringOut text;
-            writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
-            svg = std::move(text.text());
             PngOptions png;
             png.dpi = request.dpi;
             png.width = request.width;
@@ -287,34 +247,19 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                 throw OutputError("cannot write `" + *request.svgOut + "`: " + e.what());
             }
             svgFile->commit(bytes);
-        } else if (traceHtmlFile) {
-            StringOut text;
-            writeSvg(graph, drawn, grammar.svgDefs(), text, svgOptions);
-            svg = std::move(text.text());
-            if (svgFile) svgFile->commit(svg);
         } else if (svgFile) {
-            writeSvg(graph, drawn, grammar.svgDefs(), *svgFile, svgOptions);
-            svgFile->commit();
+            if (svgWhole)
+                svgFile->commit(svg);
+            else
+                svgFile->commit();
         }
         if (trace) {
             const std::string data = trace->json(name, request.seed, stopped);
             if (traceJsonFile) traceJsonFile->commit(data);
             if (traceHtmlFile) traceHtmlFile->commit(writeTracePage(data, svg, name));
         }
-        if (jsonFile) {
-            const std::vector<std::pair<std::string, Value>> meta = {
-                {"grammar", name},
-                {"seed", static_cast<long long>(request.seed)},
-                {"steps", result.steps},
-                {"stopped", stopped}};
-            writeJson(graph, grammar.jsonSchema(), meta, *jsonFile,
-                      [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); });
-            jsonFile->commit();
-        }
-        if (objFile) {
-            writeObj(graph, grammar.jsonSchema(), *objFile);
-            objFile->commit();
-        }
+        if (jsonFile) jsonFile->commit();
+        if (objFile) objFile->commit();
         if (viewFile) {
             ViewModel model = viewModelOf(graph, grammar.drawItems(), name);
             if (grammar.jsonSchema().space3d) model.home = view.toward;   // the SVG's view, z up

@@ -12,16 +12,10 @@
 #include <vector>
 
 #include "g2d/graph.hpp"
+#include "g2d/json_schema.hpp"
 #include "g2d/text_out.hpp"
 
 namespace g2d::rt {
-
-struct JsonSchema {
-    std::vector<std::string> kindNames;
-    std::vector<std::vector<std::string>> attrNames;      // per kind
-    std::vector<std::vector<std::string>> enumValueNames; // per enum
-    bool space3d = false;                                 // positions have a z; nodes a radius
-};
 
 // Reads attribute `attr` of a node or edge (back ends store them their own way).
 using AttributeReader = std::function<Value(ElemClass cls, std::uint32_t id, int attr)>;

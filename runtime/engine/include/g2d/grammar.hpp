@@ -1,5 +1,6 @@
 #pragma once
-// The C++ API for programs that embed compiled grammars:
+// The C++ API for programs that embed compiled grammars. They link the
+// engine alone (g2d::engine: no librsvg, cairo or CLI11):
 //
 //   // CMakeLists.txt:  find_package(g2d)  g2d_add_grammar(app koch.g2d)
 //   #include <g2d/grammar.hpp>
@@ -8,15 +9,28 @@
 //   g.set("max_lod", "3");                        // parameters, as with -D
 //   g.setSeed(42);
 //   g.derive();                                   // or derive(steps)
-//   const g2d::rt::Graph& graph = g.graph();      // nodes, edges, positions
-//   std::string svg = g.svg(), json = g.json();   // the same bytes as g2d run
+//   g2d::GraphView graph = g.view();              // nodes, edges, faces, kinds, positions
+//   g2d::rt::Value lod = g.attribute(g2d::rt::ElemClass::Edge, 0, "lod");
+//   std::string svg = g.svg(), json = g.json(), obj = g.obj();   // the same bytes as g2d run
+//
+// This header includes little on purpose: values (value.hpp), element
+// classes, a derivation's result, the read-only view (graph_view.hpp) and
+// the interface a compiled grammar implements (grammar_run.hpp, which only
+// declares the graph store and the rules; it must be complete here, as the
+// factory's std::unique_ptr is destroyed where it is called). A program that needs the whole
+// store (styles, ages, incidence lists) includes <g2d/graph.hpp> and reads
+// graph().
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "g2d/derivation_result.hpp"
+#include "g2d/elem_class.hpp"
 #include "g2d/grammar_run.hpp"
+#include "g2d/graph_view.hpp"
+#include "g2d/value.hpp"
 
 // Declares the factory that g2d_add_grammar(TARGET FILE NAME name) generates.
 #define G2D_DECLARE_GRAMMAR(name) std::unique_ptr<g2d::rt::GrammarRun> g2d_grammar_##name();
@@ -25,6 +39,7 @@ namespace g2d {
 
 class Grammar {
 public:
+    // `fileName` names the grammar in messages and in the JSON's "grammar".
     explicit Grammar(std::unique_ptr<rt::GrammarRun> run, std::string fileName = "grammar.g2d");
 
     std::vector<std::string> parameterNames() const;
@@ -37,10 +52,20 @@ public:
     // with the grammar's source location in the message.
     rt::DerivationResult derive(std::optional<long long> steps = std::nullopt);
 
-    const rt::Graph& graph() const { return run_->graph(); }
+    // The graph as derived, read only (see graph_view.hpp).
+    GraphView view() const;
+    // An element's attribute by name; throws std::invalid_argument when its
+    // kind has none of that name.
     rt::Value attribute(rt::ElemClass cls, std::uint32_t id, const std::string& name) const;
+    // The whole store: include <g2d/graph.hpp> to use it.
+    const rt::Graph& graph() const;
+
+    // The outputs of `g2d run` with this seed and the same parameters, byte
+    // for byte: the SVG (framed by the grammar's canvas, else fitted; a 3D
+    // model seen from g2d run's default view), the JSON, the OBJ.
     std::string svg();
     std::string json();
+    std::string obj();
 
 private:
     std::unique_ptr<rt::GrammarRun> run_;

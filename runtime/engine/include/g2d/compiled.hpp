@@ -1,7 +1,10 @@
 #pragma once
-// What generated grammar code includes: the runtime's public headers and a
+// What generated grammar code includes: the engine's public headers and a
 // few helpers that keep generated code short. Generated code calls the same
 // runtime functions as the interpreter, so both compute the same bits.
+// A generated program with a main (`g2d build`) also includes
+// g2d/run_options.hpp, of the g2d_run library; a grammar compiled for
+// embedding (g2d_add_grammar) needs the engine alone.
 #include <array>
 #include <cmath>
 #include <functional>
@@ -28,8 +31,6 @@
 #include "g2d/placement.hpp"
 #include "g2d/prefetch.hpp"
 #include "g2d/rng.hpp"
-#include "g2d/run_driver.hpp"
-#include "g2d/run_options.hpp"
 #include "g2d/svg_writer.hpp"
 #include "g2d/value.hpp"
 #include "g2d/vec_math.hpp"

@@ -3,19 +3,28 @@
 // it by walking the IR; a compiled grammar by generated code. The driver
 // (run_driver.hpp) does everything else the same way for both: parameters,
 // outputs, the derivation, statistics and error messages.
+//
+// It declares the store, the rules and the drawing's items without
+// including them: embedding programs hold a GrammarRun (grammar.hpp) but
+// need none of those headers; back ends include what they implement.
+#include <cstdint>
 #include <exception>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "g2d/derivation.hpp"
-#include "g2d/draw_items.hpp"
-#include "g2d/json_writer.hpp"
+#include "g2d/elem_class.hpp"
+#include "g2d/json_schema.hpp"
 #include "g2d/param_parse.hpp"
-#include "g2d/svg_writer.hpp"
 #include "g2d/view_box.hpp"
 
 namespace g2d::rt {
+
+class Graph;      // graph.hpp
+class RuleSet;    // derivation.hpp
+class Rng;        // rng.hpp
+struct DrawItem;  // svg_writer.hpp
 
 struct ParamSpec {
     std::string name;
@@ -51,9 +60,8 @@ public:
 
     // The item of one live element (outputs make them one at a time).
     virtual void drawItem(ElemClass cls, std::uint32_t id, DrawItem& out) = 0;
-    std::vector<DrawItem> drawItems() {
-        return rt::drawItems(graph(), [this](ElemClass cls, std::uint32_t id, DrawItem& out) { drawItem(cls, id, out); });
-    }
+    // Every live element's item at once (the small pages: trace, view).
+    std::vector<DrawItem> drawItems();
     virtual const std::vector<std::string>& svgDefs() const = 0;
     virtual const JsonSchema& jsonSchema() const = 0;
     virtual Value attribute(ElemClass cls, std::uint32_t id, int attr) const = 0;

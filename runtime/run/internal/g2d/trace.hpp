@@ -10,6 +10,7 @@
 
 #include "g2d/derivation.hpp"
 #include "g2d/grammar_run.hpp"
+#include "g2d/svg_writer.hpp"   // DrawItem
 
 namespace g2d::rt {
 
@@ -47,7 +48,7 @@ public:
     explicit TraceRecorder(GrammarRun& grammar) : grammar_(grammar) {}
 
     // The axiom (call after GrammarRun::start).
-    void started();
+    void started() override;
     void applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) override;
     void stepDone(long long step, const Graph& g) override;
 

@@ -39,6 +39,7 @@
 
 #include "g2d/angle_step.hpp"
 #include "g2d/command_list.hpp"
+#include "g2d/derivation_result.hpp"
 #include "g2d/drawing_cost.hpp"
 #include "g2d/generations.hpp"
 #include "g2d/graph.hpp"
@@ -225,14 +226,17 @@ public:
         (void)compound, (void)m, (void)g, (void)rng;
         return {};
     }
-    // Called by commit() after each application it makes, when set (compound
-    // scopes take in what each application created).
-    std::function<void()> onApplied;
+    // The hook applicationDone calls after each application, when set:
+    // compound scopes take in what each application created, the
+    // intersection guard tests it. The scheduler sets one for a scope
+    // (AppliedHook, applied_hook.hpp), which puts back the one it replaced.
+    const std::function<void()>& appliedHook() const { return onApplied_; }
+    void setAppliedHook(std::function<void()> hook) { onApplied_ = std::move(hook); }
     // The scheduler's way to prepare and drop applications, and the back
     // ends' to report each one committed: they keep the thesis tool's
     // `.generation` (generations.hpp) when the grammar reads it.
     void prepareApplication(std::size_t rule, std::size_t daughter, Match m, const Graph& g, Rng& rng, long long step) {
-        if (tracksGenerations) {
+        if (tracksGenerations_) {
             const RuleInfo& i = info(rule);
             generations_.prepared(m, static_cast<int>(i.nodeKinds.size()), i.edgeCount, i.faceCount, g);
         }
@@ -243,26 +247,31 @@ public:
         discard();
     }
     void applicationDone(Graph& g) {
-        if (tracksGenerations) generations_.applied(g);
-        if (onApplied) onApplied();
+        if (tracksGenerations_) generations_.applied(g);
+        if (onApplied_) onApplied_();
     }
-    // Whether the grammar reads `.generation` (set by the back end).
-    bool tracksGenerations = false;
+    // Whether the grammar reads `.generation`.
+    bool tracksGenerations() const { return tracksGenerations_; }
     // The spatial index of negative conditions asking for a node near a
     // point (RuleInfo::nearKinds): the searches read it, IncrementalMatches
     // keeps it up to date while a derivation runs.
     NearQueries& nearQueries() { return near_; }
 
+protected:
+    // The back end says so (the interpreter when built, generated code in
+    // start()) for a grammar that reads `.generation`.
+    void setTracksGenerations(bool tracks) { tracksGenerations_ = tracks; }
+
 private:
     NearQueries near_;
     GenerationStamps generations_;
+    std::function<void()> onApplied_;
+    bool tracksGenerations_ = false;
 };
 
 // A runaway guard: a derivation stops with an error past this many nodes +
 // edges unless told otherwise (about 1 GB compiled).
 inline constexpr std::size_t kDefaultMaxElements = 10'000'000;
-
-enum class StopReason { Terminal, StepLimit };
 
 struct DerivationOptions {
     std::optional<long long> steps;               // global limit (none: unlimited)
@@ -280,22 +289,7 @@ struct DerivationOptions {
     bool wholeDrawings = false;
 };
 
-struct DerivationResult {
-    long long steps = 0;
-    long long applications = 0;   // rewrites applied (a parallel step applies many)
-    long long rejectedDrawings = 0;   // `layout angles`: steps whose drawing was rejected (nothing applied)
-    long long rejectedByCost = 0;     // `layout angles` with a cost: proposals the Metropolis test refused (nothing applied)
-    long long rejectedSplits = 0;     // `layout angles { connected = true; }`: proposals refused for splitting what they touch
-    long long bendsReduced = 0;       // bent edges (edge_bends.hpp) whose bend was cut to keep the drawing planar
-    StopReason stopped = StopReason::Terminal;
-    double seconds = 0;
-    // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.
-    long long lookaheadGuesses = 0, lookaheadHits = 0;
-    // Rule sets repaired after steps, and left as they were because their
-    // step changed no kind or attribute their rule reads (RuleInfo::readKinds,
-    // readValues).
-    long long setRepairs = 0, setRepairsSkipped = 0;
-};
+// StopReason and DerivationResult: derivation_result.hpp.
 
 // Called after every step (for progress displays).
 using StepObserver = std::function<void(long long step, const Graph& g)>;
@@ -305,6 +299,8 @@ using StepObserver = std::function<void(long long step, const Graph& g)>;
 class StepTracer {
 public:
     virtual ~StepTracer() = default;
+    // The axiom is built, before the first step (deriveGrammar calls it).
+    virtual void started() {}
     virtual void applying(std::size_t rule, std::size_t daughter, Match m, const Graph& g) = 0;
     virtual void stepDone(long long step, const Graph& g) = 0;
 };

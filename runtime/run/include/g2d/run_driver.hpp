@@ -8,15 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "g2d/derivation.hpp"
+#include "g2d/derive_grammar.hpp"
 #include "g2d/grammar_run.hpp"
 
 namespace g2d::rt {
 
-class TraceRecorder;   // --trace (runtime-internal)
 struct RunOutcome;
-
-inline constexpr long long kDefaultStepLimit = 10000;
 
 struct RunRequest {
     std::string program = "g2d run";      // who reports usage and output errors ("g2d run", or a compiled program's name)
@@ -59,35 +56,6 @@ struct RunOutcome {
     std::string stopped;                  // as in the JSON output ("terminal", "max_elements", "error", …)
 };
 
-// The bounds of one derivation.
-struct RunSettings {
-    std::optional<long long> steps;       // overrides the grammar's global limit
-    std::size_t maxElements = kDefaultMaxElements;
-    std::optional<double> timeoutSeconds;
-    bool verifyMatches = false;
-    bool wholeDrawings = false;           // DerivationOptions::wholeDrawings (tests)
-};
-
-// How far a derivation got (kept up to date while it runs, for errors).
-struct RunProgress {
-    bool started = false;                 // the axiom was built; the graph is a completed step
-    long long step = 0;                   // the last completed step
-};
-
-struct DerivedRun {
-    DerivationResult result;
-    bool hitDefaultLimit = false;    // stopped by kDefaultStepLimit: the grammar sets no limit
-    std::optional<ViewBox> canvas;   // the grammar's `canvas`, evaluated with the parameters
-};
-
-// Starts the grammar with `params` and derives it with a generator seeded by
-// `seed`. `progress` follows the derivation (for error messages).
-// With `trace`, every step is recorded. `out` is kept up to date, so after an
-// exception it describes the completed steps.
-void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::uint64_t seed, const RunSettings& settings,
-                   DerivedRun& out, const StepObserver& observer = {}, RunProgress* progress = nullptr,
-                   TraceRecorder* trace = nullptr);
-
 // Runs and writes the outputs. Returns the exit code: 0 done, 1 a run-time
 // error, a resource bound hit (elements, time, the default step limit when
 // the grammar sets none) or an unwritable output, 2 bad arguments. Messages
@@ -95,8 +63,5 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
 // all; after an error only with `keepPartial` (the last completed step, and
 // the JSON's "stopped" says why).
 int runGrammar(const RunRequest& request, GrammarRun& grammar);
-
-// `FILE:LINE:COL: error: MESSAGE`, the source line and a caret.
-std::string renderLocatedError(const SourceLocation& at, const std::string& message);
 
 }  // namespace g2d::rt

@@ -1,11 +1,11 @@
 #include "g2d/grammar.hpp"
 
-#include "g2d/projection.hpp"
-
 #include <filesystem>
 #include <stdexcept>
 
-#include "g2d/run_driver.hpp"
+#include "g2d/derive_grammar.hpp"
+#include "g2d/graph.hpp"
+#include "g2d/run_outputs.hpp"
 
 namespace g2d {
 
@@ -50,6 +50,10 @@ rt::DerivationResult Grammar::derive(std::optional<long long> steps) {
     return last_;
 }
 
+GraphView Grammar::view() const { return GraphView(run_->graph(), run_->jsonSchema().kindNames); }
+
+const rt::Graph& Grammar::graph() const { return run_->graph(); }
+
 rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::string& name) const {
     const int kind = run_->graph().kindOf(cls, id);
     const auto& names = run_->jsonSchema().attrNames.at(static_cast<std::size_t>(kind));
@@ -59,22 +63,44 @@ rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::str
                                 "` has no attribute `" + name + "`");
 }
 
+namespace {
+
+// The outputs' description of the last derivation (the JSON's "graph" object),
+// as g2d run gives it without options; the caller adds a sink.
+rt::RunOutputs lastRun(const std::string& fileName, std::uint64_t seed, const rt::DerivationResult& last) {
+    rt::RunOutputs out;
+    out.grammarName = std::filesystem::path(fileName).filename().string();
+    out.seed = seed;
+    out.steps = last.steps;
+    out.stopped = rt::stopName(last.stopped);
+    return out;
+}
+
+}  // namespace
+
 std::string Grammar::svg() {
-    std::vector<rt::DrawItem> items = run_->drawItems();
-    if (run_->jsonSchema().space3d) rt::projectDrawing(items, run_->graph(), rt::viewFrom(rt::kDefaultViewFrom));
-    rt::SvgOptions options;
-    options.viewBox = run_->canvas();   // as g2d run without --viewbox
-    return rt::writeSvg(std::move(items), run_->svgDefs(), options);
+    rt::StringOut text;
+    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
+    out.svg = &text;
+    out.svgOptions.viewBox = run_->canvas();   // as g2d run without --viewbox
+    rt::writeRunOutputs(*run_, out);
+    return std::move(text.text());
 }
 
 std::string Grammar::json() {
-    const std::vector<std::pair<std::string, rt::Value>> meta = {
-        {"grammar", std::filesystem::path(fileName_).filename().string()},
-        {"seed", static_cast<long long>(seed_)},
-        {"steps", last_.steps},
-        {"stopped", std::string(last_.stopped == rt::StopReason::Terminal ? "terminal" : "step_limit")}};
-    return rt::writeJson(run_->graph(), run_->jsonSchema(), meta,
-                         [&](rt::ElemClass cls, std::uint32_t id, int a) { return run_->attribute(cls, id, a); });
+    rt::StringOut text;
+    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
+    out.json = &text;
+    rt::writeRunOutputs(*run_, out);
+    return std::move(text.text());
+}
+
+std::string Grammar::obj() {
+    rt::StringOut text;
+    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
+    out.obj = &text;
+    rt::writeRunOutputs(*run_, out);
+    return std::move(text.text());
 }
 
 }  // namespace g2d
