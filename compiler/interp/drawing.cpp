@@ -6,7 +6,7 @@ namespace g2d::interp {
 
 void drawItem(const rt::Graph& g, const ProgramState& st, const std::vector<std::vector<std::string>>& enumNames,
               rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) {
-    const ir::Program& prog = *st.prog;
+    const ir::Program& prog = st.program();
     EvalFrame f = st.frame(nullptr);
     f.graph = &g;
     rt::drawItem(g, cls, id, enumNames, [&](rt::DrawItem& item, int kind) {
@@ -18,7 +18,7 @@ void drawItem(const rt::Graph& g, const ProgramState& st, const std::vector<std:
 
 std::vector<rt::DrawItem> drawItems(const rt::Graph& g, const ProgramState& st) {
     std::vector<std::vector<std::string>> enumNames;
-    for (const auto& e : st.prog->enums) enumNames.push_back(e.values);
+    for (const auto& e : st.program().enums) enumNames.push_back(e.values);
     return rt::drawItems(g, [&](rt::ElemClass cls, std::uint32_t id, rt::DrawItem& out) {
         drawItem(g, st, enumNames, cls, id, out);
     });

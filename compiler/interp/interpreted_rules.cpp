@@ -10,7 +10,7 @@ using rt::kNoId;
 using rt::NodeId;
 
 InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st), lowered_(*st.lowered) {
-    setTracksGenerations(st.prog->tracksGenerations);
+    setTracksGenerations(st.program().tracksGenerations);
     std::size_t maxNodes = 0, maxEdges = 0, maxFaces = 0;
     for (const auto& rule : lowered_.rules) {
         const lower::RuleFacts& facts = rule.facts;
@@ -35,14 +35,14 @@ InterpretedRules::InterpretedRules(const ProgramState& st) : st_(st), lowered_(*
 
 // ---- `layout angles`' cost ---------------------------------------------------------
 
-bool InterpretedRules::hasDrawingCost() const { return st_.prog->angleLayout && st_.prog->angleLayout->cost; }
+bool InterpretedRules::hasDrawingCost() const { return st_.program().angleLayout && st_.program().angleLayout->cost; }
 
 double InterpretedRules::drawingCost(const rt::KindCounts& counts) {
-    return checkedNumber(*st_.prog->angleLayout->cost, &counts, rt::checkedCost);
+    return checkedNumber(*st_.program().angleLayout->cost, &counts, rt::checkedCost);
 }
 
 double InterpretedRules::drawingTemperature() {
-    const auto& layout = st_.prog->angleLayout;
+    const auto& layout = st_.program().angleLayout;
     return layout && layout->temperature ? checkedNumber(*layout->temperature, nullptr, rt::checkedTemperature) : 1;
 }
 
@@ -268,7 +268,7 @@ void InterpretedRules::collect(const rt::Graph& g, const lower::MatchProgram& m,
 }
 
 void InterpretedRules::findMatches(std::size_t rule, const rt::Graph& g, rt::MatchBuffer& out) {
-    current_ = &st_.prog->rules[rule];
+    current_ = &st_.program().rules[rule];
     currentIndex_ = rule;
     const lower::MatchProgram& m = lowered_.rules[rule].match;
     collect(g, m, m.full, out);
@@ -279,7 +279,7 @@ void InterpretedRules::findAnchored(std::size_t rule, const rt::Graph& g, int no
     const lower::MatchProgram& m = lowered_.rules[rule].match;
     const std::uint32_t need = m.anchorEdgeKinds[static_cast<std::size_t>(node)];
     if ((g.edgeKindsAt(host) & need) != need) return;
-    current_ = &st_.prog->rules[rule];
+    current_ = &st_.program().rules[rule];
     currentIndex_ = rule;
     boundNodes_[node] = host;
     newEdgesFrom_ = newEdgesFrom;
@@ -310,7 +310,7 @@ EvalFrame InterpretedRules::matchFrame(const ir::Rule& r, rt::Match m, const rt:
 }
 
 void InterpretedRules::weigh(std::size_t rule, rt::Match m, const rt::Graph& g, std::vector<double>& weights) {
-    current_ = &st_.prog->rules[rule];
+    current_ = &st_.program().rules[rule];
     EvalFrame f = st_.frame(nullptr);   // no random draws: weights may have none
     f.graph = &g;
     f.nodes = m.nodes;
@@ -333,7 +333,7 @@ void InterpretedRules::weigh(std::size_t rule, rt::Match m, const rt::Graph& g, 
 
 void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match m, const rt::Graph& g,
                                rt::Rng& rng, long long) {
-    const ir::Rule& r = st_.prog->rules[rule];
+    const ir::Rule& r = st_.program().rules[rule];
     const lower::RewriteProgram& program = lowered_.rules[rule].daughters[daughter];
     EvalFrame f = matchFrame(r, m, g, rng);
 
@@ -351,7 +351,7 @@ void InterpretedRules::prepare(std::size_t rule, std::size_t daughter, rt::Match
 
 std::vector<rt::Value> InterpretedRules::compoundValues(std::size_t compound, rt::Match m, const rt::Graph& g, rt::Rng& rng) {
     const lower::CompoundLets& lets = lowered_.compoundLets[compound];
-    EvalFrame f = matchFrame(st_.prog->rules[static_cast<std::size_t>(lets.matchRule)], m, g, rng);
+    EvalFrame f = matchFrame(st_.program().rules[static_cast<std::size_t>(lets.matchRule)], m, g, rng);
     std::vector<rt::Value> values;
     for (const lower::EvalLocal& l : lets.lets) {
         locals_[static_cast<std::size_t>(l.slot)] = evaluate(*l.value, f);

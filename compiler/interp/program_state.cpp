@@ -6,7 +6,7 @@ namespace g2d::interp {
 
 EvalFrame ProgramState::frame(rt::Rng* rng) const {
     EvalFrame f;
-    f.prog = prog;
+    f.prog = &program();
     f.params = &params;
     f.consts = &consts;
     f.rng = rng;
@@ -28,7 +28,6 @@ rt::Graph startRun(std::shared_ptr<const lower::LoweredProgram> lowered, std::ve
     const ir::Program& prog = *lowered->ir;
     const lower::StartProgram& start = lowered->start;
     st = ProgramState{};
-    st.prog = &prog;
     st.lowered = std::move(lowered);
     st.params = std::move(params);
     st.consts.resize(prog.consts.size());

@@ -12,11 +12,12 @@
 namespace g2d::interp {
 
 struct ProgramState {
-    const ir::Program* prog = nullptr;
-    std::shared_ptr<const lower::LoweredProgram> lowered;   // of *prog, made once for all the runs of a program
+    std::shared_ptr<const lower::LoweredProgram> lowered;   // made once for all the runs of a program
     std::vector<rt::Value> params, consts;
     std::vector<std::vector<rt::Value>> kindDefaults;   // per kind, per attribute
 
+    // The program the lowered one is of (which owns what its operations point at).
+    const ir::Program& program() const { return *lowered->ir; }
     EvalFrame frame(rt::Rng* rng) const;
 };
 

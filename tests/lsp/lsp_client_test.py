@@ -141,7 +141,7 @@ check(split and {ch["name"] for ch in split[0]["children"]} >= {"s", "e", "old",
 items = c.request("textDocument/completion", {"textDocument": doc, "position": pos(5, "lod")})["result"]
 labels = {i["label"] for i in items}
 # An edge: its attributes and the facts edges have (no position; its degree, its ends' bounds).
-check(labels == {"lod", "age", "generation", "id", "faces", "length", "direction", "degree", "lo", "hi"}, "completion after old.: %s" % labels)
+check(labels == {"lod", "age", "generation", "id", "faces", "length", "direction", "midpoint", "degree", "lo", "hi"}, "completion after old.: %s" % labels)
 # Each one offered is accepted by `g2d check` where it was offered.
 for label in sorted(labels):
     with open(os.path.join(work, "offered.g2d"), "w") as f:

@@ -46,7 +46,7 @@ TEST_CASE("a generation rewrites every rule's matches in one step, as an L-syste
             b = nb;
         }
         long long seenA = 0, seenB = 0;
-        const int kindA = static_cast<int>(r.state().prog->kinds.size()) - 2;   // P, A, B: A is the second last
+        const int kindA = static_cast<int>(r.state().program().kinds.size()) - 2;   // P, A, B: A is the second last
         for (rt::EdgeId e = 0; e < graph.edgeCapacity(); ++e) {
             if (!graph.edgeAlive(e)) continue;
             (graph.edgeKind(e) == kindA ? seenA : seenB)++;
