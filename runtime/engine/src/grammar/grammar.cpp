@@ -65,42 +65,26 @@ rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::str
 
 namespace {
 
-// The outputs' description of the last derivation (the JSON's "graph" object),
-// as g2d run gives it without options; the caller adds a sink.
-rt::RunOutputs lastRun(const std::string& fileName, std::uint64_t seed, const rt::DerivationResult& last) {
+// One output of the last derivation, as g2d run writes it without options
+// (the SVG's viewBox: the canvas); `sink` says which.
+std::string lastOutput(rt::GrammarRun& run, const std::string& fileName, std::uint64_t seed, const rt::DerivationResult& last,
+                       rt::TextOut* rt::RunOutputs::*sink) {
+    rt::StringOut text;
     rt::RunOutputs out;
     out.grammarName = std::filesystem::path(fileName).filename().string();
     out.seed = seed;
     out.steps = last.steps;
     out.stopped = rt::stopName(last.stopped);
-    return out;
+    out.svgOptions.viewBox = run.canvas();
+    out.*sink = &text;
+    rt::writeRunOutputs(run, out);
+    return std::move(text.text());
 }
 
 }  // namespace
 
-std::string Grammar::svg() {
-    rt::StringOut text;
-    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
-    out.svg = &text;
-    out.svgOptions.viewBox = run_->canvas();   // as g2d run without --viewbox
-    rt::writeRunOutputs(*run_, out);
-    return std::move(text.text());
-}
-
-std::string Grammar::json() {
-    rt::StringOut text;
-    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
-    out.json = &text;
-    rt::writeRunOutputs(*run_, out);
-    return std::move(text.text());
-}
-
-std::string Grammar::obj() {
-    rt::StringOut text;
-    rt::RunOutputs out = lastRun(fileName_, seed_, last_);
-    out.obj = &text;
-    rt::writeRunOutputs(*run_, out);
-    return std::move(text.text());
-}
+std::string Grammar::svg() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::svg); }
+std::string Grammar::json() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::json); }
+std::string Grammar::obj() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::obj); }
 
 }  // namespace g2d
