@@ -124,6 +124,7 @@ ruleOption
     | 'parallel'                    # ruleParallel
     | word=('merge' | 'intersect' | 'dpo')  # ruleWordOption
     | 'weight' expr                 # ruleWeight     // chosen among a priority's matching rules by weight
+    | 'limit' expr                  # ruleLimit      // at most N steps apply the rule
     ;
 matchBlock  : 'match' '{' matchStmt* '}' ;
 matchStmt

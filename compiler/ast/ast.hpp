@@ -157,13 +157,14 @@ struct RuleItem {
 };
 
 struct RuleOption {
-    enum class Kind { Priority, Pick, Ordered, Parallel, Word, Weight } kind;
+    enum class Kind { Priority, Pick, Ordered, Parallel, Word, Weight, Limit } kind;
     long long priority = 0;
     bool priorityOverflow = false;
     Ident pick;
     Ident pickMeasure;              // `pick oldest generation`: empty when not written
     Ident word;                     // Word: an option named by a plain name (`merge`)
     ExprPtr weight;                 // Weight: `weight W`
+    ExprPtr limit;                  // Limit: `limit N`
     Span span;
 };
 

@@ -276,6 +276,13 @@ private:
             out += "            out[" + cppLiteral(ir::Value{prio}, ir::kIntType) + "] = " + v + ";\n";
         }
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n        return out;\n    }\n\n";
+        out += "    std::map<std::size_t, long long> ruleLimits() override {\n        std::map<std::size_t, long long> out;\n        try {\n";
+        for (std::size_t r = 0; r < prog_.rules.size(); ++r) {
+            if (!prog_.rules[r].limit) continue;
+            const std::string v = gen_.gen(*prog_.rules[r].limit, noElements(), out, "            ");
+            out += "            out[" + str(static_cast<long long>(r)) + "] = " + v + ";\n";
+        }
+        out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n        return out;\n    }\n\n";
         return out;
     }
 

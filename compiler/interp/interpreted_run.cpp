@@ -53,6 +53,14 @@ std::map<long long, long long> InterpretedRun::priorityLimits() {
     return out;
 }
 
+std::map<std::size_t, long long> InterpretedRun::ruleLimits() {
+    std::map<std::size_t, long long> out;
+    EvalFrame f = state_.frame(nullptr);
+    for (std::size_t r = 0; r < prog_.rules.size(); ++r)
+        if (prog_.rules[r].limit) out[r] = std::get<long long>(evaluate(*prog_.rules[r].limit, f));
+    return out;
+}
+
 std::optional<rt::ViewBox> InterpretedRun::canvas() {
     if (!prog_.canvas) return std::nullopt;
     const ir::Canvas& c = *prog_.canvas;

@@ -17,6 +17,7 @@ public:
     void start(const std::vector<rt::Value>& params, rt::Rng& rng) override;
     std::optional<long long> stepLimit() override;
     std::map<long long, long long> priorityLimits() override;
+    std::map<std::size_t, long long> ruleLimits() override;
     std::optional<rt::ViewBox> canvas() override;
     rt::Graph& graph() override { return graph_; }
     rt::RuleSet& rules() override { return *rules_; }

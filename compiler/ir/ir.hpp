@@ -427,6 +427,9 @@ struct Rule {
     // otherwise weightExpr reads parameters.
     double weight = 1;
     std::optional<Expr> weightExpr;
+    // `limit N`: at most N steps apply the rule (an int of literals,
+    // constants and parameters; GrammarRun::ruleLimits evaluates it).
+    std::optional<Expr> limit;
     std::vector<PatternNode> nodes;
     std::vector<PatternEdge> edges;
     std::vector<PatternFace> faces;

@@ -333,6 +333,9 @@ public:
             } else if (auto* rw = dynamic_cast<P::RuleWeightContext*>(o)) {
                 opt.kind = RuleOption::Kind::Weight;
                 opt.weight = expr(rw->expr());
+            } else if (auto* rl = dynamic_cast<P::RuleLimitContext*>(o)) {
+                opt.kind = RuleOption::Kind::Limit;
+                opt.limit = expr(rl->expr());
             } else {
                 throw std::logic_error("a rule option of the grammar the AST builder does not know: " + o->getText());
             }

@@ -329,16 +329,16 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     }
 }
 
-namespace {
-
-void checkLimitValue(Globals& g, const ir::Expr& v, Span span) {
+std::optional<ir::Expr> checkStepLimit(Globals& g, ExprChecker& ec, const ast::Expr& value) {
+    ExprEnv env = constantEnv("a step limit");
+    auto v = ec.checkAs(value, Type::of(TypeKind::Int), env, "a step limit");
+    if (!v) return std::nullopt;
     std::string error;
-    auto f = fold(v, g.prog, &error);
-    if (!error.empty()) g.diags.error(span, error + " in a step limit");
-    else if (f && std::get<long long>(*f) < 0) g.diags.error(span, "a step limit cannot be negative");
+    auto f = fold(*v, g.prog, &error);
+    if (!error.empty()) g.diags.error(value.span, error + " in a step limit");
+    else if (f && std::get<long long>(*f) < 0) g.diags.error(value.span, "a step limit cannot be negative");
+    return v;
 }
-
-}  // namespace
 
 void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen) {
     if (seen) {
@@ -346,11 +346,7 @@ void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen
         return;
     }
     seen = true;
-    ExprEnv env = constantEnv("a step limit");
-    auto v = ec.checkAs(*d.value, Type::of(TypeKind::Int), env, "a step limit");
-    if (!v) return;
-    checkLimitValue(g, *v, d.value->span);
-    g.prog.stepLimit = std::move(*v);
+    g.prog.stepLimit = checkStepLimit(g, ec, *d.value);
 }
 
 void checkMerge(Globals& g, ExprChecker& ec, const ast::MergeDecl& d) {
@@ -385,14 +381,7 @@ void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d) {
     cfg.parallel = d.parallel;
     cfg.generation = d.generation;
     cfg.span = d.prioritySpan;
-    if (d.limit) {
-        ExprEnv env = constantEnv("a step limit");
-        auto v = ec.checkAs(*d.limit, Type::of(TypeKind::Int), env, "a step limit");
-        if (v) {
-            checkLimitValue(g, *v, d.limit->span);
-            cfg.limit = std::move(*v);
-        }
-    }
+    if (d.limit) cfg.limit = checkStepLimit(g, ec, *d.limit);
     g.prog.priorities[d.priority] = std::move(cfg);
 }
 

@@ -25,6 +25,9 @@ void checkConst(Globals& g, ExprChecker& ec, const ast::ConstDecl& d);
 void checkFunction(Globals& g, ExprChecker& ec, const ast::FnDecl& d);
 void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d);
 void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen);
+// A step limit's value (global, a priority's, a rule's): an int of literals,
+// constants and parameters, not negative when known. Null after an error.
+std::optional<ir::Expr> checkStepLimit(Globals& g, ExprChecker& ec, const ast::Expr& value);
 // `merge within T;` (a constant float, not negative).
 void checkMerge(Globals& g, ExprChecker& ec, const ast::MergeDecl& d);
 void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d);

@@ -57,7 +57,7 @@ void RuleChecker::options() {
             else if (o.word.name == "intersect") rule_.intersect = true;
             else if (o.word.name == "dpo") rule_.dpo = true;
             else g_.diags.error(o.word.span, "unknown rule option `" + o.word.name + "`" +
-                                                 suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect", "dpo", "weight"}));
+                                                 suggest(o.word.name, {"priority", "pick", "ordered", "parallel", "merge", "intersect", "dpo", "weight", "limit"}));
             break;
         case ast::RuleOption::Kind::Pick:
             checkPick(o);
@@ -65,8 +65,20 @@ void RuleChecker::options() {
         case ast::RuleOption::Kind::Weight:
             ruleWeight(*o.weight);
             break;
+        case ast::RuleOption::Kind::Limit:
+            rule_.limit = checkStepLimit(g_, ec_, *o.limit);
+            limitSpan_ = o.span;
+            if (const auto n = rule_.limit ? fold(*rule_.limit, g_.prog) : std::nullopt; n && std::get<long long>(*n) == 0)
+                g_.diags.warning(o.span, "rule `" + rule_.name + "` has `limit 0`: it never applies");
+            break;
         }
     }
+    // A generation applies all its rules in each step: one alone cannot stop.
+    const auto prio = g_.prog.priorities.find(rule_.priority);
+    if (rule_.limit && prio != g_.prog.priorities.end() && prio->second.generation)
+        g_.diags.error(limitSpan_, "rule `" + rule_.name + "` is in `priority " + std::to_string(rule_.priority) +
+                                       " generation`, whose steps apply all its rules at once: a rule of it cannot have a `limit` "
+                                       "of its own (limit the priority instead)");
 }
 
 void RuleChecker::ruleWeight(const ast::Expr& e) {

@@ -94,6 +94,7 @@ private:
     std::vector<LocalVar> finishedLocals_;       // lets out of scope, for the unused warning
     bool neverMatches_ = false;
     std::vector<Diagnostic> pendingWarnings_;    // emitted only if the rule has no errors
+    Span limitSpan_;                             // the `limit` option, for diagnostics
 };
 
 }  // namespace g2d::sema

@@ -139,6 +139,11 @@ void checkCommandListsReach(Globals& g) {
         if (!rules[r] && prog.rules[r].compound < 0 && prog.rules[r].span.file == g.mainFile)
             g.diags.warning(prog.rules[r].span, "rule `" + prog.rules[r].name + "` is in no `sequence` (nor compound): with a "
                                                 "sequence, only the commands it lists apply");
+    // A command list applies each command once, so a rule's limit never stops anything.
+    for (const auto& r : prog.rules)
+        if (r.limit && r.span.file == g.mainFile)
+            g.diags.warning(r.limit->span, "rule `" + r.name + "` has a `limit`, which a `sequence` does not read: each command "
+                                           "applies once where the list names it");
 }
 
 }  // namespace g2d::sema

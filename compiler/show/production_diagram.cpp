@@ -313,6 +313,10 @@ std::string ruleHeading(const ir::Rule& r, const ir::Program& prog, const Source
         h += " · limit " + (n ? std::to_string(std::get<long long>(*n)) : sourceText(sources, config->limit->span)) +
              " (its priority's)";
     }
+    if (r.limit) {
+        const auto n = sema::fold(*r.limit, prog);
+        h += " · limit " + (n ? std::to_string(std::get<long long>(*n)) : sourceText(sources, r.limit->span));
+    }
     if (r.pick == ir::Pick::Oldest) h += " · pick oldest";
     if (r.pick == ir::Pick::OldestGeneration) h += " · pick oldest generation";
     if (r.ordered) h += " · ordered";

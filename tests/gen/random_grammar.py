@@ -4,8 +4,8 @@ compiled). Each uses a broad mix of the language: node and edge kinds with
 int/float/bool/string/enum attributes, directed and undirected edges, params,
 random constants, functions, conditions, negative conditions, wildcards,
 lets, weighted daughters, kept/deleted/new/rewired elements, explicit and
-automatic placement, `placed`, styles, priorities, limits, oldest/random and
-parallel rules.
+automatic placement, `placed`, styles, priorities, limits (global, a
+priority's, a rule's), oldest/random and parallel rules.
 
 usage: random_grammar.py SEED > grammar.g2d
 """
@@ -84,6 +84,10 @@ def grammar(seed: int) -> str:
         ordered = sketched and r.random() < 0.3
         if ordered:
             opts.append("ordered")
+        # A rule's own limit, drawn apart so that the rest of the grammar is
+        # what it was before rule limits existed.
+        if random.Random(seed * 7919 + ri).random() < 0.25:
+            opts.append(f"limit {random.Random(seed * 104729 + ri).randint(1, 4)}")
         size = r.randint(1, 3)
         mnodes = []
         for i in range(size):

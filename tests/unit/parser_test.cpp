@@ -67,7 +67,7 @@ TEST_CASE("declarations become AST nodes", "[parser]") {
 }
 
 TEST_CASE("rules: options, match, negative conditions, lets, daughters", "[parser]") {
-    auto p = parse("rule Split priority -1 pick oldest ordered parallel {\n"
+    auto p = parse("rule Split priority -1 pick oldest ordered parallel limit n + 1 {\n"
                    "  match {\n"
                    "    s: Point @ (0, 0); e: Point @ (1, 0); w: *;\n"
                    "    old: s -[Seg]-> e where old.lod < 3;\n"
@@ -83,9 +83,11 @@ TEST_CASE("rules: options, match, negative conditions, lets, daughters", "[parse
     REQUIRE(p.program);
     const auto& r = std::get<ast::RuleDecl>(p.program->decls[0].decl);
     CHECK(r.name.name == "Split");
-    REQUIRE(r.options.size() == 4);
+    REQUIRE(r.options.size() == 5);
     CHECK(r.options[0].priority == -1);
     CHECK(r.options[1].pick.name == "oldest");
+    CHECK(r.options[4].kind == ast::RuleOption::Kind::Limit);
+    CHECK(r.options[4].limit != nullptr);
     REQUIRE(r.match.size() == 8);
     const auto& s = std::get<ast::NodeStmt>(std::get<ast::GraphStmt>(r.match[0].stmt).stmt);
     CHECK(s.kind->name == "Point");

@@ -49,9 +49,10 @@ public:
     virtual const std::vector<ParamSpec>& params() const = 0;
     // Evaluates the constants and the kinds' defaults and builds the axiom.
     virtual void start(const std::vector<Value>& params, Rng& rng) = 0;
-    // The grammar's global limit (nullopt: it sets none) and per-priority limits.
+    // The grammar's global limit (nullopt: it sets none), per-priority and per-rule limits.
     virtual std::optional<long long> stepLimit() = 0;
     virtual std::map<long long, long long> priorityLimits() = 0;
+    virtual std::map<std::size_t, long long> ruleLimits() = 0;
     // The grammar's `canvas` (nullopt: it sets none), evaluated after start()
     // and checked (checkedCanvas: a bad one throws, located).
     virtual std::optional<ViewBox> canvas() = 0;

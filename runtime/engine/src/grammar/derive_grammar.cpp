@@ -25,6 +25,7 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
     out.canvas = grammar.canvas();   // checked even when --viewbox overrides it, as the limit is
     options.steps = settings.steps ? settings.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
     options.perPriority = grammar.priorityLimits();
+    options.perRule = grammar.ruleLimits();
     options.maxElements = settings.maxElements;
     options.timeoutSeconds = settings.timeoutSeconds;
     options.verifyMatches = settings.verifyMatches;

@@ -136,6 +136,10 @@ private:
     // A priority whose limit is used up never applies again: its rules' sets
     // are no longer kept (mutex STS: the requests, once every process made one).
     void retireIfSpent(const Group& grp);
+    // A step applied rule r: with its own limit used up, it retires too.
+    void spendRule(std::size_t r) {
+        if (ruleLeft_[r] > 0 && --ruleLeft_[r] == 0) found_->retire(r);
+    }
     // After a rule's step: merging (if the rule merges), then the match sets
     // are brought up to date, reading the step's changes in place; they are
     // forgotten after it (before a full search, which reads none: a
@@ -153,6 +157,7 @@ private:
     const StepObserver& observer_;
     StepTracer* tracer_;
     std::vector<Group> groups_;
+    std::vector<long long> ruleLeft_;   // per rule: the steps its `limit` still allows (-1: no limit)
     std::vector<std::size_t> order_;
     std::vector<double> weights_;   // a match-weighted rule's, per application
     std::vector<const MatchSet*> generationSets_;
@@ -210,6 +215,11 @@ Scheduler::Scheduler(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions
     }
     summary_.follow(*found_);
     for (const auto& grp : groups_) retireIfSpent(grp);
+    ruleLeft_.assign(rules_.ruleCount(), -1);
+    for (const auto& [r, limit] : limits_.perRule) {
+        ruleLeft_[r] = std::max(limit, 0LL);
+        if (limit <= 0) found_->retire(r);
+    }
     g_.forgetChanges();
     for (std::size_t r = 0; r < rules_.ruleCount(); ++r)
         if (const double tolerance = rules_.info(r).mergeTolerance; tolerance > 0 && !merger_)
@@ -417,6 +427,7 @@ bool Scheduler::stepGroup(Group& grp, long long step, NewIds from) {
         if (refused) return true;
         ++grp.applied;
         retireIfSpent(grp);   // before the repair: a spent rule needs none
+        spendRule(r);
         afterStep(r, daughter, step, from);
         return true;
     }
