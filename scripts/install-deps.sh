@@ -16,6 +16,7 @@ packages=(
   librsvg2-dev libcairo2-dev
   python3-networkx
   chromium
+  ccache
 )
 
 # `install-deps.sh gallery`: also librsvg's rsvg-convert, which renders the
