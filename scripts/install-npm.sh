@@ -3,7 +3,8 @@
 # vscode-languageclient; vscode-textmate and vscode-oniguruma for the grammar
 # tests; @vscode/vsce to package. And those of the --view page (web/view):
 # three and esbuild, which bundles the page's script into
-# web/view/dist/view.bundle.js for CMake to embed in the runtime. As pinned
+# web/view/dist/view.bundle.js for CMake to embed in the runtime, and
+# puppeteer-core, which drives chromium in tests/view. As pinned
 # by their package-lock.json files, without install scripts. Idempotent: does
 # nothing (and needs no network) when they are installed, the lock files have
 # not changed since and the bundle is newer than its sources. The editor

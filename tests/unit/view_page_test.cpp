@@ -60,9 +60,54 @@ TEST_CASE("view model: nodes, edges and faces as the styles draw them, in 3D", "
     CHECK((m.edges[0].a == 0 && m.edges[0].b == 1 && m.edges[0].color == "#d62728"));
     CHECK((m.edges[1].a == 2 && m.edges[1].b == 0 && m.edges[1].color == "black"));
     REQUIRE(m.faces.size() == 1);
-    CHECK(m.faces[0].corners == std::vector<std::uint32_t>{0, 1, 2});
+    CHECK(m.faces[0].id == shown);
+    CHECK(m.faces[0].points == std::vector<std::array<double, 3>>{{0, 0, 0}, {3, 0, 0}, {0, 4, 0}});
+    REQUIRE(m.faces[0].triangles.size() == 1);
+    const auto t = m.faces[0].triangles[0];   // 0 1 2 from any corner: the face's way round
+    CHECK((t[1] == (t[0] + 1) % 3 && t[2] == (t[1] + 1) % 3));
     CHECK(m.faces[0].color == "hsl(10, 50%, 50%)");
     CHECK(m.faces[0].opacity == 0.4);
+    // The graph's counts, drawn or not.
+    CHECK((m.graphNodes == 4 && m.graphEdges == 3 && m.graphFaces == 2));
+}
+
+TEST_CASE("view model: a non-convex face as triangles in its plane, thick edges, an undrawable face an error", "[view]") {
+    Graph g({KindInfo{ElemClass::Node, false}, KindInfo{ElemClass::Edge, false}, KindInfo{ElemClass::Face, false}});
+    // An L in the plane x = 1, corners counter-clockwise seen from +x: a fan
+    // from the first corner would cover the notch.
+    const std::vector<vec3> at = {{1, 0, 0}, {1, 2, 0}, {1, 2, 1}, {1, 1, 1}, {1, 1, 2}, {1, 0, 2}};
+    std::vector<NodeId> l;
+    for (const vec3& p : at) {
+        l.push_back(g.addNode(0, {p.x, p.y}, 0));
+        g.setZ(l.back(), p.z);
+    }
+    g.setRadius(l[0], 0.2);
+    g.setRadius(l[1], 0.1);
+    const EdgeId thick = g.addEdge(1, l[0], l[1], 0);
+    const FaceId f = g.addFace(2, l, 0);
+    const std::vector<DrawItem> items = {item(ElemClass::Face, f, {}), item(ElemClass::Edge, thick, {})};
+    const ViewModel m = viewModelOf(g, items, "l.g2d", {"P", "E", "Wall"});
+    REQUIRE(m.edges.size() == 1);
+    CHECK(m.edges[0].radius == Approx(0.15));
+    REQUIRE(m.faces.size() == 1);
+    const ViewFace& v = m.faces[0];
+    REQUIRE(v.triangles.size() == 4);
+    double area = 0;
+    for (const auto& t : v.triangles) {
+        // (b - a) x (c - a) along +x: each triangle runs the face's way round.
+        const auto& a = v.points[t[0]], &b = v.points[t[1]], &c = v.points[t[2]];
+        const double nx = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
+        CHECK(nx > 0);
+        area += nx / 2;
+    }
+    CHECK(area == Approx(3));
+    // Corners on one line: no page, a message naming the face.
+    const NodeId p = g.addNode(0, {0, 0}, 0), q = g.addNode(0, {1, 0}, 0), r = g.addNode(0, {2, 0}, 0);
+    const NodeId line[] = {p, q, r};
+    const FaceId flat = g.addFace(2, line, 0);
+    const std::vector<DrawItem> both = {item(ElemClass::Face, f, {}), item(ElemClass::Face, flat, {})};
+    CHECK_THROWS_WITH(viewModelOf(g, both, "l.g2d", {"P", "E", "Wall"}),
+                      "face 1 (Wall, corners 6 7 8) cannot be drawn as triangles: its corners lie on one line, so it has no area");
 }
 
 TEST_CASE("view page: the model inline, colours once each, nothing ends a script early", "[view]") {
@@ -70,15 +115,21 @@ TEST_CASE("view page: the model inline, colours once each, nothing ends a script
     m.title = "a</script><b>&\"";
     m.nodes = {{{0, 0.1, -2.5}, 0.05, "red"}, {{1, 0, 0}, 0, ""}, {{0, 1, 1e-7}, 0.05, "red"}};
     m.edges = {{0, 1, "red"}};
-    m.faces = {{{0, 1, 2}, "#00ff00", 0.5}};
+    m.edges[0].radius = 0.25;
+    m.faces = {{7, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0.5}}, {{0, 1, 2}}, "#00ff00", 0.5}};
+    m.graphNodes = 3;
+    m.graphEdges = 2;
+    m.graphFaces = 1;
     m.home = vec3{1, -2, 1.5};
     const std::string page = writeViewPage(m);
     CHECK(page == writeViewPage(m));
     CHECK(contains(page, "<title>a&lt;/script&gt;&lt;b&gt;&amp;&quot; — g2d view</title>"));
-    CHECK(contains(page, "{\"title\":\"a\\u003c/script>\\u003cb>&\\\"\",\n\"home\":[1,-2,1.5],\n\"colors\":[\"red\",\"#00ff00\"],\n"
+    CHECK(contains(page, "{\"title\":\"a\\u003c/script>\\u003cb>&\\\"\",\n\"home\":[1,-2,1.5],\n"
+                         "\"counts\":{\"nodes\":3,\"edges\":2,\"faces\":1},\n\"colors\":[\"red\",\"#00ff00\"],\n"
                          "\"nodes\":[\n[0,0.1,-2.5,0.05,0],\n[1,0,0,0,-1],\n[0,1,1e-07,0.05,0]],\n"
-                         "\"edges\":[\n[0,1,0]],\n\"faces\":[\n[1,0,1,2]],\n\"faceAlphas\":[0.5]}</script>"));
-    CHECK(contains(page, "3 nodes, 1 edge, 1 face"));
+                         "\"edges\":[\n[0,1,0,0.25]],\n\"faces\":[\n[7,1,[0,0,0,1,0,0,0,1,0.5],[0,1,2]]],\n\"faceAlphas\":[0.5]}</script>"));
+    // The graph's counts; fewer drawn are said (node 1 has radius 0).
+    CHECK(contains(page, "3 nodes (2 drawn), 2 edges (1 drawn), 1 face"));
     // The model's script element, then the embedded bundle's, and no other.
     CHECK(page.find("</script>") != page.rfind("</script>"));
     CHECK(page.find("<script", page.find("<script", page.find("<script") + 1) + 1) == std::string::npos);

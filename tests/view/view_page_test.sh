@@ -51,9 +51,12 @@ page = open(sys.argv[1]).read()
 m = json.loads(re.search(r'<script id="g2d-model" type="application/json">(.*?)</script>', page, re.S).group(1))
 assert m["title"] == "subdivide.g2d", m["title"]
 assert (len(m["nodes"]), len(m["edges"]), len(m["faces"])) == (25, 40, 16), (len(m["nodes"]), len(m["edges"]), len(m["faces"]))
-assert all(len(f) == 5 for f in m["faces"]), "quads: a colour and four corners"
+# Each face: its id, colour, four corners' points and two triangles.
+assert all(len(f[2]) == 12 and len(f[3]) == 6 for f in m["faces"]), "quads: four points, two triangles"
+assert [f[0] for f in m["faces"]] == sorted({f[0] for f in m["faces"]}), "faces by id, once each"
 assert all(n[3] == 0 for n in m["nodes"]), "P nodes have tag none: not drawn"
-assert "16 faces" in page
+assert m["counts"] == {"nodes": 25, "edges": 40, "faces": 16}, m["counts"]
+assert "25 nodes (0 drawn), 40 edges, 16 faces" in page
 PY
 
 shoot sub.html "$artifacts/view_subdivide.png"
@@ -68,7 +71,7 @@ python3 - sub.html "$artifacts/view_subdivide.png" "$src/tests/view/png_colors.p
 import json, re, subprocess, sys
 page, png, counter = sys.argv[1:4]
 m = json.loads(re.search(r'<script id="g2d-model" type="application/json">(.*?)</script>', open(page).read(), re.S).group(1))
-fills = sorted({m["colors"][f[0]] for f in m["faces"]})
+fills = sorted({m["colors"][f[1]] for f in m["faces"]})
 r = json.loads(subprocess.check_output([sys.executable, counter, png] + fills))
 total = r["width"] * r["height"]
 shown = [c for c in fills if r["counts"][c] >= 300]

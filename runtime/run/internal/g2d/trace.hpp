@@ -17,7 +17,7 @@ namespace g2d::rt {
 struct TraceNode {
     std::uint32_t id;
     int kind;
-    vec2 pos;
+    vec3 pos;   // z written for 3D grammars only
 };
 struct TraceEdge {
     std::uint32_t id;
@@ -29,6 +29,9 @@ struct TraceFace {
     std::uint32_t id;
     int kind;
     std::vector<std::uint32_t> corners;
+    // 3D grammars: the face's triangles (triangulateFace) as node ids, three
+    // a triangle; empty when the face cannot be triangulated as it is added.
+    std::vector<std::uint32_t> triangles;
 };
 
 struct TraceStep {
@@ -70,14 +73,20 @@ private:
     std::vector<TraceStep> steps_;
     std::vector<Pending> pending_;
     // Before the step: the matched nodes' places and the edges at them (any may go).
-    std::vector<std::pair<std::uint32_t, vec2>> placesBefore_;
+    std::vector<std::pair<std::uint32_t, vec3>> placesBefore_;
     std::vector<TraceEdge> edgesBefore_;
     std::vector<std::uint32_t> facesBefore_;   // and the faces at them, and the matched ones
     std::size_t nodeCapacity_ = 0, edgeCapacity_ = 0, faceCapacity_ = 0;
     bool hasFaces_ = false;                    // the grammar declares a face kind (else no "faces" keys)
+    bool space3d_ = false;                     // nodes keep their z, faces their triangles
+
+    TraceFace traceFace(const Graph& g, FaceId f) const;
 };
 
-// The self-contained page: the trace, the final SVG, and a player.
-std::string writeTracePage(const std::string& traceJson, const std::string& finalSvg, const std::string& title);
+// The self-contained page: the trace, the final SVG, and a player. A 3D
+// grammar's trace is played in the 3D viewer of the --view page instead
+// (web/view/src/trace3d.js), without the SVG.
+std::string writeTracePage(const std::string& traceJson, const std::string& finalSvg, const std::string& title,
+                           bool space3d = false);
 
 }  // namespace g2d::rt

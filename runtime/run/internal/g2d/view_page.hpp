@@ -23,11 +23,17 @@ struct ViewNode {
 struct ViewEdge {
     std::uint32_t a = 0, b = 0;   // indices into ViewModel::nodes
     std::string color;
+    double radius = 0;            // G^3's thickness: the mean of the ends' `radius`; 0: a hairline
 };
+// A face as the triangles that draw it (triangulateFace: in its plane, each
+// running the face's way round), with its own points (its corners, and the
+// bends of bent sides in 2D).
 struct ViewFace {
-    std::vector<std::uint32_t> corners;   // indices into ViewModel::nodes, in the face's order
+    std::uint32_t id = 0;                                  // the graph's face id
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<std::uint32_t, 3>> triangles;   // indices into `points`
     std::string color;
-    double opacity = 1;                   // style `fill_opacity`
+    double opacity = 1;                                    // style `fill_opacity`
 };
 struct ViewModel {
     std::string title;
@@ -35,13 +41,18 @@ struct ViewModel {
     std::vector<ViewNode> nodes;   // every live node, in id order
     std::vector<ViewEdge> edges;   // the edges drawn (not tag or stroke "none"), in id order
     std::vector<ViewFace> faces;   // the faces drawn (not tag or fill "none"), in id order
+    // The graph's live elements, drawn or not, for the legend.
+    std::size_t graphNodes = 0, graphEdges = 0, graphFaces = 0;
 };
 
 // Nodes: style `r` (default 0.6% of the model's diagonal), colour `fill` or
 // else `stroke`; edges: `stroke`; faces: `fill` and `fill_opacity` (SVG's
-// defaults otherwise).
-// `items` are drawItems() of `g`.
-ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title);
+// defaults otherwise); an edge's thickness is its ends' mean `radius`.
+// `items` are drawItems() of `g`; `kindNames` name kinds in errors. Throws
+// std::runtime_error (faceShapeMessage) for a drawn face that cannot be
+// triangulated.
+ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title,
+                      const std::vector<std::string>& kindNames = {});
 
 // The whole page. Numbers print as formatNumber does: the same model gives
 // the same bytes.

@@ -233,6 +233,18 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         outputs.json = jsonFile.get();
         outputs.obj = objFile.get();
         writeRunOutputs(grammar, outputs);
+        // The page is made before any output is committed: a face it cannot
+        // draw leaves no file written.
+        std::string viewPage;
+        if (viewFile) {
+            try {
+                ViewModel model = viewModelOf(graph, grammar.drawItems(), name, grammar.jsonSchema().kindNames);
+                if (grammar.jsonSchema().space3d) model.home = view.toward;   // the SVG's view, z up
+                viewPage = writeViewPage(model);
+            } catch (const std::runtime_error& e) {
+                throw OutputError("cannot write `" + *request.viewOut + "`: " + e.what());
+            }
+        }
         std::string svg;
         if (svgWhole) svg = std::move(svgText.text());
         if (png) {
@@ -256,15 +268,11 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (trace) {
             const std::string data = trace->json(name, request.seed, stopped);
             if (traceJsonFile) traceJsonFile->commit(data);
-            if (traceHtmlFile) traceHtmlFile->commit(writeTracePage(data, svg, name));
+            if (traceHtmlFile) traceHtmlFile->commit(writeTracePage(data, svg, name, grammar.jsonSchema().space3d));
         }
         if (jsonFile) jsonFile->commit();
         if (objFile) objFile->commit();
-        if (viewFile) {
-            ViewModel model = viewModelOf(graph, grammar.drawItems(), name);
-            if (grammar.jsonSchema().space3d) model.home = view.toward;   // the SVG's view, z up
-            viewFile->commit(writeViewPage(model));
-        }
+        if (viewFile) viewFile->commit(viewPage);
         if (request.stats)
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "g2d/face_triangles.hpp"
 #include "g2d/json_writer.hpp"
 #include "g2d/svg_writer.hpp"
 #include "g2d/value.hpp"
@@ -23,9 +24,11 @@ std::string array(const std::vector<T>& items, F&& each) {
 std::string ids(const std::vector<std::uint32_t>& v) {
     return array(v, [](std::uint32_t x) { return std::to_string(x); });
 }
-std::string nodes(const std::vector<TraceNode>& v) {
-    return array(v, [](const TraceNode& n) {
-        return "[" + std::to_string(n.id) + "," + std::to_string(n.kind) + "," + num(n.pos.x) + "," + num(n.pos.y) + "]";
+// [id, kind, x, y], and z for a 3D grammar.
+std::string nodes(const std::vector<TraceNode>& v, bool space3d) {
+    return array(v, [space3d](const TraceNode& n) {
+        return "[" + std::to_string(n.id) + "," + std::to_string(n.kind) + "," + num(n.pos.x) + "," + num(n.pos.y) +
+               (space3d ? "," + num(n.pos.z) : std::string()) + "]";
     });
 }
 std::string edges(const std::vector<TraceEdge>& v) {
@@ -35,15 +38,12 @@ std::string edges(const std::vector<TraceEdge>& v) {
     });
 }
 
-std::string faces(const std::vector<TraceFace>& v) {
-    return array(v, [](const TraceFace& f) { return "[" + std::to_string(f.id) + "," + std::to_string(f.kind) + "," + ids(f.corners) + "]"; });
-}
-
-TraceFace traceFace(const Graph& g, FaceId f) {
-    TraceFace out{f, g.faceKind(f), {}};
-    CornerId c = g.firstCorner(f);
-    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) out.corners.push_back(g.cornerNode(c));
-    return out;
+// [id, kind, [corners]], and [triangles] for a 3D grammar.
+std::string faces(const std::vector<TraceFace>& v, bool space3d) {
+    return array(v, [space3d](const TraceFace& f) {
+        return "[" + std::to_string(f.id) + "," + std::to_string(f.kind) + "," + ids(f.corners) +
+               (space3d ? "," + ids(f.triangles) : std::string()) + "]";
+    });
 }
 
 // How a kind is drawn in the player: the resolved style of one of its
@@ -58,10 +58,27 @@ std::string kindStyle(const DrawItem& it) {
 
 }  // namespace
 
+TraceFace TraceRecorder::traceFace(const Graph& g, FaceId f) const {
+    TraceFace out{f, g.faceKind(f), {}, {}};
+    CornerId c = g.firstCorner(f);
+    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) out.corners.push_back(g.cornerNode(c));
+    if (!space3d_) return out;
+    // The player draws a 3D face with the triangles the --view page uses.
+    const FaceTriangles t = triangulateFace(g, f);
+    if (t.problem != FaceShapeProblem::None) return out;
+    for (const auto& tri : t.triangles)
+        for (std::uint32_t p : tri) {
+            if (t.points[p].node == kNoId) return TraceFace{f, out.kind, out.corners, {}};   // a bend: no node to name
+            out.triangles.push_back(t.points[p].node);
+        }
+    return out;
+}
+
 void TraceRecorder::started() {
+    space3d_ = grammar_.jsonSchema().space3d;
     const Graph& g = grammar_.graph();
     for (NodeId n = 0; n < g.nodeCapacity(); ++n)
-        if (g.nodeAlive(n)) axiomNodes_.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
+        if (g.nodeAlive(n)) axiomNodes_.push_back(TraceNode{n, g.nodeKind(n), g.pos3(n)});
     for (EdgeId e = 0; e < g.edgeCapacity(); ++e)
         if (g.edgeAlive(e)) axiomEdges_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
     for (FaceId f = 0; f < g.faceCapacity(); ++f)
@@ -85,7 +102,7 @@ void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, co
     // What the rewrite may delete, move or rewire, as it is now.
     for (NodeId n : p.nodes) {
         for (CornerId c = g.firstCornerAt(n); c != kNoId; c = g.nextCornerAt(c)) facesBefore_.push_back(g.cornerFace(c));
-        placesBefore_.emplace_back(n, g.pos(n));
+        placesBefore_.emplace_back(n, g.pos3(n));
         for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
         for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
     }
@@ -118,7 +135,7 @@ void TraceRecorder::stepDone(long long step, const Graph& g) {
         if (g.faceAlive(f)) s.addedFaces.push_back(traceFace(g, f));
     // Ids are never reused: what is new lies past the old capacities.
     for (NodeId n = static_cast<NodeId>(nodeCapacity_); n < g.nodeCapacity(); ++n)
-        if (g.nodeAlive(n)) s.addedNodes.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
+        if (g.nodeAlive(n)) s.addedNodes.push_back(TraceNode{n, g.nodeKind(n), g.pos3(n)});
     for (EdgeId e = static_cast<EdgeId>(edgeCapacity_); e < g.edgeCapacity(); ++e)
         if (g.edgeAlive(e)) s.addedEdges.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
     std::sort(placesBefore_.begin(), placesBefore_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -126,7 +143,7 @@ void TraceRecorder::stepDone(long long step, const Graph& g) {
         const auto& [n, before] = placesBefore_[i];
         if (i > 0 && placesBefore_[i - 1].first == n) continue;
         if (!g.nodeAlive(n)) s.deletedNodes.push_back(n);
-        else if (g.pos(n) != before) s.moved.push_back(TraceNode{n, g.nodeKind(n), g.pos(n)});
+        else if (g.pos3(n) != before) s.moved.push_back(TraceNode{n, g.nodeKind(n), g.pos3(n)});
     }
     std::sort(edgesBefore_.begin(), edgesBefore_.end(), [](const TraceEdge& a, const TraceEdge& b) { return a.id < b.id; });
     for (std::size_t i = 0; i < edgesBefore_.size(); ++i) {
@@ -161,7 +178,7 @@ std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t se
     note(grammar_.drawItems());
     note(axiomDrawing_);
     std::string out = "{\"format\":\"g2d-trace-1\",\"grammar\":" + jsonString(grammarName) + ",\"seed\":" + std::to_string(seed) +
-                      ",\"stopped\":" + jsonString(stopped) + ",\"kinds\":[";
+                      ",\"stopped\":" + jsonString(stopped) + (space3d_ ? ",\"space\":\"3d\"" : "") + ",\"kinds\":[";
     for (std::size_t k = 0; k < kinds.size(); ++k) {
         DrawItem fallback;
         fallback.cls = kinds[k].cls;
@@ -173,16 +190,16 @@ std::string TraceRecorder::json(const std::string& grammarName, std::uint64_t se
     }
     // Faces only for grammars that declare a face kind: the others' traces stay as they were.
     auto withFaces = [&](const std::string& text) { return hasFaces_ ? text : std::string(); };
-    out += "],\"axiom\":{\"nodes\":" + nodes(axiomNodes_) + ",\"edges\":" + edges(axiomEdges_) +
-           withFaces(",\"faces\":" + faces(axiomFaces_)) + "},\"steps\":[";
+    out += "],\"axiom\":{\"nodes\":" + nodes(axiomNodes_, space3d_) + ",\"edges\":" + edges(axiomEdges_) +
+           withFaces(",\"faces\":" + faces(axiomFaces_, space3d_)) + "},\"steps\":[";
     for (std::size_t i = 0; i < steps_.size(); ++i) {
         const TraceStep& s = steps_[i];
         out += std::string(i ? ",\n" : "\n") + "{\"step\":" + std::to_string(s.step) + ",\"rule\":" + jsonString(s.rule) +
                ",\"daughters\":" + ids(s.daughters) + ",\"matched\":{\"nodes\":" + ids(s.matchedNodes) + ",\"edges\":" +
                ids(s.matchedEdges) + withFaces(",\"faces\":" + ids(s.matchedFaces)) + "},\"deleted\":{\"nodes\":" + ids(s.deletedNodes) +
                ",\"edges\":" + ids(s.deletedEdges) + withFaces(",\"faces\":" + ids(s.deletedFaces)) +
-               "},\"added\":{\"nodes\":" + nodes(s.addedNodes) + ",\"edges\":" + edges(s.addedEdges) +
-               withFaces(",\"faces\":" + faces(s.addedFaces)) + "},\"moved\":" + nodes(s.moved) + ",\"rewired\":" + edges(s.rewired) + "}";
+               "},\"added\":{\"nodes\":" + nodes(s.addedNodes, space3d_) + ",\"edges\":" + edges(s.addedEdges) +
+               withFaces(",\"faces\":" + faces(s.addedFaces, space3d_)) + "},\"moved\":" + nodes(s.moved, space3d_) + ",\"rewired\":" + edges(s.rewired) + "}";
     }
     return out + "\n]}\n";
 }

@@ -5,6 +5,7 @@
 #include "g2d/trace.hpp"
 
 #include "g2d/svg_writer.hpp"
+#include "g2d/view_script.hpp"
 
 namespace g2d::rt {
 
@@ -210,9 +211,49 @@ window.g2dTrace = { frameCount, perFrame, steps: steps.length, go, frame: 0, dra
 go(frameCount);
 )JS";
 
+// The 3D player: the viewer fills the window, the controls float over it.
+const char* const kStyle3d = R"CSS(
+html, body { margin: 0; height: 100%; overflow: hidden; background: #fff; font: 13px system-ui, sans-serif; color: #222; }
+canvas { display: block; }
+#legend { position: absolute; top: 8px; left: 8px; padding: 6px 10px; max-width: 46em;
+  background: rgba(255, 255, 255, 0.85); border: 1px solid #ddd; border-radius: 4px; }
+#controls { display: flex; align-items: center; gap: 6px; margin: 6px 0; }
+#slider { flex: 1; }
+#note, #status { color: #8a5a00; }
+#toggles, #views { margin-top: 4px; }
+.legend span { display: inline-block; margin-right: 12px; }
+.sw { display: inline-block; width: 12px; height: 12px; vertical-align: middle; margin-right: 4px; }
+small { display: block; color: #666; margin-top: 2px; }
+)CSS";
+
+const char* const kControls =
+    "<div id=\"controls\"><button id=\"first\">|&lt;</button><button id=\"prev\">&lt;</button>"
+    "<button id=\"play\">Play</button><button id=\"next\">&gt;</button><button id=\"last\">&gt;|</button>"
+    "<input id=\"slider\" type=\"range\" min=\"0\" value=\"0\"><span id=\"position\"></span></div>\n";
+
+const char* const kMarks =
+    "<p class=\"legend\">"
+    "<span><i class=\"sw\" style=\"background:#ff8c00\"></i>matched and kept</span>"
+    "<span><i class=\"sw\" style=\"background:#d62728\"></i>deleted</span>"
+    "<span><i class=\"sw\" style=\"background:#1a9e3a\"></i>added</span>"
+    "<span><i class=\"sw\" style=\"background:#1f77b4\"></i>moved</span></p>\n";
+
+std::string tracePage3d(const std::string& traceJson, const std::string& title) {
+    std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + xmlEscape(title) +
+                      " — g2d trace</title>\n<style>" + kStyle3d + "</style>\n</head>\n<body>\n";
+    out += "<div id=\"legend\"><strong>" + xmlEscape(title) + "</strong> — derivation trace (g2d), in 3D\n" + kControls;
+    out += "<div id=\"info\"></div>\n<div id=\"note\"></div>\n" + std::string(kMarks) +
+           "<small>Steps are drawn with each kind's style. Drag to turn, right-drag to pan, scroll to zoom; "
+           "arrow keys step.</small><span id=\"status\">This page needs JavaScript and WebGL.</span></div>\n";
+    out += "<script id=\"trace\" type=\"application/json\">" + scriptSafe(traceJson) + "</script>\n";
+    out += "<script>" + viewScript() + "</script>\n</body>\n</html>\n";
+    return out;
+}
+
 }  // namespace
 
-std::string writeTracePage(const std::string& traceJson, const std::string& finalSvg, const std::string& title) {
+std::string writeTracePage(const std::string& traceJson, const std::string& finalSvg, const std::string& title, bool space3d) {
+    if (space3d) return tracePage3d(traceJson, title);
     // The final SVG goes inline without its XML declaration.
     std::string svg = finalSvg;
     if (svg.rfind("<?xml", 0) == 0) svg = svg.substr(svg.find('\n') + 1);
@@ -220,14 +261,8 @@ std::string writeTracePage(const std::string& traceJson, const std::string& fina
                       " — g2d trace</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
     out += "<header><strong>" + xmlEscape(title) + "</strong> — derivation trace (g2d)</header>\n<main>\n";
     out += "<section>\n<h2>Step by step</h2>\n<svg id=\"stage\" xmlns=\"http://www.w3.org/2000/svg\"></svg>\n";
-    out += "<div id=\"controls\"><button id=\"first\">|&lt;</button><button id=\"prev\">&lt;</button>"
-           "<button id=\"play\">Play</button><button id=\"next\">&gt;</button><button id=\"last\">&gt;|</button>"
-           "<input id=\"slider\" type=\"range\" min=\"0\" value=\"0\"><span id=\"position\"></span></div>\n";
-    out += "<div id=\"info\"></div>\n<div id=\"note\"></div>\n<p class=\"legend\">"
-           "<span><i class=\"sw\" style=\"background:#ff8c00\"></i>matched and kept</span>"
-           "<span><i class=\"sw\" style=\"background:#d62728\"></i>deleted</span>"
-           "<span><i class=\"sw\" style=\"background:#1a9e3a\"></i>added</span>"
-           "<span><i class=\"sw\" style=\"background:#1f77b4\"></i>moved</span></p>\n"
+    out += kControls;
+    out += "<div id=\"info\"></div>\n<div id=\"note\"></div>\n" + std::string(kMarks) +
            "<p>Steps are drawn with each kind's style; the final drawing, as g2d writes it, is on the right.</p>\n</section>\n";
     out += "<section id=\"final\">\n<h2>Final drawing</h2>\n" + svg + "</section>\n</main>\n";
     out += "<script id=\"trace\" type=\"application/json\">" + scriptSafe(traceJson) + "</script>\n";

@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "g2d/face_triangles.hpp"
 #include "g2d/json_writer.hpp"
 #include "g2d/view_script.hpp"
 
@@ -77,21 +78,34 @@ std::string modelJson(const ViewModel& m) {
                  num(n.pos[2]) + "," + num(n.radius) + "," + std::to_string(colors.index(n.color)) + "]";
     for (const auto& e : m.edges)
         edges += std::string(edges.empty() ? "\n" : ",\n") + "[" + std::to_string(e.a) + "," + std::to_string(e.b) + "," +
-                 std::to_string(colors.index(e.color)) + "]";
+                 std::to_string(colors.index(e.color)) + "," + num(e.radius) + "]";
     std::string alphas;
     for (const auto& f : m.faces) {
-        faces += std::string(faces.empty() ? "\n" : ",\n") + "[" + std::to_string(colors.index(f.color));
-        for (auto c : f.corners) faces += "," + std::to_string(c);
-        faces += "]";
+        faces += std::string(faces.empty() ? "\n" : ",\n") + "[" + std::to_string(f.id) + "," +
+                 std::to_string(colors.index(f.color)) + ",[";
+        for (std::size_t i = 0; i < f.points.size(); ++i)
+            faces += std::string(i ? "," : "") + num(f.points[i][0]) + "," + num(f.points[i][1]) + "," + num(f.points[i][2]);
+        faces += "],[";
+        for (std::size_t i = 0; i < f.triangles.size(); ++i)
+            faces += std::string(i ? "," : "") + std::to_string(f.triangles[i][0]) + "," + std::to_string(f.triangles[i][1]) +
+                     "," + std::to_string(f.triangles[i][2]);
+        faces += "]]";
         alphas += (alphas.empty() ? "" : ",") + num(f.opacity);
     }
     std::string home;
     if (m.home) home = ",\n\"home\":[" + num(m.home->x) + "," + num(m.home->y) + "," + num(m.home->z) + "]";
-    return "{\"title\":" + jsonString(m.title) + home + ",\n\"colors\":" + colors.json() + ",\n\"nodes\":[" + nodes +
+    const std::string counts = ",\n\"counts\":{\"nodes\":" + std::to_string(m.graphNodes) + ",\"edges\":" +
+                               std::to_string(m.graphEdges) + ",\"faces\":" + std::to_string(m.graphFaces) + "}";
+    return "{\"title\":" + jsonString(m.title) + home + counts + ",\n\"colors\":" + colors.json() + ",\n\"nodes\":[" + nodes +
            "],\n\"edges\":[" + edges + "],\n\"faces\":[" + faces + "],\n\"faceAlphas\":[" + alphas + "]}";
 }
 
 std::string counted(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+
+// The graph's count, and how many are drawn when not all are.
+std::string counted(std::size_t all, std::size_t drawn, const std::string& noun) {
+    return counted(all, noun) + (drawn < all ? " (" + std::to_string(drawn) + " drawn)" : "");
+}
 
 const char* const kStyle = R"CSS(
 html, body { margin: 0; height: 100%; overflow: hidden; background: #fff; }
@@ -101,13 +115,19 @@ canvas { display: block; }
   border: 1px solid #ddd; border-radius: 4px; }
 #legend small { display: block; color: #666; margin-top: 2px; }
 #status { color: #a33; }
+#toggles, #views { margin-top: 4px; }
+#toggles label { margin-right: 8px; }
 )CSS";
 
 }  // namespace
 
-ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title) {
+ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title,
+                      const std::vector<std::string>& kindNames) {
     ViewModel m;
     m.title = title;
+    m.graphNodes = g.nodeCount();
+    m.graphEdges = g.edgeCount();
+    m.graphFaces = g.faceCount();
     const double diagonal = modelDiagonal(g);
     const double defaultRadius = diagonal > 0 ? 0.006 * diagonal : 0.05;
     const auto nodeItems = itemsById(items, ElemClass::Node, g.nodeCapacity());
@@ -138,7 +158,8 @@ ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const 
         const DrawItem* it = g.edgeAlive(e) ? edgeItems[e] : nullptr;
         if (!it || styleText(*it, "tag", "line") == "none") continue;
         const std::string stroke = styleText(*it, "stroke", "black");
-        if (painted(stroke)) m.edges.push_back({index[g.source(e)], index[g.target(e)], stroke});
+        if (painted(stroke))
+            m.edges.push_back({index[g.source(e)], index[g.target(e)], stroke, (g.radius(g.source(e)) + g.radius(g.target(e))) / 2});
     }
     const auto faceItems = itemsById(items, ElemClass::Face, g.faceCapacity());
     for (FaceId f = 0; f < g.faceCapacity(); ++f) {
@@ -148,8 +169,14 @@ ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const 
         v.color = styleText(*it, "fill", "#d9d9d9");
         v.opacity = std::clamp(styleNumber(*it, "fill_opacity", 1.0), 0.0, 1.0);
         if (!painted(v.color) || v.opacity == 0) continue;
-        CornerId c = g.firstCorner(f);
-        for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) v.corners.push_back(index[g.cornerNode(c)]);
+        const FaceTriangles t = triangulateFace(g, f);
+        if (t.problem != FaceShapeProblem::None) {
+            const auto kind = static_cast<std::size_t>(g.faceKind(f));
+            throw std::runtime_error(faceShapeMessage(g, f, kind < kindNames.size() ? kindNames[kind] : "face", t.problem));
+        }
+        v.id = f;
+        for (const vec3& p : t.positions) v.points.push_back({p.x, p.y, p.z});
+        v.triangles = t.triangles;
         m.faces.push_back(std::move(v));
     }
     return m;
@@ -157,13 +184,16 @@ ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const 
 
 std::string writeViewPage(const ViewModel& m) {
     const std::string title = xmlEscape(m.title);
-    const std::string counts =
-        counted(m.nodes.size(), "node") + ", " + counted(m.edges.size(), "edge") + ", " + counted(m.faces.size(), "face");
+    std::size_t nodesDrawn = 0;
+    for (const auto& n : m.nodes) nodesDrawn += n.radius > 0;
+    const std::string counts = counted(m.graphNodes, nodesDrawn, "node") + ", " + counted(m.graphEdges, m.edges.size(), "edge") +
+                               ", " + counted(m.graphFaces, m.faces.size(), "face");
     std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
                       title + " — g2d view</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
     out += "<div id=\"legend\"><strong>" + title + "</strong> — " + counts +
-           "<small>Drag to turn, right-drag to pan, scroll to zoom, R to reset.</small>"
+           "<small>Drag to turn, right-drag to pan, scroll to zoom. Keys: F faces, E edges, N nodes, A axes; "
+           "R home, 1 front, 2 side, 3 top, S save the view, V go to it. Back sides are darker.</small>"
            "<span id=\"status\">This page needs JavaScript and WebGL.</span></div>\n";
     out += "<script id=\"g2d-model\" type=\"application/json\">" + scriptSafe(modelJson(m)) + "</script>\n";
     out += "<script>" + viewScript() + "</script>\n</body>\n</html>\n";
