@@ -122,6 +122,32 @@ run([os.path.join(work, "priorities_program"), "--no-svg", "--trace-json", "prio
 check(open(os.path.join(work, "priorities.compiled.json")).read() == open(os.path.join(work, "priorities.trace.json")).read(),
       "compiled and interpreted traces of priorities.g2d differ")
 
+# 4c. A 3D grammar keeps z (#47): nodes [id, kind, x, y, z]; a move in z
+# alone is a move; faces carry their triangles as node ids; replaying gives
+# the final positions of --json; compiled programs write the same.
+lift = """space 3d;
+node P;
+edge E;
+face F;
+axiom { a: P at (0, 0, 0); b: P at (1, 0, 0); c: P at (1, 1, 0); d: P at (0, 1, 0);
+        a -[E]- b; b -[E]- c; c -[E]- d; d -[E]- a; F(a, b, c, d); }
+limit 1;
+rule Lift { match { p: P where p.pos.x == 1 and p.pos.y == 1; } produce { p at p.pos + (0, 0, 2); } }
+"""
+t, g = trace_of(lift, "lift")
+check(t.get("space") == "3d", "3D trace header: %s" % {k: v for k, v in t.items() if k not in ("axiom", "steps", "kinds")})
+check(t["axiom"]["nodes"] == [[0, 0, 0, 0, 0], [1, 0, 1, 0, 0], [2, 0, 1, 1, 0], [3, 0, 0, 1, 0]], "3D axiom nodes: %s" % t["axiom"]["nodes"])
+face = t["axiom"]["faces"][0]
+check(face[:3] == [0, 2, [0, 1, 2, 3]] and len(face[3]) == 6 and sorted(set(face[3])) == [0, 1, 2, 3],
+      "a 3D face with its two triangles: %s" % face)
+check(len(t["steps"]) == 1 and t["steps"][0]["moved"] == [[2, 0, 1, 1, 2]], "a move in z: %s" % t["steps"])
+nodes, edges = replay(t)
+check({i: n[2:] for i, n in nodes.items()} == {n["id"]: n["pos"] for n in g["nodes"]}, "replayed 3D positions: %s" % nodes)
+run([g2d, "build", os.path.join(work, "lift.g2d"), "-o", "lift_program"])
+run([os.path.join(work, "lift_program"), "--no-svg", "--trace-json", "lift.compiled.json"])
+check(open(os.path.join(work, "lift.compiled.json")).read() == open(os.path.join(work, "lift.trace.json")).read(),
+      "compiled and interpreted 3D traces differ")
+
 # 5. Compiled programs write the same trace, and --trace writes a page holding it.
 run([g2d, "build", koch_path, "-o", "koch_program"])
 run([os.path.join(work, "koch_program"), "-D", "max_lod=1", "--no-svg", "--trace-json", "koch.compiled.json", "--trace", "koch.html"])

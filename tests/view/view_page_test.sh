@@ -35,6 +35,18 @@ if [ "$compiled" = yes ]; then
   cmp -s sub.html compiled.html || fail "the compiled program wrote another page than g2d run"
 fi
 
+# A face the page cannot triangulate: an error naming it, and no file written
+# (the SVG neither: the page is made before any output is committed).
+for bow in false true; do
+  expect_code 1 "$g2d" run "$src/tests/view/undrawable_faces.g2d" -D bow=$bow -o u.svg --view u.html
+  [ -e u.html ] || [ -e u.svg ] && fail "bow=$bow: a file was written"
+done
+want="face 0 (Wall, corners 0 1 2 3) cannot be drawn as triangles"
+expect_code 1 "$g2d" run "$src/tests/view/undrawable_faces.g2d" -D bow=false --no-svg --view u.html
+grep -qF "error: cannot write \`u.html\`: $want: its corners lie on one line, so it has no area" err.txt || fail "collinear: $(cat err.txt)"
+expect_code 1 "$g2d" run "$src/tests/view/undrawable_faces.g2d" -D bow=true --no-svg --view u.html
+grep -qF "error: cannot write \`u.html\`: $want: its outline crosses itself" err.txt || fail "bow tie: $(cat err.txt)"
+
 # Self-contained: nothing loaded from elsewhere, the script inlined whole.
 for page in sub.html fan.html; do
   if grep -Eiq '(src|href)[[:space:]]*=[[:space:]]*["'"'"']?[[:space:]]*(https?:)?//|<link|<iframe|@import|url\([[:space:]]*["'"'"']?https?:' "$page"; then
