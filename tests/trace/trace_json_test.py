@@ -148,6 +148,19 @@ run([os.path.join(work, "lift_program"), "--no-svg", "--trace-json", "lift.compi
 check(open(os.path.join(work, "lift.compiled.json")).read() == open(os.path.join(work, "lift.trace.json")).read(),
       "compiled and interpreted 3D traces differ")
 
+# 4d. Faces that keep their id but gain corners (the house's walls, as
+# `insert … between` puts nodes on their sides) are deleted and added again:
+# replaying the faces gives those of --json.
+run([g2d, "run", os.path.join(src, "examples", "g3_house.g2d"), "--no-svg", "--quiet", "--json", "house.json", "--trace-json", "house.trace.json"])
+t, g = json.load(open(os.path.join(work, "house.trace.json"))), json.load(open(os.path.join(work, "house.json")))
+faces = {f[0]: f[2] for f in t["axiom"]["faces"]}
+for s in t["steps"]:
+    for i in s["deleted"]["faces"]:
+        del faces[i]
+    for f in s["added"]["faces"]:
+        faces[f[0]] = f[2]
+check(faces == {f["id"]: f["corners"] for f in g["faces"]}, "replaying the house's faces gives its final faces")
+
 # 5. Compiled programs write the same trace, and --trace writes a page holding it.
 run([g2d, "build", koch_path, "-o", "koch_program"])
 run([os.path.join(work, "koch_program"), "-D", "max_lod=1", "--no-svg", "--trace-json", "koch.compiled.json", "--trace", "koch.html"])

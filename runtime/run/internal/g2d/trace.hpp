@@ -75,7 +75,10 @@ private:
     // Before the step: the matched nodes' places and the edges at them (any may go).
     std::vector<std::pair<std::uint32_t, vec3>> placesBefore_;
     std::vector<TraceEdge> edgesBefore_;
-    std::vector<std::uint32_t> facesBefore_;   // and the faces at them, and the matched ones
+    // And the faces at them, and the matched ones, with their corners: a face
+    // that keeps its id but not its corners (a node inserted on its side) is
+    // written as deleted and added again.
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> facesBefore_;
     std::size_t nodeCapacity_ = 0, edgeCapacity_ = 0, faceCapacity_ = 0;
     bool hasFaces_ = false;                    // the grammar declares a face kind (else no "faces" keys)
     bool space3d_ = false;                     // nodes keep their z, faces their triangles

@@ -56,12 +56,17 @@ std::string kindStyle(const DrawItem& it) {
            ",\"fill\":" + jsonString(styleText(it, "fill", "none")) + ",\"r\":" + num(styleNumber(it, "r", 0.1)) + "}";
 }
 
+std::vector<std::uint32_t> faceCorners(const Graph& g, FaceId f) {
+    std::vector<std::uint32_t> corners;
+    CornerId c = g.firstCorner(f);
+    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) corners.push_back(g.cornerNode(c));
+    return corners;
+}
+
 }  // namespace
 
 TraceFace TraceRecorder::traceFace(const Graph& g, FaceId f) const {
-    TraceFace out{f, g.faceKind(f), {}, {}};
-    CornerId c = g.firstCorner(f);
-    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) out.corners.push_back(g.cornerNode(c));
+    TraceFace out{f, g.faceKind(f), faceCorners(g, f), {}};
     if (!space3d_) return out;
     // The player draws a 3D face with the triangles the --view page uses.
     const FaceTriangles t = triangulateFace(g, f);
@@ -98,10 +103,11 @@ void TraceRecorder::applying(std::size_t rule, std::size_t daughter, Match m, co
     p.nodes.assign(m.nodes, m.nodes + info.nodeKinds.size());
     p.edges.assign(m.edges, m.edges + info.edgeCount);
     p.faces.assign(m.faces, m.faces + info.faceCount);
-    facesBefore_.insert(facesBefore_.end(), p.faces.begin(), p.faces.end());
+    for (FaceId f : p.faces) facesBefore_.emplace_back(f, faceCorners(g, f));
     // What the rewrite may delete, move or rewire, as it is now.
     for (NodeId n : p.nodes) {
-        for (CornerId c = g.firstCornerAt(n); c != kNoId; c = g.nextCornerAt(c)) facesBefore_.push_back(g.cornerFace(c));
+        for (CornerId c = g.firstCornerAt(n); c != kNoId; c = g.nextCornerAt(c))
+            facesBefore_.emplace_back(g.cornerFace(c), faceCorners(g, g.cornerFace(c)));
         placesBefore_.emplace_back(n, g.pos3(n));
         for (EdgeId e = g.firstOut(n); e != kNoId; e = g.nextOut(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
         for (EdgeId e = g.firstIn(n); e != kNoId; e = g.nextIn(e)) edgesBefore_.push_back(TraceEdge{e, g.edgeKind(e), g.source(e), g.target(e)});
@@ -128,9 +134,18 @@ void TraceRecorder::stepDone(long long step, const Graph& g) {
     unique(s.matchedNodes);
     unique(s.matchedEdges);
     unique(s.matchedFaces);
-    unique(facesBefore_);
-    for (FaceId f : facesBefore_)
-        if (!g.faceAlive(f)) s.deletedFaces.push_back(f);
+    // The first record of a face is from before the step's first rewrite.
+    std::stable_sort(facesBefore_.begin(), facesBefore_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < facesBefore_.size(); ++i) {
+        const auto& [f, corners] = facesBefore_[i];
+        if (i > 0 && facesBefore_[i - 1].first == f) continue;
+        if (!g.faceAlive(f)) {
+            s.deletedFaces.push_back(f);
+        } else if (TraceFace now = traceFace(g, f); now.corners != corners) {
+            s.deletedFaces.push_back(f);
+            s.addedFaces.push_back(std::move(now));
+        }
+    }
     for (FaceId f = static_cast<FaceId>(faceCapacity_); f < g.faceCapacity(); ++f)
         if (g.faceAlive(f)) s.addedFaces.push_back(traceFace(g, f));
     // Ids are never reused: what is new lies past the old capacities.
