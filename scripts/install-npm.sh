@@ -3,7 +3,8 @@
 # vscode-languageclient; vscode-textmate and vscode-oniguruma for the grammar
 # tests; @vscode/vsce to package. And those of the --view page (web/view):
 # three and esbuild, which bundles the page's script into
-# web/view/dist/view.bundle.js for CMake to embed in the runtime, and
+# web/view/dist/view.bundle.js (and the 2D trace player's into
+# trace.bundle.js) for CMake to embed in the runtime, and
 # puppeteer-core, which drives chromium in tests/view. As pinned
 # by their package-lock.json files, without install scripts. Idempotent: does
 # nothing (and needs no network) when they are installed, the lock files have
@@ -23,8 +24,9 @@ npm_ci "$root/editors/vscode"
 view="$root/web/view"
 npm_ci "$view"
 # Bundled again when the script, the package set or the build command changed.
-bundle="$view/dist/view.bundle.js"
-if [ ! -f "$bundle" ] || [ -n "$(find "$view/src" "$view/package.json" "$view/node_modules/.package-lock.json" -newer "$bundle" -print -quit)" ]; then
+# (dist/trace.bundle.js, the 2D trace player, is made by the same command, after.)
+bundle="$view/dist/view.bundle.js" trace="$view/dist/trace.bundle.js"
+if [ ! -f "$bundle" ] || [ ! -f "$trace" ] || [ -n "$(find "$view/src" "$view/package.json" "$view/node_modules/.package-lock.json" -newer "$bundle" -print -quit)" ]; then
   echo "install-npm: bundling web/view" >&2
   (cd "$view" && npm run --silent build -- --log-level=warning)
 fi
