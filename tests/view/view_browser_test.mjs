@@ -34,6 +34,7 @@ run("tests/view/fan_colours.g2d", "--view", "fan.html");
 run("tests/view/tubes.g2d", "-D", "r=0.04", "--view", "tube.html");
 run("tests/view/tubes.g2d", "-D", "r=0", "--view", "hairline.html");
 run("examples/g3_box.g2d", "--trace", "box_trace.html", "--trace-json", "box_trace.json");
+run("examples/g3_house.g2d", "--trace", "house_trace.html", "--trace-json", "house_trace.json");
 
 const browser = await puppeteer.launch({
   executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
@@ -165,11 +166,11 @@ check((await page.evaluate(() => window.g2dView.tubes)) === 0, "the hairline is 
 // The 3D trace: nodes keep z; the player steps, drawing per step the elements the trace says.
 const trace = JSON.parse(readFileSync(join(work, "box_trace.json"), "utf8"));
 check(trace.space === "3d" && trace.axiom.nodes.every((n) => n.length === 5), "the 3D trace keeps z");
-const expected = [];
-{
+// The graph's counts after each step, replayed here from the trace.
+function countsPerStep(trace) {
   const nodes = new Set(trace.axiom.nodes.map((n) => n[0])), edges = new Set(trace.axiom.edges.map((e) => e[0]));
   const faces = new Set(trace.axiom.faces.map((f) => f[0]));
-  expected.push([nodes.size, edges.size, faces.size]);
+  const out = [[nodes.size, edges.size, faces.size]];
   for (const s of trace.steps) {
     s.deleted.nodes.forEach((i) => nodes.delete(i));
     s.deleted.edges.forEach((i) => edges.delete(i));
@@ -177,28 +178,40 @@ const expected = [];
     s.added.nodes.forEach((n) => nodes.add(n[0]));
     s.added.edges.forEach((e) => edges.add(e[0]));
     s.added.faces.forEach((f) => faces.add(f[0]));
-    expected.push([nodes.size, edges.size, faces.size]);
+    out.push([nodes.size, edges.size, faces.size]);
   }
+  return out;
 }
-await page.goto("file://" + join(work, "box_trace.html"), { waitUntil: "load" });
-await page.waitForFunction(() => window.g2dTrace && window.g2dTrace.drawn);
-check((await page.$eval("#status", (s) => s.textContent)) === "", "box trace: the script ran");
-await shot("trace3d_box_final.png");
-const seen = [];
+// Steps through a trace page with the Next button: what it draws per step,
+// and (`ink`) the canvas's pixels drawn per step.
+async function stepThrough(name, steps, ink) {
+  await page.goto("file://" + join(work, name), { waitUntil: "load" });
+  await page.waitForFunction(() => window.g2dTrace && window.g2dTrace.drawn);
+  check((await page.$eval("#status", (s) => s.textContent)) === "", `${name}: the script ran`);
+  const seen = [];
+  await page.evaluate(() => window.g2dTrace.go(0));
+  for (let f = 0; f <= steps; f++) {
+    if (f > 0) await page.click("#next");
+    const d = await page.evaluate(() => window.g2dTrace.drawn);
+    seen.push([d.nodes, d.edges, d.faces]);
+    if (ink) ink.push((await pixels()).ink);
+  }
+  return seen;
+}
 const ink = [];
-await page.evaluate(() => window.g2dTrace.go(0));
-for (let f = 0; f <= trace.steps.length; f++) {
-  if (f > 0) await page.click("#next");
-  const d = await page.evaluate(() => window.g2dTrace.drawn);
-  seen.push([d.nodes, d.edges, d.faces]);
-  ink.push((await pixels()).ink);
-  if (f === 2) await shot("trace3d_box_step2.png");
-}
-check(JSON.stringify(seen) === JSON.stringify(expected), `box trace per step ${JSON.stringify(seen)}, expected ${JSON.stringify(expected)}`);
+let seen = await stepThrough("box_trace.html", trace.steps.length, ink);
+check(JSON.stringify(seen) === JSON.stringify(countsPerStep(trace)), `box trace per step ${JSON.stringify(seen)}`);
 check(ink.every((n) => n > 1000) && ink[ink.length - 1] > ink[0], `box trace: pixels per step ${ink}`);
-const last = await page.evaluate(() => window.g2dTrace.drawn);
-check(last.triangles > 0, "box trace: faces drawn as triangles");
+await page.evaluate(() => window.g2dTrace.go(2));
+await shot("trace3d_box_step2.png");
 console.log("box trace: elements per step", JSON.stringify(seen));
+const houseTrace = JSON.parse(readFileSync(join(work, "house_trace.json"), "utf8"));
+seen = await stepThrough("house_trace.html", houseTrace.steps.length, null);
+check(JSON.stringify(seen) === JSON.stringify(countsPerStep(houseTrace)), `house trace per step ${JSON.stringify(seen)}`);
+await shot("trace3d_house_final.png");
+const last = await page.evaluate(() => window.g2dTrace.drawn);
+check(last.triangles > last.faces, `house trace: faces drawn as triangles (${last.triangles})`);
+console.log("house trace: nodes, edges, faces at the last step", JSON.stringify(seen[seen.length - 1]));
 
 check(errors.length === 0, "page errors: " + errors.join("; "));
 await browser.close();
