@@ -63,9 +63,10 @@ export function traceFrames(trace) {
       (st.added.faces || []).forEach(([id]) => m.added.add("f" + id));
       st.moved.forEach(([id]) => m.moved.add("n" + id));
     }
-    // "matched" means matched and kept; a face deleted and added again (new corners) is "added".
+    // "matched" means matched and kept. A face deleted and added again kept
+    // its id and only gained corners: it is neither.
     for (const key of m.deleted) m.matched.delete(key);
-    for (const key of m.added) m.deleted.delete(key);
+    for (const key of [...m.added]) if (m.deleted.has(key)) m.added.delete(key), m.deleted.delete(key);
     return m;
   }
 
