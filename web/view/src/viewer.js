@@ -282,7 +282,8 @@ export function createViewer({ panel, key }) {
     box.addEventListener("change", () => show(part, box.checked));
     const text = document.createElement("label");
     text.htmlFor = box.id;
-    text.textContent = part[0].toUpperCase() + part.slice(1) + " ";
+    text.textContent = part[0].toUpperCase() + part.slice(1);
+    text.title = "key " + part[0].toUpperCase();
     text.prepend(box);
     bar.append(text);
     boxes[part] = box;
@@ -297,12 +298,12 @@ export function createViewer({ panel, key }) {
     buttons.append(b);
     return b;
   };
-  button("Home", "R", views.home);
-  button("Front", "1", views.front);
-  button("Side", "2", views.side);
-  button("Top", "3", views.top);
-  button("Save view", "S", save);
-  const saved = button("Saved view", "V", restore);
+  button("Home", "R: the first view", views.home);
+  button("Front", "1: from the front (-y)", views.front);
+  button("Side", "2: from the side (+x)", views.side);
+  button("Top", "3: from above (+z)", views.top);
+  button("Save", "S: keep this view (in the browser)", save);
+  const saved = button("Saved", "V: the view kept with Save", restore);
   try {
     saved.disabled = !localStorage.getItem(storeKey);
   } catch (e) {

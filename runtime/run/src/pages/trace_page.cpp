@@ -48,7 +48,8 @@ canvas { display: block; }
 #controls { display: flex; align-items: center; gap: 6px; margin: 6px 0; }
 #slider { flex: 1; }
 #note, #status { color: #8a5a00; }
-#toggles, #views { margin-top: 4px; }
+#toggles, #views { display: inline-block; margin: 4px 8px 0 0; white-space: nowrap; }
+#views button { font: 12px system-ui, sans-serif; padding: 1px 6px; }
 .legend span { display: inline-block; margin-right: 12px; }
 .sw { display: inline-block; width: 12px; height: 12px; vertical-align: middle; margin-right: 4px; }
 small { display: block; color: #666; margin-top: 2px; }

@@ -115,8 +115,9 @@ canvas { display: block; }
   border: 1px solid #ddd; border-radius: 4px; }
 #legend small { display: block; color: #666; margin-top: 2px; }
 #status { color: #a33; }
-#toggles, #views { margin-top: 4px; }
-#toggles label { margin-right: 8px; }
+#toggles, #views { display: inline-block; margin: 4px 8px 0 0; white-space: nowrap; }
+#toggles label { margin-right: 6px; }
+#views button { font: 12px system-ui, sans-serif; padding: 1px 6px; }
 )CSS";
 
 }  // namespace
@@ -192,8 +193,8 @@ std::string writeViewPage(const ViewModel& m) {
                       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
                       title + " — g2d view</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
     out += "<div id=\"legend\"><strong>" + title + "</strong> — " + counts +
-           "<small>Drag to turn, right-drag to pan, scroll to zoom. Keys: F faces, E edges, N nodes, A axes; "
-           "R home, 1 front, 2 side, 3 top, S save the view, V go to it. Back sides are darker.</small>"
+           "<small>Drag to turn, right-drag to pan, scroll to zoom; keys F, E, N, A, and R, 1, 2, 3, S, V "
+           "as the buttons. Back sides are darker.</small>"
            "<span id=\"status\">This page needs JavaScript and WebGL.</span></div>\n";
     out += "<script id=\"g2d-model\" type=\"application/json\">" + scriptSafe(modelJson(m)) + "</script>\n";
     out += "<script>" + viewScript() + "</script>\n</body>\n</html>\n";
