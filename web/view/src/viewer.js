@@ -91,7 +91,7 @@ function faceMeshes(model, palette, translucent) {
   return { meshes, triangles };
 }
 
-function hairlines(model, palette, nodes, edges) {
+function hairlines(palette, nodes, edges) {
   const pos = new Float32Array(edges.length * 6), col = new Float32Array(edges.length * 6);
   edges.forEach(([a, b, ci], i) => {
     const c = palette[ci] || new Color(0);
@@ -368,7 +368,7 @@ export function createViewer({ panel, key }) {
     }
     drawn.faces = model.faces.length;
     const thin = model.edges.filter((e) => !(e[3] > 0)), thick = model.edges.filter((e) => e[3] > 0);
-    if (thin.length) groups.edges.add(hairlines(model, palette, model.nodes, thin));
+    if (thin.length) groups.edges.add(hairlines(palette, model.nodes, thin));
     if (thick.length) groups.edges.add(tubes(palette, model.nodes, thick));
     drawn.edges = model.edges.length;
     drawn.tubes = thick.length;
