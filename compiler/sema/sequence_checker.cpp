@@ -36,6 +36,7 @@ const std::vector<ir::SequenceEntry>& CommandLists::list(const ast::SequenceDecl
     const std::string& name = d.name->name;
     if (auto it = done_.find(name); it != done_.end()) return it->second;
     if (std::find(open_.begin(), open_.end(), name) != open_.end()) {
+        if (!cycles_.insert(name).second) return none;   // said once
         std::string path;
         for (auto it = std::find(open_.begin(), open_.end(), name) + 1; it != open_.end(); ++it) path += (path.empty() ? "" : ", ") + ("`" + *it + "`");
         g_.diags.error(at.span, "sequence `" + name + "` contains itself" + (path.empty() ? "" : " (through " + path + ")") +

@@ -38,6 +38,7 @@ private:
     std::vector<std::string> open_;                        // the lists being written out, outermost first
     std::map<const ast::SequenceItem*, int> counts_;       // each repeat's Program::repeatCounts index
     std::set<std::string> used_;
+    std::set<std::string> cycles_;                          // lists reported as containing themselves
     bool tooLong_ = false;
 };
 

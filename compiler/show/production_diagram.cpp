@@ -284,6 +284,8 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
         p.caption += std::string(" · for each ") + (l.sides ? "side" : "corner") + " of " + f.name + ": " + count(l.nodes.size(), "node") +
                      ", " + count(l.edges.size(), "edge") + ", " + count(l.faces.size(), "face");
     }
+    for (const auto& rf : d.ringFaces)
+        p.caption += " · a " + kindName(prog, rf.kind) + " over every turn's node" + (rf.reversed ? ", reversed" : "");
     for (const auto& sp : d.splits)
         p.caption += " · split " + r.faces[static_cast<std::size_t>(sp.motherFace)].name +
                      (sp.centre ? " around a new " + kindName(prog, sp.centre->kind) : std::string(" by a chord")) + ", edges " +
