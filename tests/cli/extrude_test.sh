@@ -11,6 +11,7 @@
 set -u
 g2d="$1"; src="$2"; compiled="${3:-yes}"
 source "$(dirname "$0")/test_lib.sh"
+export PYTHONPATH="$src/tests/pylib"
 grammar="$src/examples/extrude.g2d"
 
 [ "$compiled" = yes ] && expect_code 0 "$g2d" build "$grammar" -o extrude
@@ -20,6 +21,7 @@ for storeys in 1 3; do
   python3 - "i_$storeys.json" "$storeys" <<'PY' || fail "storeys $storeys: wrong prisms"
 import json, sys
 from collections import Counter
+from mesh_checks import oriented_sides
 d = json.load(open(sys.argv[1])); storeys = int(sys.argv[2])
 pos = {v["id"]: tuple(v["pos"]) for v in d["nodes"]}
 faces = d["faces"]
@@ -34,15 +36,7 @@ if storeys == 1:
     for fp in footprints:
         top = next(f["corners"] for f in faces if f["kind"] == "Top" and pos[f["corners"][0]][:2] == pos[fp[0]][:2])
         assert [pos[t] for t in top] == [(pos[c][0], pos[c][1], pos[c][2] + 1.0) for c in fp], (top, fp)
-# closed and consistently oriented: every side once each way
-sides = Counter()
-for f in faces:
-    c = f["corners"]
-    assert len(set(c)) == len(c) >= 3, c
-    for i in range(len(c)):
-        sides[(c[i], c[(i + 1) % len(c)])] += 1
-assert max(sides.values()) == 1, "a side run twice the same way"
-assert all((b, a) in sides for (a, b) in sides), "a side with a face on one side only"
+oriented_sides(faces)   # closed and consistently oriented: every side once each way
 assert len(d["nodes"]) - len(d["links"]) + len(faces) == 2 * 3   # three closed surfaces
 # outward: each face's (Newell) normal points away from its solid's centre (the solids are convex)
 def sub(a, b): return tuple(x - y for x, y in zip(a, b))
