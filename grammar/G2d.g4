@@ -43,12 +43,18 @@ defsDecl    : 'defs' STRING ';' ;
 // merge within TOLERANCE;   every rule merges coinciding nodes (G^3 §3.1).
 // `merge` is a keyword that may also name a parameter (`param merge: bool`).
 mergeDecl   : 'merge' 'within' expr ';' ;
-// sequence { A; B; A; }   a G^3 command list: each once, in order, in parallel
-sequenceDecl: 'sequence' '{' (ID ';')* '}' ;
+// sequence { A; B; A; }   a G^3 command list: each once, in order, in parallel;
+// sequence L { A; B; }     a named list (G^3's rule, §2.4.6) that lists name
+sequenceDecl: 'sequence' name=ID? sequenceBody ;
+sequenceBody: '{' sequenceItem* '}' ;
+sequenceItem
+    : ID ';'                        # sequenceName     // a rule, compound or named list
+    | 'repeat' expr sequenceBody    # sequenceRepeat   // the entries, N times (N may read parameters)
+    ;
 // compound C { match { f: Face …; } sequence { A; B; } }   G^3's compound
 // command (§3.3): its commands, in order, within the scope of each match;
 // its lets are values of each match that its commands' rules read as C.name
-compoundDecl: 'compound' ID '{' matchBlock letStmt* sequenceDecl '}' ;
+compoundDecl: 'compound' ID '{' matchBlock letStmt* 'sequence' sequenceBody '}' ;
 
 // layout angles { canvas_min = (0, 0); canvas_max = (40, 30); }   new nodes
 // are placed by Merrell 2023's drawing step (edges keep their kinds' angles)
@@ -111,9 +117,12 @@ edgeArrow
 edgeLabel   : ID assignments? ;
 
 // [name:] Kind(corner, corner, corner, ...) [{ assignments }] [where condition] ;
+// Kind(all t) / Kind(all t reversed): node t of every turn of a `for` loop
 faceStmt
-    : (name=ID ':')? kind=ID '(' corners+=nodeRef (',' corners+=nodeRef)* ')' assignments? whereClause? ';'
+    : (name=ID ':')? kind=ID '(' (ring=ringCorners | corners+=nodeRef (',' corners+=nodeRef)*) ')' assignments? whereClause? ';'
     ;
+// `all` and `reversed` are plain names (they may still name anything): sema checks them
+ringCorners : every=ID node=ID order=ID? ;
 
 // ---- rules -----------------------------------------------------------------
 ruleDecl    : 'rule' ID ruleOption* '{' matchBlock ruleItem* '}' ;

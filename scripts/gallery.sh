@@ -49,6 +49,7 @@ examples=(
   "g3_cupboard|1|A cupboard in the spirit of G^3's Fig. 5.2: one compound gives drawers on narrow panels and doors on wide ones"
   "g3_sofa|1|A sofa in the spirit of G^3's Fig. 5.3: a maple-leaf compound on every tile, in any orientation"
   "g3_windmill|1|G^3's windmill compound (Figs 3.13, 3.14): Split face, Edit node, Create edge and Create face, sized by the face it starts from"
+  "extrude|1|Extrusion of any footprint: one rule turns a triangle, a square and a hexagon into closed prisms (faces over a loop's turns: Top(all t)), storey on storey"
 )
 
 {

@@ -82,11 +82,20 @@ struct EdgeStmt {
     Span span;
 };
 
+// `all t` or `all t reversed` as a face's corners: node t of every turn of
+// a `for` loop (`every` and `order` are the words as written; sema checks them).
+struct RingCorners {
+    Ident every, node;
+    std::optional<Ident> order;
+    Span span;
+};
+
 // `name: Kind(a, b, c) {..} where cond;` a face and its corners, in order.
 struct FaceStmt {
     std::optional<Ident> name;
     Ident kind;
     std::vector<Ident> corners;
+    std::optional<RingCorners> ring;   // `Kind(all t)`: then no corners
     std::vector<Assignment> assigns;
     ExprPtr where;
     Span span;
@@ -215,7 +224,16 @@ struct PriorityDecl {
 };
 struct DefsDecl { std::string svg; Span span; };
 struct MergeDecl { ExprPtr tolerance; Span span; };
-struct SequenceDecl { std::vector<Ident> rules; Span span; };
+// An entry of a command list: a name (a rule, compound or named list), or
+// `repeat COUNT { … }` (count set, its entries in body).
+struct SequenceItem {
+    Ident name;
+    ExprPtr count;
+    std::vector<SequenceItem> body;
+    Span span;
+};
+// `sequence { … }`, or a named list `sequence NAME { … }` (G^3's rule, §2.4.6).
+struct SequenceDecl { std::optional<Ident> name; std::vector<SequenceItem> items; Span span; };
 // `compound C { match { … } let …; sequence { … } }`: `match` is a rule named
 // C, with the compound's lets, whose one daughter is empty (it is never
 // applied: its matches are the compound's initial primitives).

@@ -283,6 +283,15 @@ private:
             out += "            out[" + str(static_cast<long long>(r)) + "] = " + v + ";\n";
         }
         out += "        } catch (const OpError& e) {\n            throw PlacedError(loc_, e.what());\n        }\n        return out;\n    }\n\n";
+        // Each count checked where it is written, as the interpreter does.
+        out += "    std::vector<long long> repeatCounts() override {\n        std::vector<long long> out;\n";
+        for (const ir::Expr& count : prog_.repeatCounts) {
+            out += "        try {\n";
+            const std::string v = gen_.gen(count, noElements(), out, "            ");
+            out += "            out.push_back(checkedRepeatCount(" + v + "));\n        } catch (const OpError& e) {\n            throw PlacedError(" +
+                   str(places_.add(count.span)) + ", e.what());\n        }\n";
+        }
+        out += "        return out;\n    }\n\n";
         return out;
     }
 
@@ -445,7 +454,10 @@ private:
         std::string out;
         auto entries = [](const std::vector<rt::SequenceEntry>& list) {
             std::string e;
-            for (const auto& x : list) e += std::string(e.empty() ? "" : ", ") + "{" + (x.compound ? "true" : "false") + ", " + str(static_cast<long long>(x.index)) + "}";
+            for (const auto& x : list)
+                e += std::string(e.empty() ? "" : ", ") + "{SequenceEntry::" +
+                     (x.kind == rt::SequenceEntry::Compound ? "Compound" : x.kind == rt::SequenceEntry::Repeat ? "Repeat" : "Rule") + ", " +
+                     str(static_cast<long long>(x.index)) + ", " + str(static_cast<long long>(x.body)) + "}";
             return "{" + e + "}";
         };
         if (!prog_.sequence.empty()) {
@@ -563,6 +575,7 @@ private:
         out += "    struct PendingRef {\n        std::uint32_t daughter, index;\n    };\n    GrowArray<PendingRef> pendingOrder_;\n";
         out += "    std::vector<NodeId> loopNodes_;   // a `for` loop's new nodes, turn by turn\n";
         out += "    std::vector<NodeId> splitChosen_;   // a split's chosen corners\n";
+        out += "    std::vector<NodeId> ringCorners_;   // a face over a loop's turns\n";
         for (std::size_t k = 0; k < prog_.kinds.size(); ++k) {
             if (prog_.kinds[k].attrs.empty()) continue;
             const std::string sk = str(static_cast<long long>(k));

@@ -90,6 +90,23 @@ std::string RewritePrinter::commitLoop(int loop, const lower::RewriteProgram& p,
     return out;
 }
 
+// A face over node turnNode of every turn of a loop, right after its commit
+// (loopNodes_ still holds the loop's new nodes).
+std::string RewritePrinter::ringFace(const lower::CreateRingFace& o, const lower::RewriteProgram& p, const std::string& c) {
+    const lower::LoopProgram& l = p.loops[static_cast<std::size_t>(o.loop)];
+    const std::string L = str(o.loop), b = c + "    ", n = "p.loopCount" + L;
+    std::string out = c + "ringCorners_.clear();\n" + c + "for (std::uint32_t lk = 0; lk < " + n + "; ++lk) {\n";
+    out += b + "const std::uint32_t lt = " + (o.reversed ? n + " - 1 - lk" : std::string("lk")) + ";\n";
+    out += b + "const Turn_" + loopNames_ + "_" + L + "& T = turns_" + loopNames_ + "_" + L + "_[p.loopFirst" + L + " + lt];\n";
+    out += b + "(void)T;\n";
+    const std::string corner = o.turnNode == 0   ? "T.u"
+                               : o.turnNode == 1 ? "T.v"
+                                                 : "loopNodes_[std::size_t{lt} * " + str(l.localNodes) + " + " + str(o.turnNode - 2) + "]";
+    out += b + "ringCorners_.push_back(" + corner + ");\n" + c + "}\n";
+    out += c + "const FaceId " + face(o.handle) + " = G.addFace(" + str(o.kind) + ", ringCorners_, step);\n" + c + "(void)" + face(o.handle) + ";\n";
+    return out + record(o.kind, o.attrs, face(o.handle), ir::ElemClass::Face, c);
+}
+
 // The chosen corners from the split's corner loop, then the cut
 // (rt::splitFace), whose makers are the split's operations as lambdas.
 std::string RewritePrinter::splitFace(const lower::SplitFace& o, const lower::RewriteProgram& p, const std::string& c) {
@@ -207,6 +224,7 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                            commit += c + ifAlive(o.ifAlive, o.handle) + "G.setFaceStyle(" + face(o.handle) + ", " + cppStyleProp(*o.style) + ", " + styleValue(o.value) + ");\n";
                        },
                        [&](const lower::CommitLoop& o) { commit += commitLoop(o.loop, p, c); },
+                       [&](const lower::CreateRingFace& o) { commit += ringFace(o, p, c); },
                        [&](const lower::SplitFace& o) { commit += splitFace(o, p, c); },
                    },
                    op);

@@ -34,6 +34,7 @@ private:
     std::string prepareLoop(int loop, const lower::RewriteProgram& p, const ExprContext& ctx, const std::string& in);
     std::string commitLoop(int loop, const lower::RewriteProgram& p, const std::string& c);
     std::string splitFace(const lower::SplitFace& o, const lower::RewriteProgram& p, const std::string& c);
+    std::string ringFace(const lower::CreateRingFace& o, const lower::RewriteProgram& p, const std::string& c);
     std::string regName(int r) const { return regPrefix_ + std::to_string(r); }
     std::string attrValue(const lower::Operand& v) const;
     std::string position(int posReg) const;

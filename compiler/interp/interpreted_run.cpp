@@ -1,5 +1,6 @@
 #include "interp/interpreted_run.hpp"
 
+#include "g2d/command_list.hpp"
 #include "g2d/ops.hpp"
 #include "interp/drawing.hpp"
 
@@ -58,6 +59,19 @@ std::map<std::size_t, long long> InterpretedRun::ruleLimits() {
     EvalFrame f = state_.frame(nullptr);
     for (std::size_t r = 0; r < prog_.rules.size(); ++r)
         if (prog_.rules[r].limit) out[r] = std::get<long long>(evaluate(*prog_.rules[r].limit, f));
+    return out;
+}
+
+std::vector<long long> InterpretedRun::repeatCounts() {
+    std::vector<long long> out;
+    EvalFrame f = state_.frame(nullptr);
+    for (const ir::Expr& count : prog_.repeatCounts) {
+        try {
+            out.push_back(rt::checkedRepeatCount(std::get<long long>(evaluate(count, f))));
+        } catch (const rt::OpError& e) {
+            throw EvalError(count.span, e.what());
+        }
+    }
     return out;
 }
 

@@ -18,6 +18,7 @@ public:
     std::optional<long long> stepLimit() override;
     std::map<long long, long long> priorityLimits() override;
     std::map<std::size_t, long long> ruleLimits() override;
+    std::vector<long long> repeatCounts() override;
     std::optional<rt::ViewBox> canvas() override;
     rt::Graph& graph() override { return graph_; }
     rt::RuleSet& rules() override { return *rules_; }

@@ -122,6 +122,19 @@ void RewriteExecutor::commitLoop(const lower::LoopProgram& l, LoopValues& values
         apply(l.link, rt::Match{}, turnRegisters, g, step, p, loops);
     }
     hostOf_ = outer;
+    values.made = turnNodes_;
+}
+
+// Node `turnNode` of every turn (lower::CreateRingFace), in turn order or reversed.
+void RewriteExecutor::ringCorners(const lower::CreateRingFace& o, const lower::LoopProgram& l, const LoopValues& values) {
+    const std::size_t turns = values.corners.size(), L = static_cast<std::size_t>(l.localNodes);
+    corners_.clear();
+    for (std::size_t k = 0; k < turns; ++k) {
+        const std::size_t t = o.reversed ? turns - 1 - k : k;
+        corners_.push_back(o.turnNode == 0   ? values.corners[t]
+                           : o.turnNode == 1 ? values.corners[(t + 1) % turns]
+                                             : values.made[t * L + static_cast<std::size_t>(o.turnNode - 2)]);
+    }
 }
 
 void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g,
@@ -185,6 +198,11 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        },
                        [&](const lower::InsertBetween& o) { g.insertBetween(nodes[o.first], nodes[o.second], nodes[o.node]); },
                        [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },
+                       [&](const lower::CreateRingFace& o) {
+                           ringCorners(o, p.loops[static_cast<std::size_t>(o.loop)], loops[static_cast<std::size_t>(o.loop)]);
+                           faces[o.handle] = g.addFace(o.kind, corners_, step);
+                           for (const auto& w : o.attrs) g.initFaceAttr(faces[o.handle], w.attr, value(w.value));
+                       },
                        [&](const lower::SplitFace& o) { split(p.splits[o.split], faces[o.face], registers, g, step, p, loops); },
                    },
                    op);

@@ -17,6 +17,7 @@ namespace g2d::interp {
 struct LoopValues {
     std::vector<rt::NodeId> corners;
     std::vector<rt::Value> registers;
+    std::vector<rt::NodeId> made;      // after commit: each turn's new nodes (turn t's node i at t * localNodes + i)
 };
 
 class RewriteExecutor {
@@ -33,6 +34,7 @@ private:
     void place(const lower::Place& o, rt::Match m, const rt::Graph& g);
     static rt::Value evaluatePosition(const lower::EvalPosition& o, EvalFrame& f);
     void prepareLoop(const lower::LoopProgram& l, rt::Match m, const rt::Graph& g, EvalFrame& f, LoopValues& out);
+    void ringCorners(const lower::CreateRingFace& o, const lower::LoopProgram& l, const LoopValues& values);
     // The operations `ops` on the handles in hostOf_, edgeOf_, faceOf_.
     void apply(const std::vector<lower::CommitOp>& ops, rt::Match m, std::vector<rt::Value>& registers, rt::Graph& g,
                long long step, const lower::RewriteProgram& p, std::vector<LoopValues>& loops);

@@ -376,6 +376,19 @@ struct FaceLoop {
     Span span;
 };
 
+// `Kind(all t)` or `Kind(all t reversed)` in a daughter: one face whose
+// corners are node `corner` (the loop's u, v or a node it creates) of every
+// turn of loop `loop` (Daughter::loops), in turn order or reversed.
+struct RingFace {
+    int kind = -1;
+    int loop = -1;
+    LoopNodeRef corner;                // Scope::Var or Scope::Local
+    bool reversed = false;
+    std::vector<AttrAssign> assigns;
+    std::vector<StyleAssign> styles;
+    Span span;
+};
+
 // `split f …`: G^3's Split face (rt::splitFace) on matched face motherFace.
 // `cond`, read with the corner as match node firstVar, chooses corners; the
 // chosen ones cut the face, around a new node (centre), or, two, by a chord.
@@ -400,6 +413,7 @@ struct Daughter {
     std::vector<NewFace> faces;
     std::vector<KeptFace> keptFaces;
     std::vector<FaceLoop> loops;
+    std::vector<RingFace> ringFaces;   // after their loops' turns
     struct Insert { int node, first, second; Span span; };   // daughter node indices
     std::vector<Insert> inserts;       // `insert node between first and second`, in order
     std::vector<FaceSplit> splits;     // after everything else; each face is kept (keptFaces) until it is cut
@@ -470,10 +484,14 @@ inline const PatternNode& slotNode(const Rule& r, const NegativeCondition* nac, 
     return i < static_cast<int>(r.nodes.size()) ? r.nodes[i] : nac->nodes[i - nac->outerNodes];
 }
 
-// An entry of a `sequence`: a rule, or a compound (Program::compounds).
+// An entry of a `sequence`: a rule, a compound (Program::compounds), or a
+// `repeat` (Program::repeatCounts), which runs the `body` entries after it
+// (nested repeats counted in) that many times. Named lists are written out
+// where they are named (G^3 §2.4.6: their commands merge into one list).
 struct SequenceEntry {
-    bool compound = false;
+    enum class Kind { Rule, Compound, Repeat } kind = Kind::Rule;
     int index = -1;
+    int body = 0;
 };
 // `compound C { match { … } sequence { … } }`: G^3's compound command (§3.3).
 struct Compound {
@@ -498,6 +516,9 @@ struct Program {
     bool mergeAll = false;
     std::optional<AngleLayout> angleLayout;   // `layout angles { … }`
     std::vector<SequenceEntry> sequence;   // `sequence { … }`, in order
+    // Per `repeat N { … }` (SequenceEntry::index): N, an int of constants
+    // and parameters, evaluated when the run starts (GrammarRun::repeatCounts).
+    std::vector<Expr> repeatCounts;
     std::vector<Compound> compounds;
     std::vector<Enum> enums;
     std::vector<Kind> kinds;

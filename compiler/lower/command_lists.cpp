@@ -6,7 +6,12 @@ namespace {
 
 std::vector<rt::SequenceEntry> entriesOf(const std::vector<ir::SequenceEntry>& list) {
     std::vector<rt::SequenceEntry> out;
-    for (const auto& e : list) out.push_back(rt::SequenceEntry{e.compound, static_cast<std::size_t>(e.index)});
+    for (const auto& e : list) {
+        const rt::SequenceEntry::Kind kind = e.kind == ir::SequenceEntry::Kind::Compound ? rt::SequenceEntry::Compound
+                                             : e.kind == ir::SequenceEntry::Kind::Repeat ? rt::SequenceEntry::Repeat
+                                                                                         : rt::SequenceEntry::Rule;
+        out.push_back(rt::SequenceEntry{kind, static_cast<std::size_t>(e.index), static_cast<std::size_t>(e.body)});
+    }
     return out;
 }
 

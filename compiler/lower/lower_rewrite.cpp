@@ -14,7 +14,7 @@ public:
     RewriteProgram lower() {
         p_.nodeHandles = static_cast<int>(d_.nodes.size());
         p_.edgeHandles = static_cast<int>(d_.edges.size());
-        p_.faceHandles = static_cast<int>(d_.faces.size() + d_.keptFaces.size());
+        p_.faceHandles = static_cast<int>(d_.faces.size() + d_.keptFaces.size() + d_.ringFaces.size());
         prepare();
         commit();
         return std::move(p_);
@@ -137,9 +137,17 @@ private:
             for (const auto& a : d_.keptFaces[i].assigns) keptFaceAttrs_[i].push_back(AttrWrite{a.attr, operand(a.value)});
             for (const auto& s : d_.keptFaces[i].styles) keptFaceStyles_[i].emplace_back(&s, operand(s.value));
         }
+        ringAttrs_.resize(d_.ringFaces.size());
+        ringStyles_.resize(d_.ringFaces.size());
         for (std::size_t i = 0; i < d_.loops.size(); ++i) {
             p_.loops.push_back(lowerLoop(d_.loops[i]));
             p_.prepare.push_back(PrepareLoop{static_cast<int>(i)});
+            // A face over the loop's turns: its values once, after the turns'.
+            for (std::size_t j = 0; j < d_.ringFaces.size(); ++j) {
+                if (d_.ringFaces[j].loop != static_cast<int>(i)) continue;
+                for (const auto& a : d_.ringFaces[j].assigns) ringAttrs_[j].push_back(AttrWrite{a.attr, operand(a.value)});
+                for (const auto& s : d_.ringFaces[j].styles) ringStyles_[j].emplace_back(&s, operand(s.value));
+            }
         }
         for (const auto& s : d_.splits) lowerSplit(s);
     }
@@ -271,7 +279,18 @@ private:
             c.push_back(CreateFace{h, df.kind, df.corners, faceAttrs_[i]});
             for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value, false});
         }
-        for (std::size_t i = 0; i < d_.loops.size(); ++i) c.push_back(CommitLoop{static_cast<int>(i)});
+        for (std::size_t i = 0; i < d_.loops.size(); ++i) {
+            c.push_back(CommitLoop{static_cast<int>(i)});
+            // Right after its loop, while the back ends hold the turns' nodes.
+            for (std::size_t j = 0; j < d_.ringFaces.size(); ++j) {
+                const ir::RingFace& rf = d_.ringFaces[j];
+                if (rf.loop != static_cast<int>(i)) continue;
+                const int h = static_cast<int>(d_.faces.size() + d_.keptFaces.size() + j);
+                const int turnNode = rf.corner.scope == ir::LoopNodeRef::Scope::Var ? rf.corner.index : 2 + rf.corner.index;
+                c.push_back(CreateRingFace{h, rf.kind, static_cast<int>(i), turnNode, rf.reversed, ringAttrs_[j]});
+                for (const auto& [style, value] : ringStyles_[j]) c.push_back(SetFaceStyle{h, style, value, false});
+            }
+        }
         // Last, so the face has its attributes (and any inserted corners) when it is cut.
         for (std::size_t i = 0; i < d_.splits.size(); ++i) c.push_back(SplitFace{keptFaceHandle(d_.splits[i].motherFace), static_cast<int>(i)});
         p_.effects = rewriteEffects(prog_, r_, p_);
@@ -288,9 +307,9 @@ private:
     const ir::Daughter& d_;
     RewriteProgram p_;
     std::vector<int> posReg_;
-    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_, faceAttrs_, keptFaceAttrs_;
+    std::vector<std::vector<AttrWrite>> nodeAttrs_, edgeAttrs_, faceAttrs_, keptFaceAttrs_, ringAttrs_;
     std::vector<std::optional<Operand>> nodeRadius_;
-    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_, faceStyles_, keptFaceStyles_;
+    std::vector<std::vector<std::pair<const ir::StyleAssign*, Operand>>> nodeStyles_, edgeStyles_, faceStyles_, keptFaceStyles_, ringStyles_;
 };
 
 }  // namespace

@@ -105,6 +105,10 @@ std::string printRewrite(const ir::Program& prog, const ir::Rule& rule, const Re
                                          attrs(prog, o.kind, o.attrs);
                               } else if constexpr (std::is_same_v<T, SetFaceStyle>)
                                   return "f" + std::to_string(o.handle) + ".style." + o.style->prop + " = " + operand(o.value);
+                              else if constexpr (std::is_same_v<T, CreateRingFace>)
+                                  return "f" + std::to_string(o.handle) + " = new " + prog.kinds[o.kind].name + "(all turns' h" +
+                                         std::to_string(p.loops[static_cast<std::size_t>(o.loop)].outerNodes + o.turnNode) + " of loop " +
+                                         std::to_string(o.loop) + (o.reversed ? ", reversed" : "") + ")" + attrs(prog, o.kind, o.attrs);
                               else if constexpr (std::is_same_v<T, SplitFace>)
                                   return "split f" + std::to_string(o.face) + " by split " + std::to_string(o.split);
                               else {

@@ -145,6 +145,7 @@ private:
                            visitAll(l.create, &l);
                            visitAll(l.link, &l);
                        },
+                       [&](const CreateRingFace& o) { changed_.add(o.kind, ir::ElemClass::Face); },
                        [&](const SplitFace& o) { split(o); },
                    },
                    op);

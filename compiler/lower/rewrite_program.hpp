@@ -121,10 +121,20 @@ struct CreateFace {
 struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; bool ifAlive; };
 struct InsertBetween { int node, first, second; };    // node handles (rt::Graph::insertBetween)
 struct CommitLoop { int loop; };    // RewriteProgram::loops[loop]: every turn's create, then every turn's link
+// A face over one node of every turn of committed loop `loop` (ir::RingFace),
+// in turn order or reversed: node `turnNode` of the turn in the loop's
+// numbering less outerNodes (0: its corner u, 1: v, 2 + i: its new node i).
+struct CreateRingFace {
+    int handle, kind;
+    int loop, turnNode;
+    bool reversed;
+    std::vector<AttrWrite> attrs;
+};
 struct SplitFace { int face; int split; };   // face handle; RewriteProgram::splits[split] (rt::splitFace)
 using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetRadius, SetNodeAttr,
                               TouchNodeValues, SetNodeStyle, BindEdge, SetEdgeAttr, TouchEdge, CreateEdge, SetEdgeStyle,
-                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, InsertBetween, CommitLoop, SplitFace>;
+                              BindFace, SetFaceAttr, TouchFace, CreateFace, SetFaceStyle, InsertBetween, CommitLoop, CreateRingFace,
+                              SplitFace>;
 
 // A `for` loop (ir::FaceLoop), one turn per corner of the matched face, from
 // its first corner. Prepare takes the corners (before the step changes

@@ -54,7 +54,9 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r, const std::vecto
                                            prog.rules.begin());
         info.globalMatches = false;
         for (const auto& e : prog.sequence)
-            if (e.compound ? prog.compounds[static_cast<std::size_t>(e.index)].matchRule == index : e.index == index) info.globalMatches = true;
+            if (e.kind == ir::SequenceEntry::Kind::Compound ? prog.compounds[static_cast<std::size_t>(e.index)].matchRule == index
+                                                            : e.kind == ir::SequenceEntry::Kind::Rule && e.index == index)
+                info.globalMatches = true;
     }
     KindEffects effects = kindEffects(r, prog.kinds);
     info.readKinds = std::move(effects.readKinds);

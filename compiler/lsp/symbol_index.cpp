@@ -126,6 +126,8 @@ SymbolIndex::SymbolIndex(const std::vector<ast::Program>& files, const SourceMan
                     } else if constexpr (std::is_same_v<T, ast::CompoundDecl>) {
                         add(SymbolKind::Rule, d.match.name, Span{});   // a sequence names it as it names a rule
                         matchStmts(d.match.match, d.span, d.match.name.name);
+                    } else if constexpr (std::is_same_v<T, ast::SequenceDecl>) {
+                        if (d.name) add(SymbolKind::Rule, *d.name, Span{});   // a named list: lists name it as they name a rule
                     } else if constexpr (std::is_same_v<T, ast::FnDecl>) {
                         add(SymbolKind::Function, d.name, Span{}, "", d.result.name.name);
                         for (const auto& p : d.params) add(SymbolKind::FnParam, p.name, d.span, d.name.name, p.type.name.name);

@@ -175,16 +175,34 @@ public:
             ProduceBlock none;
             none.span = d.match.matchSpan;
             d.match.items.push_back(RuleItem{std::move(none)});
-            d.body = sequence(c->sequenceDecl());
+            d.body = SequenceDecl{std::nullopt, sequenceItems(c->sequenceBody()), span(c->sequenceBody())};
             return Decl{std::move(d)};
         }
         return Decl{rule(ctx->ruleDecl())};
     }
 
     SequenceDecl sequence(P::SequenceDeclContext* c) {
-        SequenceDecl d{{}, span(c)};
-        for (auto* id : c->ID()) d.rules.push_back(ident(id));
+        SequenceDecl d{std::nullopt, sequenceItems(c->sequenceBody()), span(c)};
+        if (c->name) d.name = ident(c->name);
         return d;
+    }
+
+    std::vector<SequenceItem> sequenceItems(P::SequenceBodyContext* c) {
+        std::vector<SequenceItem> out;
+        for (auto* item : c->sequenceItem()) {
+            SequenceItem it;
+            it.span = span(item);
+            if (auto* n = dynamic_cast<P::SequenceNameContext*>(item)) {
+                it.name = ident(n->ID());
+            } else if (auto* r = dynamic_cast<P::SequenceRepeatContext*>(item)) {
+                it.count = expr(r->expr());
+                it.body = sequenceItems(r->sequenceBody());
+            } else {
+                throw std::logic_error("a sequence entry of the grammar the AST builder does not know: " + item->getText());
+            }
+            out.push_back(std::move(it));
+        }
+        return out;
     }
 
     // Priorities are written as integers; `overflow` flags values beyond 64 bits.
@@ -268,6 +286,10 @@ public:
             if (f->name) s.name = ident(f->name);
             s.kind = ident(f->kind);
             for (auto* c : f->corners) s.corners.push_back(nodeRef(c));
+            if (auto* r = f->ring) {
+                s.ring = RingCorners{ident(r->every), ident(r->node), std::nullopt, span(r)};
+                if (r->order) s.ring->order = ident(r->order);
+            }
             s.assigns = assignments(f->assignments());
             if (auto* w = f->whereClause()) s.where = expr(w->expr());
             return GraphStmt{std::move(s)};

@@ -60,7 +60,14 @@ std::string mistakeHint(antlr4::Parser* parser, antlr4::Token* offending, const 
         return "; g2d has no `" + text + "=`: write `" + name + " = " + element + "." + name + " " + text +
                " …` (expressions read the value before the step)";
     }
-    if (text == "," && expectedWords == "`)`") return "; a vector has two or three components: `(x, y)` or `(x, y, z)`";
+    if (text == "," && expectedWords == "`)`") {
+        // `Kind(all t, x)`: a face over all turns takes nothing else.
+        antlr4::Token* every = neighbour(parser, offending, -2);
+        antlr4::Token* open = neighbour(parser, offending, -3);
+        if (every && every->getText() == "all" && open && open->getText() == "(")
+            return "; a face over all turns (`all " + prev->getText() + "`) has no other corners";
+        return "; a vector has two or three components: `(x, y)` or `(x, y, z)`";
+    }
     // `to` is a plain name, so the parser asks for "a name" where it is missing.
     if (expectedWords == "a name") {
         antlr4::Token* first = nullptr;

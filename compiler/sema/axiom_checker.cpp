@@ -99,7 +99,7 @@ void checkAxiom(Globals& g, ExprChecker& ec, const ast::AxiomDecl& d) {
     }
     for (const auto& s : d.body) {
         const auto* f = asFace(s);
-        if (!f) continue;
+        if (!f || ringOutsideDaughter(g, *f, "the axiom")) continue;
         ir::NewFace face;
         face.span = f->span;
         if (f->name) {

@@ -233,7 +233,8 @@ void DaughterChecker::statements() {
             continue;
         }
         if (const auto* f = asFace(gs)) {
-            daughterFace(*f, exprEnv());
+            if (f->ring) ringFaces_.push_back(f);
+            else daughterFace(*f, exprEnv());
             continue;
         }
         const auto* e = asEdge(gs);
@@ -270,6 +271,7 @@ void DaughterChecker::statements() {
         if (de.kind >= 0) checkAssignments(g_, ec_, de.kind, e->assigns, exprEnv(), de.assigns, de.styles);
         dg_.edges.push_back(std::move(de));
     }
+    for (const auto* f : ringFaces_) ringFace(*f);
 }
 
 // What the daughter keeps and deletes of the match, once every statement is read.
@@ -321,6 +323,40 @@ void DaughterChecker::daughterFace(const ast::FaceStmt& f, const ExprEnv& env) {
     }
     if (df.kind >= 0) checkAssignments(g_, ec_, df.kind, f.assigns, env, df.assigns, df.styles);
     dg_.faces.push_back(std::move(df));
+}
+
+void DaughterChecker::ringFace(const ast::FaceStmt& f) {
+    const ast::RingCorners& ring = *f.ring;
+    ir::RingFace rf;
+    rf.span = f.span;
+    rf.kind = resolveKind(g_, f.kind, ElemClass::Face);
+    bool ok = rf.kind >= 0;
+    if (f.where) g_.diags.error(f.where->span, "conditions (`where`) belong in the match");
+    if (f.name && !claim(*f.name)) ok = false;
+    if (ring.every.name != "all") {
+        g_.diags.error(ring.every.span, "a face's corners are nodes separated by commas, or `all " + ring.node.name +
+                                            "` for node `" + ring.node.name + "` of every turn of a `for` loop");
+        ok = false;
+    }
+    if (ring.order && ring.order->name != "reversed") {
+        g_.diags.error(ring.order->span, "after `all " + ring.node.name + "` comes `reversed` or nothing, not `" + ring.order->name + "`");
+        ok = false;
+    }
+    rf.reversed = ring.order.has_value();
+    const auto it = loopNodes_.find(ring.node.name);
+    if (it == loopNodes_.end()) {
+        g_.diags.error(ring.node.span, "`all " + ring.node.name + "`: `" + ring.node.name +
+                                           "` is no corner or new node of a `for` loop of this daughter (a face over all turns takes "
+                                           "one node of each turn)");
+        ok = false;
+    } else if (it->second.first < 0) {
+        ok = false;   // its loop had errors
+    } else {
+        rf.loop = it->second.first;
+        rf.corner = it->second.second;
+    }
+    if (rf.kind >= 0) checkAssignments(g_, ec_, rf.kind, f.assigns, exprEnv(), rf.assigns, rf.styles);
+    if (ok) dg_.ringFaces.push_back(std::move(rf));
 }
 
 ElemBinding DaughterChecker::newNodeBinding(const ast::Ident& name, int kind, const std::string& creator, const std::string& readable) {
@@ -464,6 +500,12 @@ void DaughterChecker::daughterLoop(const ast::ForBlock& fb, ExprEnv env) {
             le.dst = *dst;
             loop.edges.push_back(std::move(le));
         } else if (const auto* f = asFace(*gs)) {
+            if (f->ring) {
+                g_.diags.error(f->ring->span, "a face over all turns (`all " + f->ring->node.name +
+                                                  "`) is made once: write it after the loop, not in it");
+                ok = false;
+                continue;
+            }
             ir::LoopFace lf;
             lf.span = f->span;
             lf.kind = resolveKind(g_, f->kind, ElemClass::Face);
@@ -484,6 +526,10 @@ void DaughterChecker::daughterLoop(const ast::ForBlock& fb, ExprEnv env) {
             loop.faces.push_back(std::move(lf));
         }
     }
+    const int index = ok ? static_cast<int>(dg_.loops.size()) : -1;
+    for (std::size_t i = 0; i < fb.vars.size(); ++i)
+        loopNodes_[fb.vars[i].name] = {index, ir::LoopNodeRef{ir::LoopNodeRef::Scope::Var, static_cast<int>(i)}};
+    for (const auto& [name, i] : locals) loopNodes_[name] = {index, ir::LoopNodeRef{ir::LoopNodeRef::Scope::Local, i}};
     if (ok) dg_.loops.push_back(std::move(loop));
 }
 

@@ -38,6 +38,9 @@ private:
     // turn creates, on the turn's corners, the daughter's nodes, its own new
     // nodes and the neighbouring turns' (`prev.m`, `next.m`).
     void daughterLoop(const ast::ForBlock& fb, ExprEnv env);
+    // `Kind(all t)` / `Kind(all t reversed)`: one face over node t of every
+    // turn of the loop that names t (read after all the daughter's loops).
+    void ringFace(const ast::FaceStmt& f);
     // `split f [around Kind at POS {…}] with EdgeKind {…} [for c in f.corners
     // where COND];`: the corner `c` reads as a wildcard node, like a loop's.
     void daughterSplit(const ast::SplitStmt& sp, ExprEnv env);
@@ -70,6 +73,9 @@ private:
         int motherSrc, motherDst;
     };
     std::vector<KeptEdgeEnds> keptEdgeEnds_;
+    // The loops' variables and new nodes by name: the loop (dg_.loops) and the node; -1: its loop had errors.
+    std::map<std::string, std::pair<int, ir::LoopNodeRef>> loopNodes_;
+    std::vector<const ast::FaceStmt*> ringFaces_;
 };
 
 }  // namespace g2d::sema

@@ -329,16 +329,18 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     }
 }
 
-std::optional<ir::Expr> checkStepLimit(Globals& g, ExprChecker& ec, const ast::Expr& value) {
-    ExprEnv env = constantEnv("a step limit");
-    auto v = ec.checkAs(value, Type::of(TypeKind::Int), env, "a step limit");
+std::optional<ir::Expr> checkCount(Globals& g, ExprChecker& ec, const ast::Expr& value, const std::string& what) {
+    ExprEnv env = constantEnv(what);
+    auto v = ec.checkAs(value, Type::of(TypeKind::Int), env, what);
     if (!v) return std::nullopt;
     std::string error;
     auto f = fold(*v, g.prog, &error);
-    if (!error.empty()) g.diags.error(value.span, error + " in a step limit");
-    else if (f && std::get<long long>(*f) < 0) g.diags.error(value.span, "a step limit cannot be negative");
+    if (!error.empty()) g.diags.error(value.span, error + " in " + what);
+    else if (f && std::get<long long>(*f) < 0) g.diags.error(value.span, what + " cannot be negative");
     return v;
 }
+
+std::optional<ir::Expr> checkStepLimit(Globals& g, ExprChecker& ec, const ast::Expr& value) { return checkCount(g, ec, value, "a step limit"); }
 
 void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen) {
     if (seen) {

@@ -28,6 +28,8 @@ void checkLimit(Globals& g, ExprChecker& ec, const ast::LimitDecl& d, bool& seen
 // A step limit's value (global, a priority's, a rule's): an int of literals,
 // constants and parameters, not negative when known. Null after an error.
 std::optional<ir::Expr> checkStepLimit(Globals& g, ExprChecker& ec, const ast::Expr& value);
+// The same for any count (`what`: "a step limit", "a repeat count").
+std::optional<ir::Expr> checkCount(Globals& g, ExprChecker& ec, const ast::Expr& value, const std::string& what);
 // `merge within T;` (a constant float, not negative).
 void checkMerge(Globals& g, ExprChecker& ec, const ast::MergeDecl& d);
 void checkPriority(Globals& g, ExprChecker& ec, const ast::PriorityDecl& d);

@@ -137,4 +137,11 @@ std::optional<ir::Vec2> sketchOf(const ast::NodeStmt& n) {
     return ir::Vec2{n.sketch->x, n.sketch->y};
 }
 
+bool ringOutsideDaughter(Globals& g, const ast::FaceStmt& f, const char* where) {
+    if (!f.ring) return false;
+    g.diags.error(f.ring->span, "`all " + f.ring->node.name + "` takes a node of every turn of a `for` loop: it makes a face in a "
+                                    "daughter, after the loop, not in " + where);
+    return true;
+}
+
 }  // namespace g2d::sema

@@ -27,6 +27,8 @@ inline const ast::FaceStmt* asFace(const ast::GraphStmt& s) { return std::get_if
 // A face's corner, once: reports a name seen before in `seen` (a face's
 // corners are distinct nodes) and returns false then.
 bool firstTimeCorner(Globals& g, std::map<std::string, Span>& seen, const ast::Ident& c);
+// `Kind(all t)` outside a daughter (`where`: "the axiom", "a match"): reported; true when `f` is one.
+bool ringOutsideDaughter(Globals& g, const ast::FaceStmt& f, const char* where);
 void reportDuplicate(Globals& g, const ast::Ident& name, Span previous);
 // Checks `{ attr = expr, style.prop = expr }` against a kind.
 void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<ast::Assignment>& assigns,

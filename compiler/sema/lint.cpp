@@ -53,6 +53,7 @@ void lintProgram(Globals& g) {
                 for (const auto& e : l.edges) created.insert(e.kind);
                 for (const auto& f : l.faces) created.insert(f.kind);
             }
+            for (const auto& f : d.ringFaces) created.insert(f.kind);
         }
     for (const auto& r : p.rules) {
         if (r.span.file != g.mainFile) continue;

@@ -282,7 +282,7 @@ void RuleChecker::declarePatternFaces(const std::vector<ast::MatchStmt>& body, s
             cornerless.span = n->span;
             f = &cornerless;
         }
-        if (!f) continue;
+        if (!f || ringOutsideDaughter(g_, *f, "a match")) continue;
         ir::PatternFace pf;
         pf.span = f->span;
         pf.kind = resolveKind(g_, f->kind, ElemClass::Face);

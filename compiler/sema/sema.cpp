@@ -127,11 +127,23 @@ std::optional<ir::Program> analyze(const std::vector<const ast::Program*>& progr
     });
     std::map<std::string, int> ruleIndex;
     for (std::size_t r = 0; r < prog.rules.size(); ++r) ruleIndex.emplace(prog.rules[r].name, static_cast<int>(r));
+    std::vector<const ast::SequenceDecl*> namedLists;
     each([&](const auto& d) {
         using T = std::decay_t<decltype(d)>;
-        if constexpr (std::is_same_v<T, ast::SequenceDecl>) checkSequence(g, d, ruleIndex);
+        if constexpr (std::is_same_v<T, ast::SequenceDecl>)
+            if (d.name) {
+                claimName(*d.name, "sequence");
+                namedLists.push_back(&d);
+            }
     });
-    checkCompoundBodies(g, compounds, ruleIndex);
+    CommandLists lists(g, ec, ruleIndex, namedLists);
+    each([&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, ast::SequenceDecl>)
+            if (!d.name) checkSequence(g, d, lists);
+    });
+    checkCompoundBodies(g, compounds, lists);
+    lists.warnUnused();
     checkAngleLayoutUse(g, kindDecls);
     if (diags.errorCount() == errorsBefore) checkCommandListsReach(g);
     if (diags.errorCount() > errorsBefore) return std::nullopt;

@@ -284,6 +284,8 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
         p.caption += std::string(" · for each ") + (l.sides ? "side" : "corner") + " of " + f.name + ": " + count(l.nodes.size(), "node") +
                      ", " + count(l.edges.size(), "edge") + ", " + count(l.faces.size(), "face");
     }
+    for (const auto& rf : d.ringFaces)
+        p.caption += " · a " + kindName(prog, rf.kind) + " over every turn's node" + (rf.reversed ? ", reversed" : "");
     for (const auto& sp : d.splits)
         p.caption += " · split " + r.faces[static_cast<std::size_t>(sp.motherFace)].name +
                      (sp.centre ? " around a new " + kindName(prog, sp.centre->kind) : std::string(" by a chord")) + ", edges " +
@@ -294,12 +296,26 @@ Panel daughterPanel(const ir::Program& prog, const ir::Rule& r, const ir::Daught
 // The rule's options, with those its priority gives it (`priority P limit N
 // parallel;`): what decides when and how often it applies.
 // A compound's heading: its name and what it runs, in order.
+// Entries [from, to) of a list, a repeat's as `repeat { … }`.
+static std::string listText(const std::vector<ir::SequenceEntry>& list, std::size_t from, std::size_t to, const ir::Program& prog) {
+    std::string out;
+    for (std::size_t i = from; i < to; ++i) {
+        const auto& e = list[i];
+        out += out.empty() ? "" : "; ";
+        if (e.kind == ir::SequenceEntry::Kind::Repeat) {
+            const std::size_t body = static_cast<std::size_t>(e.body);
+            out += "repeat { " + listText(list, i + 1, i + 1 + body, prog) + " }";
+            i += body;
+        } else {
+            out += e.kind == ir::SequenceEntry::Kind::Compound ? prog.compounds[static_cast<std::size_t>(e.index)].name
+                                                               : prog.rules[static_cast<std::size_t>(e.index)].name;
+        }
+    }
+    return out;
+}
+
 std::string compoundHeading(const ir::Compound& c, const ir::Program& prog) {
-    std::string runs;
-    for (const auto& e : c.entries)
-        runs += (runs.empty() ? "" : "; ") +
-                (e.compound ? prog.compounds[static_cast<std::size_t>(e.index)].name : prog.rules[static_cast<std::size_t>(e.index)].name);
-    return "compound " + c.name + " · runs " + runs + " within each match's scope";
+    return "compound " + c.name + " · runs " + listText(c.entries, 0, c.entries.size(), prog) + " within each match's scope";
 }
 
 std::string ruleHeading(const ir::Rule& r, const ir::Program& prog, const SourceManager& sources) {

@@ -3,7 +3,8 @@
 # intersection testing every branch stays inside the closed box of nine
 # faces (a branch that would pierce a wall is not made), and the tree is
 # still a tree (every node one stem in); without testing the same growth
-# goes through the walls and is bigger. Interpreted and compiled runs give the same bytes.
+# goes through the walls and is bigger; `-D rounds=3` runs 3 rounds of 4 commands.
+# Interpreted and compiled runs give the same bytes.
 # Usage: g3_tree_box_test.sh G2D SOURCE_DIR [COMPILED]   (COMPILED=no: the interpreter only)
 set -u
 g2d="$1"; src="$2"; compiled="${3:-yes}"
@@ -33,4 +34,7 @@ for l in tested["links"]:
     ins[l["target"]] = ins.get(l["target"], 0) + 1
 assert sum(1 for v in tree if ins.get(v["id"], 0) != 1) == 1
 PY
+# The rounds are `repeat rounds { Round; }`: four commands a round.
+expect_code 0 "$g2d" run "$grammar" -D rounds=3 --stats --no-svg
+grep -q '"steps": 12,' out.txt || fail "rounds=3: $(cat out.txt)"
 finish

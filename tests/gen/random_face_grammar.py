@@ -4,8 +4,9 @@
 and rules drawn from face templates: faces with corners (any kind, wildcards)
 or of any corner count, two faces sharing a side, faces in negative
 conditions, conditions on face facts and attributes, kept, changed, deleted
-and new faces, `for` loops over sides (with `prev`), moved corners, and
-random, oldest and parallel picks.
+and new faces, `for` loops over sides (with `prev`, `next`, and a face over
+all turns: `all m`, `all m reversed`), moved corners, and random, oldest
+and parallel picks.
 
 usage: random_face_grammar.py SEED > grammar.g2d
 """
@@ -59,7 +60,7 @@ def grammar(seed: int) -> str:
             o.append("parallel")
         return (" " + " ".join(o)) if o else ""
 
-    templates = ["split", "fan", "neighbours", "drop", "nac", "move", "quads"]
+    templates = ["split", "fan", "neighbours", "drop", "nac", "move", "quads", "inset"]
     for i, t in enumerate(r.sample(templates, r.randint(3, 5))):
         if t == "split":
             k = r.choice("FG")
@@ -94,6 +95,13 @@ def grammar(seed: int) -> str:
             w(f"rule R{i}{opts()} {{")
             w("    match { x: B where x.v < 2 and x.faces > 0; }")
             w(f"    produce {{ x at x.pos + ({r.uniform(-0.2, 0.2):.2f}, {r.uniform(-0.2, 0.2):.2f}) {{ v = x.v + 1 }}; }}")
+            w("}")
+        elif t == "inset":   # a quad per side, and one face over all turns' inset corners
+            ring = r.choice(["all m", "all m reversed", "all u reversed"])
+            w(f"rule R{i}{opts()} {{")
+            w(f"    match {{ f: G where f.w < 2 and f.area > {r.uniform(0.1, 0.5):.2f}; }}")
+            w("    produce { for (u, v) in f.sides { m: B at lerp(u.pos, f.centroid, 0.3); F(u, v, next.m, m) { v = u.degree }; }"
+              f" G({ring}) {{ w = f.w + 1 }}; }}")
             w("}")
         else:   # quads around the centroid, midpoints shared between neighbouring turns
             w(f"rule R{i}{opts()} {{")

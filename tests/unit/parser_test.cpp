@@ -113,6 +113,52 @@ TEST_CASE("rules: options, match, negative conditions, lets, daughters", "[parse
     CHECK(pnode.assigns[0].name.name == "fill");
 }
 
+TEST_CASE("command lists: named lists and repeats, nested", "[parser]") {
+    auto p = parse("sequence Round { A; repeat 2 * n { B; repeat 3 { C; } } }\n"
+                   "sequence { Round; repeat depth { Round; } }\n"
+                   "compound K { match { a: P; } sequence { repeat n { A; } } }\n");
+    REQUIRE(p.program);
+    const auto& round = std::get<ast::SequenceDecl>(p.program->decls[0].decl);
+    REQUIRE(round.name);
+    CHECK(round.name->name == "Round");
+    REQUIRE(round.items.size() == 2);
+    CHECK(round.items[0].name.name == "A");
+    CHECK(round.items[0].count == nullptr);
+    const auto& outer = round.items[1];
+    REQUIRE(outer.count);
+    CHECK(std::holds_alternative<ast::Binary>(outer.count->node));
+    REQUIRE(outer.body.size() == 2);
+    CHECK(outer.body[0].name.name == "B");
+    REQUIRE(outer.body[1].count);
+    CHECK(outer.body[1].body.at(0).name.name == "C");
+    const auto& main = std::get<ast::SequenceDecl>(p.program->decls[1].decl);
+    CHECK_FALSE(main.name);
+    CHECK(main.items.size() == 2);
+    const auto& k = std::get<ast::CompoundDecl>(p.program->decls[2].decl);
+    REQUIRE(k.body.items.size() == 1);
+    CHECK(k.body.items[0].body.at(0).name.name == "A");
+}
+
+TEST_CASE("a face over a loop's turns: Kind(all t [reversed])", "[parser]") {
+    auto p = parse("rule R { match { f: F; } produce { for c in f.corners { t: P at c.pos; } Top(all t); Base(all c reversed); Q(a, b, c); } }\n");
+    REQUIRE(p.program);
+    const auto& rule = std::get<ast::RuleDecl>(p.program->decls[0].decl);
+    const auto& body = std::get<ast::ProduceBlock>(rule.items.at(0).item).body;
+    REQUIRE(body.size() == 4);
+    const auto& top = std::get<ast::FaceStmt>(std::get<ast::GraphStmt>(body[1].stmt).stmt);
+    REQUIRE(top.ring);
+    CHECK(top.ring->every.name == "all");
+    CHECK(top.ring->node.name == "t");
+    CHECK_FALSE(top.ring->order);
+    CHECK(top.corners.empty());
+    const auto& base = std::get<ast::FaceStmt>(std::get<ast::GraphStmt>(body[2].stmt).stmt);
+    REQUIRE(base.ring);
+    CHECK(base.ring->order->name == "reversed");
+    const auto& q = std::get<ast::FaceStmt>(std::get<ast::GraphStmt>(body[3].stmt).stmt);
+    CHECK_FALSE(q.ring);
+    CHECK(q.corners.size() == 3);
+}
+
 TEST_CASE("expression precedence", "[parser]") {
     auto p = parse("const x = 1 + 2 * 3 < 4 and not a or b ? -c.d : e;");
     REQUIRE(p.program);

@@ -29,7 +29,7 @@ syn match g2dDeclKeyword "^\s*\zscanvas\>\ze[^;:={}]*\<to\>"
 syn match g2dDeclKeyword "\(^\s*canvas\>[^;:={}]*\)\@<=\<to\>"
 syn match g2dFuncName "\h\w*" contained
 " rules
-syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with
+syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with repeat
 syn keyword g2dModifier ordered parallel directed undirected merge intersect dpo
 syn keyword g2dModifier pick nextgroup=g2dPickPolicy skipwhite
 syn match g2dPickPolicy "\h\w*" contained nextgroup=g2dPickMeasure skipwhite

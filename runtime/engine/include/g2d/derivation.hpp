@@ -277,6 +277,7 @@ struct DerivationOptions {
     std::optional<long long> steps;               // global limit (none: unlimited)
     std::map<long long, long long> perPriority;   // priority -> limit
     std::map<std::size_t, long long> perRule;     // rule -> limit (`rule R limit N`), in steps of the rule
+    std::vector<long long> repeatCounts;          // per `repeat N { … }` of the command lists (SequenceEntry::index)
     std::size_t maxElements = kDefaultMaxElements;
     std::optional<double> timeoutSeconds;         // wall time of the derivation (none: unlimited)
     // After every step, check every rule's kept matches against a full search

@@ -53,6 +53,8 @@ public:
     virtual std::optional<long long> stepLimit() = 0;
     virtual std::map<long long, long long> priorityLimits() = 0;
     virtual std::map<std::size_t, long long> ruleLimits() = 0;
+    // The counts of the command lists' `repeat N { … }` (SequenceEntry::index), checked (checkedRepeatCount).
+    virtual std::vector<long long> repeatCounts() = 0;
     // The grammar's `canvas` (nullopt: it sets none), evaluated after start()
     // and checked (checkedCanvas: a bad one throws, located).
     virtual std::optional<ViewBox> canvas() = 0;

@@ -40,9 +40,10 @@ public:
         std::function<void(std::size_t rule, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom)> afterStep;
         std::function<void(long long step)> stepDone;
     };
-    // `parallel` is the step Hooks::apply runs (which matches it took).
-    CompoundRun(Graph& g, RuleSet& rules, Rng& rng, const ParallelStep& parallel, Hooks hooks)
-        : g_(g), rules_(rules), rng_(rng), parallel_(parallel), hooks_(std::move(hooks)) {}
+    // `parallel` is the step Hooks::apply runs (which matches it took);
+    // `repeatCounts` the counts of the lists' repeats (SequenceEntry::Repeat).
+    CompoundRun(Graph& g, RuleSet& rules, Rng& rng, const ParallelStep& parallel, Hooks hooks, const std::vector<long long>& repeatCounts)
+        : g_(g), rules_(rules), rng_(rng), parallel_(parallel), hooks_(std::move(hooks)), counts_(repeatCounts) {}
 
     // Runs compound `c` from its initial primitives `initial` (its match
     // rule's matches). False when a limit stopped it. `applications` counts
@@ -67,6 +68,7 @@ private:
     Rng& rng_;
     const ParallelStep& parallel_;
     Hooks hooks_;
+    const std::vector<long long>& counts_;
     std::deque<Instance> instances_;
     MatchBuffer buffer_;
 };

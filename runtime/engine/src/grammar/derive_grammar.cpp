@@ -26,6 +26,7 @@ void deriveGrammar(GrammarRun& grammar, const std::vector<Value>& params, std::u
     options.steps = settings.steps ? settings.steps : grammarLimit ? grammarLimit : kDefaultStepLimit;
     options.perPriority = grammar.priorityLimits();
     options.perRule = grammar.ruleLimits();
+    options.repeatCounts = grammar.repeatCounts();
     options.maxElements = settings.maxElements;
     options.timeoutSeconds = settings.timeoutSeconds;
     options.verifyMatches = settings.verifyMatches;

@@ -95,8 +95,8 @@ void CompoundRun::addToScopes(std::size_t instance, ElemClass c, std::uint32_t f
 
 bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& instances, long long& applications) {
     const std::vector<SequenceEntry> entries = rules_.compounds()[c].entries;
-    for (const SequenceEntry& e : entries) {
-        if (e.compound) {
+    return forEachCommand(entries, counts_, [&](const SequenceEntry& e) {
+        if (e.kind == SequenceEntry::Compound) {
             const std::size_t matchRule = rules_.compounds()[e.index].matchRule;
             MatchSet found = emptySet(rules_.info(matchRule));
             std::vector<std::vector<std::size_t>> owners;
@@ -104,8 +104,7 @@ bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& inst
             std::vector<std::size_t> children;
             for (std::size_t i = 0; i < found.size(); ++i)
                 children.push_back(newInstance(e.index, found.at(i), found.nodes(), found.edges(), found.faces(), owners[i]));
-            if (!runEntries(e.index, children, applications)) return false;
-            continue;
+            return runEntries(e.index, children, applications);
         }
         if (!hooks_.mayStep()) return false;
         const long long step = hooks_.nextStep();
@@ -141,8 +140,8 @@ bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& inst
             hooks_.afterStep(e.index, step, newEdgesFrom, newNodesFrom);
         }
         hooks_.stepDone(step);
-    }
-    return true;
+        return true;
+    });
 }
 
 }  // namespace g2d::rt

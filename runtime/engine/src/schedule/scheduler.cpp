@@ -333,13 +333,12 @@ void Scheduler::runSequence() {
                                              [this](std::size_t r, const MatchSet& set, long long step, const ElementScope* const* scopes) {
                                                  return applyCommand(r, set, step, scopes);
                                              },
-                                             afterCommand, [this](long long step) { stepDone(step); }});
-    for (const SequenceEntry& entry : rules_.sequence()) {
-        if (entry.compound) {
-            if (!compounds.run(entry.index, found_->of(rules_.compounds()[entry.index].matchRule), result_.applications)) return;
-            continue;
-        }
-        if (!mayStep()) return;
+                                             afterCommand, [this](long long step) { stepDone(step); }},
+                          limits_.repeatCounts);
+    const bool finished = forEachCommand(rules_.sequence(), limits_.repeatCounts, [&](const SequenceEntry& entry) {
+        if (entry.kind == SequenceEntry::Compound)
+            return compounds.run(entry.index, found_->of(rules_.compounds()[entry.index].matchRule), result_.applications);
+        if (!mayStep()) return false;
         const long long step = result_.steps + 1;
         const NewIds from = newIds();
         const MatchSet& set = found_->of(entry.index);
@@ -348,8 +347,9 @@ void Scheduler::runSequence() {
             afterCommand(entry.index, step, from.edges, from.nodes);
         }
         stepDone(step);
-    }
-    result_.stopped = StopReason::Terminal;
+        return true;
+    });
+    if (finished) result_.stopped = StopReason::Terminal;
 }
 
 // ---- priorities ----------------------------------------------------------------
