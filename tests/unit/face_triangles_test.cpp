@@ -73,9 +73,11 @@ TEST_CASE("a face whose corners lie on one line, or that crosses itself, is repo
     CHECK(triangulateFace(g, face(g, {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}})).problem == FaceShapeProblem::Collinear);
     // A bow tie: its lobes cancel, the normal is zero.
     CHECK(triangulateFace(g, face(g, {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}})).problem == FaceShapeProblem::SelfCrossing);
+    // Standing upright (in the plane y = 0), seen from no axis it was drawn in.
+    CHECK(triangulateFace(g, face(g, {{0, 0, 0}, {1, 0, 1}, {0, 0, 1}, {1, 0, 0}})).problem == FaceShapeProblem::SelfCrossing);
     // A lopsided one: the normal is not zero, the outline still crosses.
     const FaceId bad = face(g, {{0, 0, 0}, {3, 2, 0}, {3, 0, 0}, {0, 1, 0}});
     CHECK(triangulateFace(g, bad).problem == FaceShapeProblem::SelfCrossing);
     CHECK(faceShapeMessage(g, bad, "Wall", FaceShapeProblem::SelfCrossing) ==
-          "face " + std::to_string(bad) + " (Wall, corners 10 11 12 13) cannot be drawn as triangles: its outline crosses itself");
+          "face " + std::to_string(bad) + " (Wall, corners 14 15 16 17) cannot be drawn as triangles: its outline crosses itself");
 }

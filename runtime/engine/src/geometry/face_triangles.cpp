@@ -92,11 +92,14 @@ FaceTriangles triangulateFace(const Graph& g, FaceId f) {
     for (std::size_t i = 1; i < outerEnd; ++i) size = std::max(size, length(out.positions[i] - out.positions[0]));
     const double twiceArea = length(sum);   // projected along its normal
     if (size == 0 || twiceArea <= 1e-12 * size * size) {
-        // No area: a line of corners, or a figure eight whose lobes cancel.
-        const vec3 n = length(sum) > 0 ? sum : vec3(0, 0, 1);
-        std::vector<vec2> flat;
-        for (const vec3& p : out.positions) flat.push_back(project(p, n));
-        out.problem = size > 0 && sidesCross(flat, rings) ? FaceShapeProblem::SelfCrossing : FaceShapeProblem::Collinear;
+        // No area: a line of corners, or a figure eight whose lobes cancel
+        // (its plane unknown, so seen along each axis: a line never crosses).
+        out.problem = FaceShapeProblem::Collinear;
+        for (const vec3 axis : {vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1)}) {
+            std::vector<vec2> flat;
+            for (const vec3& p : out.positions) flat.push_back(project(p, axis));
+            if (size > 0 && sidesCross(flat, rings)) out.problem = FaceShapeProblem::SelfCrossing;
+        }
         return out;
     }
     out.normal = sum / twiceArea;
