@@ -4,7 +4,8 @@
 # tests; @vscode/vsce to package. And those of the --view page (web/view):
 # three and esbuild, which bundles the page's script into
 # web/view/dist/view.bundle.js for CMake to embed in the runtime. As pinned
-# by their package-lock.json files, without install scripts. Idempotent: does
+# by their package-lock.json files, without install scripts. And the Khronos
+# glTF validator (tools/gltf-check), which the tests run on `--gltf` output. Idempotent: does
 # nothing (and needs no network) when they are installed, the lock files have
 # not changed since and the bundle is newer than its sources. The editor
 # tests run it first (a ctest fixture), so they pass alone and in any order.
@@ -19,6 +20,7 @@ npm_ci() {  # npm ci in $1 unless its node_modules match its lock file
 }
 
 npm_ci "$root/editors/vscode"
+npm_ci "$root/tools/gltf-check"
 view="$root/web/view"
 npm_ci "$view"
 # Bundled again when the script, the package set or the build command changed.
