@@ -116,3 +116,30 @@ TEST_CASE("2D: faces below edges below nodes, whatever the places", "[output][sv
     const std::vector<std::string> order = paintOrder(axiomSvg(scene(false)));
     CHECK(order == std::vector<std::string>{"#888888", "#00ff00", "#00ff00", "#00ff00", "#00ff00", "#0000ff", "#ff0000"});
 }
+
+TEST_CASE("3D: an open box, its faces oriented inwards, is sorted by depth alone", "[output][svg][3d]") {
+    // g3_box's open box: a bottom and four walls, every normal inwards, seen
+    // from above. Not a closed surface, so no face counts as a hidden back:
+    // the far bottom corner stays below the front walls, the near top corner
+    // is painted last.
+    const std::string svg = axiomSvg(R"(space 3d;
+node P { style { tag = "none"; } }
+node Far { style { fill = "#00ffff"; } }
+node Near { style { fill = "#ff00ff"; } }
+face Box { style { fill = "#aaaaaa"; } }
+face FrontWall { style { fill = "#111111"; } }
+face RightWall { style { fill = "#222222"; } }
+axiom {
+    a: P at (0, 0, 0); b: P at (1, 0, 0); c: P at (1, 1, 0); d: Far at (0, 1, 0);
+    e: P at (0, 0, 1); f: Near at (1, 0, 1); g: P at (1, 1, 1); h: P at (0, 1, 1);
+    Box(a, b, c, d);
+    FrontWall(b, a, e, f); RightWall(c, b, f, g); Box(d, c, g, h); Box(a, d, h, e);
+}
+)");
+    const std::vector<std::string> order = paintOrder(svg);
+    REQUIRE(order.size() == 7);
+    CHECK(order.back() == "#ff00ff");
+    const auto at = [&](const char* colour) { return std::find(order.begin(), order.end(), std::string(colour)) - order.begin(); };
+    CHECK(at("#00ffff") < at("#111111"));
+    CHECK(at("#00ffff") < at("#222222"));
+}
