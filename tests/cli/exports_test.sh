@@ -49,6 +49,12 @@ for a in plan["accessors"]:
     if "max" in a: assert a["max"][1] == 0 and a["min"][1] == 0, a   # a 2D grammar lies on the ground
 PY
 
+# three.js's GLTFLoader opens them: the house's seven face kinds as nodes, in order.
+node "$src/tools/gltf-check/three_load.mjs" i_g3_house.glb i_floor_plan.glb > three.txt || fail "three.js: $(cat three.txt)"
+grep -q '^i_g3_house.glb: Wall,Gable,Roof,Reveal,Frame,Glass,Leaf; [0-9]* meshes, [1-9][0-9]* triangles, 0 line sets$' three.txt \
+  || fail "three.js: $(cat three.txt)"
+grep -q '^i_floor_plan.glb: Wall,Room,Yard; 3 meshes, 7 triangles, 1 line sets$' three.txt || fail "three.js: $(cat three.txt)"
+
 # Compiled: the same glTF, OBJ and MTL bytes.
 for ex in g3_house floor_plan; do
   expect_code 0 "$g2d" build "$src/examples/$ex.g2d" -o "prog_$ex"
