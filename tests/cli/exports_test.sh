@@ -127,6 +127,17 @@ expect_code 0 "$g2d" run lit.g2d --no-svg --obj tri.obj --obj-triangles
 grep '^f ' tri.obj | grep -qv '^f [0-9]*//[0-9]* [0-9]*//[0-9]* [0-9]*//[0-9]*$' && fail "a face that is no triangle: $(cat tri.obj)"
 [ "$(grep -c '^vn ' tri.obj)" = 3 ] || fail "--obj-triangles: one normal a face: $(grep '^vn' tri.obj)"
 
+# Many seeds: each seed's OBJ names its own MTL; the glTF is a single run's.
+expect_code 0 "$g2d" run "$src/examples/subdivide.g2d" --seeds 1..2 --no-svg --obj 'o{seed}.obj' --gltf 'g{seed}.glb'
+grep -qx 'mtllib o2.mtl' o2.obj && [ -s o2.mtl ] || fail "--seeds: o2.obj's MTL: $(head -3 o2.obj)"
+expect_code 0 "$g2d" run "$src/examples/subdivide.g2d" --seed 2 --no-svg --gltf alone2.glb
+cmp -s g2.glb alone2.glb || fail "--seeds: seed 2's glTF differs from a run alone"
+
+# Nothing to draw (nodes only): still a valid file.
+printf 'node P;\naxiom { a: P at (0, 0); b: P at (1, 0); }\n' > dots.g2d
+expect_code 0 "$g2d" run dots.g2d --no-svg --gltf dots.glb
+validate dots.glb > dots.report || fail "a glTF without meshes: $(cat dots.report)"
+
 # A face whose corners are collinear: no triangles, a clear error, no files.
 cat > flat.g2d <<'G2D'
 space 3d;

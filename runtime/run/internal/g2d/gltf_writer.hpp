@@ -22,6 +22,7 @@
 
 namespace g2d::rt {
 
-std::string writeGltf(const Graph& g, const JsonSchema& schema, const ItemMaker& item);
+// `title` names the scene (the grammar's file name).
+std::string writeGltf(const Graph& g, const JsonSchema& schema, const ItemMaker& item, const std::string& title);
 
 }  // namespace g2d::rt

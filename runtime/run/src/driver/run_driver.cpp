@@ -250,7 +250,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         // Made before any file is committed: a face glTF cannot draw leaves none written.
         std::string glb;
         if (gltfFile)
-            glb = writeGltf(graph, grammar.jsonSchema(), [&](ElemClass cls, std::uint32_t id, DrawItem& it) { grammar.drawItem(cls, id, it); });
+            glb = writeGltf(graph, grammar.jsonSchema(), [&](ElemClass cls, std::uint32_t id, DrawItem& it) { grammar.drawItem(cls, id, it); }, name);
         std::string svg;
         if (svgWhole) svg = std::move(svgText.text());
         if (png) {

@@ -72,17 +72,21 @@ public:
     }
 
     std::string glb() {
-        model_.buffers[0].data = std::move(bytes_);
+        if (bytes_.empty())
+            model_.buffers.clear();   // nothing drawn: a buffer may not be empty
+        else
+            model_.buffers[0].data = std::move(bytes_);
         std::ostringstream out;
         tinygltf::TinyGLTF writer;
         if (!writer.WriteGltfSceneToStream(&model_, out, false, true)) throw ExportError("the glTF writer failed");
         return out.str();
     }
 
-    GltfBuilder() {
+    explicit GltfBuilder(const std::string& title) {
         model_.asset.version = "2.0";
         model_.asset.generator = "g2d";
         model_.scenes.emplace_back();
+        model_.scenes[0].name = title;   // (a scene without nodes is then still an object)
         model_.defaultScene = 0;
         model_.buffers.emplace_back();
     }
@@ -172,8 +176,8 @@ void addTube(vec3 a, vec3 b, double r, Part& part) {
 
 }  // namespace
 
-std::string writeGltf(const Graph& g, const JsonSchema& schema, const ItemMaker& item) {
-    GltfBuilder gltf;
+std::string writeGltf(const Graph& g, const JsonSchema& schema, const ItemMaker& item, const std::string& title) {
+    GltfBuilder gltf(title);
     DrawItem it;
     std::vector<std::vector<EdgeId>> edgesOfKind(g.kinds().size());
     for (EdgeId e = 0; e < g.edgeCapacity(); ++e)
