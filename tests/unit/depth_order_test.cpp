@@ -143,3 +143,15 @@ axiom {
     CHECK(at("#00ffff") < at("#111111"));
     CHECK(at("#00ffff") < at("#222222"));
 }
+
+TEST_CASE("3D: a node stays on top of its edges, even at their far end", "[output][svg][3d]") {
+    // A wire going from far (behind, y = 1) to near (y = -1): its far end's
+    // node lies farther than the wire's midpoint, and is still painted after it.
+    const std::vector<std::string> order = paintOrder(axiomSvg(R"(space 3d;
+node Far { style { fill = "#00ffff"; } }
+node Near { style { fill = "#ff00ff"; } }
+edge Wire { style { stroke = "#00ff00"; } }
+axiom { p: Far at (0, 1, 0); q: Near at (0, -1, 0); p -[Wire]- q; }
+)"));
+    CHECK(order == std::vector<std::string>{"#00ff00", "#00ffff", "#ff00ff"});
+}

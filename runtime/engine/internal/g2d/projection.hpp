@@ -12,7 +12,9 @@
 // - an edge or node on faces is painted with the nearest of them (not backs
 //   of solids), right after it: at one depth faces come before edges, edges
 //   before nodes, so a face's sides and corners are never under it; one on
-//   a solid's back faces only goes with those, below its front (a hidden edge).
+//   a solid's back faces only goes with those, below its front (a hidden edge);
+// - a node also comes right after its nearest edge at the latest, so it
+//   stays on top of its edges.
 #include <vector>
 
 #include "g2d/graph.hpp"

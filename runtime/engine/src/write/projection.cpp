@@ -115,25 +115,42 @@ bool SolidFaces::backOf(const Graph& g, FaceId f, const ViewProjection& view) co
     return f < solid_.size() && solid_[f] && dot(g.vectorArea(f), view.toward) < 0;
 }
 
+namespace {
+
+// An edge's place in the order: its midpoint, or the nearest face it bounds (FaceDepths).
+void placeEdge(const Graph& g, EdgeId e, const ViewProjection& view, const SolidFaces& solid, DrawItem& it) {
+    const NodeId s = g.source(e), t = g.target(e);
+    it.depth = view.depth((g.pos3(s) + g.pos3(t)) / 2.0);
+    FaceDepths faces;
+    for (CornerId c = g.firstCornerAt(s); c != kNoId; c = g.nextCornerAt(c))
+        if (s != t && (g.cornerNode(g.nextCorner(c)) == t || g.cornerNode(g.prevCorner(c)) == t))
+            faces.add(g, g.cornerFace(c), view, solid);
+    faces.apply(it);
+}
+
+}  // namespace
+
 void projectItem(DrawItem& it, const Graph& g, const ViewProjection& view, const SolidFaces& solid) {
     it.inDepth = true;
-    FaceDepths faces;
     if (it.cls == ElemClass::Node) {
         it.a = it.b = view.project(g.pos3(it.id));
         it.depth = view.depth(g.pos3(it.id));
+        FaceDepths faces;
         for (CornerId c = g.firstCornerAt(it.id); c != kNoId; c = g.nextCornerAt(c)) faces.add(g, g.cornerFace(c), view, solid);
         faces.apply(it);
+        // A node stays on top of its edges (those on its side of a solid): right after the nearest.
+        DrawItem edge;
+        auto after = [&](EdgeId e) {
+            edge.turnedAway = false;
+            placeEdge(g, e, view, solid, edge);
+            if (edge.turnedAway == it.turnedAway) it.depth = std::min(it.depth, edge.depth);
+        };
+        for (EdgeId e = g.firstOut(it.id); e != kNoId; e = g.nextOut(e)) after(e);
+        for (EdgeId e = g.firstIn(it.id); e != kNoId; e = g.nextIn(e)) after(e);
     } else if (it.cls == ElemClass::Edge) {
-        const NodeId s = g.source(it.id), t = g.target(it.id);
-        const vec3 a = g.pos3(s), b = g.pos3(t);
-        it.a = view.project(a);
-        it.b = view.project(b);
-        it.depth = view.depth((a + b) / 2.0);
-        // The faces with a side between its ends.
-        for (CornerId c = g.firstCornerAt(s); c != kNoId; c = g.nextCornerAt(c))
-            if (s != t && (g.cornerNode(g.nextCorner(c)) == t || g.cornerNode(g.prevCorner(c)) == t))
-                faces.add(g, g.cornerFace(c), view, solid);
-        faces.apply(it);
+        it.a = view.project(g.pos3(g.source(it.id)));
+        it.b = view.project(g.pos3(g.target(it.id)));
+        placeEdge(g, it.id, view, solid, it);
     } else {
         it.corners.clear();
         CornerId c = g.firstCorner(it.id);
