@@ -14,6 +14,7 @@ packages=(
   libyaml-cpp-dev
   libxml2-utils
   librsvg2-dev libcairo2-dev
+  libtinygltf-dev
   python3-networkx
   chromium
   ccache

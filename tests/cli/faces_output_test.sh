@@ -10,13 +10,18 @@ plan="$src/examples/floor_plan.g2d"
 
 expect_code 0 "$g2d" run "$plan" -o i.svg --json i.json --obj i.obj
 expect_code 0 "$g2d" build "$plan" -o plan
-expect_code 0 ./plan -o c.svg --json c.json --obj c.obj
-for ext in svg json obj; do
+mkdir c   # the OBJ names its MTL: the same name, in another folder
+expect_code 0 ./plan -o c.svg --json c.json --obj c/i.obj
+for ext in svg json; do
   cmp -s "i.$ext" "c.$ext" || fail "interpreted and compiled $ext differ"
+done
+for ext in obj mtl; do
+  cmp -s "i.$ext" "c/i.$ext" || fail "interpreted and compiled $ext differ"
 done
 
 cat > want.obj <<'OBJ'
 # g2d: 11 nodes, 7 edges, 3 faces
+mtllib i.mtl
 v 0 0 0
 v 6 0 0
 v 10 0 0
@@ -29,10 +34,16 @@ v 8 5 0
 v 0 2.5 0
 v 6 2.5 0
 g Room
-f 1 2 5 6
-f 2 3 4 5
+usemtl fill_f2e6cc
+vn 0 0 1
+f 1//1 2//1 5//1 6//1
+usemtl fill_dde8f0
+vn 0 0 1
+f 2//2 3//2 4//2 5//2
 g Yard
-f 6 5 4 8 7
+usemtl fill_cfe8c4
+vn 0 0 1
+f 6//3 5//3 4//3 8//3 7//3
 g edges
 l 1 2
 l 2 3
@@ -43,6 +54,9 @@ l 6 1
 l 2 5
 OBJ
 diff want.obj i.obj > /dev/null || fail "OBJ: $(diff want.obj i.obj | head -5)"
+# Each room's material: its fill (an attribute-driven style), one per colour.
+grep -q '^Kd 0.9490196078431372 0.9019607843137255 0.8$' i.mtl || fail "MTL: $(cat i.mtl)"
+[ "$(grep -c '^newmtl ' i.mtl)" = 3 ] || fail "MTL: one material per fill: $(cat i.mtl)"
 
 python3 - i.json <<'PY' || fail "JSON faces"
 import json, sys

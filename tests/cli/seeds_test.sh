@@ -30,15 +30,26 @@ done
 import json, sys
 for line in open(sys.argv[1]):
     s = json.loads(line)
-    print(f'{{"seed": {s["seed"]}, "steps": {s["steps"]}, "elements": {s["nodes"] + s["edges"]}, "stopped": "{s["stopped"]}"}}')
+    print(f'{{"seed": {s["seed"]}, "steps": {s["steps"]}, "elements": {s["nodes"] + s["edges"]}, "faces": {s["faces"]}, "stopped": "{s["stopped"]}"}}')
 PY
 rows j2.rows > j2.exact
 cmp -s j2.exact alone.rows || fail "summary rows differ from single runs: $(diff j2.exact alone.rows | head -5)"
 [ "$(wc -l < j2.rows)" = 12 ] || fail "12 summary lines expected: $(cat j2.rows)"
-grep -qx '{"seed": 11, "steps": 70, "elements": 160, "seconds": [0-9.]*, "stopped": "terminal"}' j2.rows \
+grep -qx '{"seed": 11, "steps": 70, "elements": 160, "faces": 0, "seconds": [0-9.]*, "stopped": "terminal"}' j2.rows \
   || fail "seed 11's line: $(grep '"seed": 11,' j2.rows)"
 # Several seeds vary (the comparison above is not of twelve equal files).
 [ "$(sort -u j2.exact | cut -d, -f2 | sort -u | wc -l)" -gt 2 ] || fail "the seeds gave too few different step counts"
+
+# Faces are counted: a grammar that splits faces, its lines as single runs' --stats say.
+sub="$src/examples/subdivide.g2d"
+expect_code 0 "$g2d" run "$sub" --seeds 1..3 -j 2 --no-svg
+rows out.txt > sub.rows
+for seed in 1 2 3; do
+  expect_code 0 "$g2d" run "$sub" --seed "$seed" --no-svg --stats
+  faces=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["faces"])' out.txt)
+  [ "$faces" -gt 1 ] || fail "subdivide seed $seed: $faces faces"
+  grep -q "^{\"seed\": $seed, .*\"faces\": $faces, \"stopped\"" sub.rows || fail "seed $seed's faces ($faces): $(cat sub.rows)"
+done
 
 # -j 1 gives the same files and the same lines; so does a list, and --summary.
 expect_code 0 "$g2d" run "$square" --seeds 1..12 -j 1 -o 'j1/{seed}.svg' --json 'j1/{seed}.json' --quiet
@@ -68,9 +79,9 @@ done
 # Failing seeds: past --max-elements 400 (on the way, seed 6 grows past it; seeds 4, 5 and 11 do not).
 mkdir -p f
 expect_code 1 "$g2d" run "$square" --seeds 1..12 -j 2 --max-elements 400 -o 'f/{seed}.svg'
-grep -qx '{"seed": 6, "steps": [0-9]*, "elements": [0-9]*, "seconds": [0-9.]*, "stopped": "element_limit", "error": ".*"}' out.txt \
+grep -qx '{"seed": 6, "steps": [0-9]*, "elements": [0-9]*, "faces": 0, "seconds": [0-9.]*, "stopped": "element_limit", "error": ".*"}' out.txt \
   || fail "seed 6 not reported as failed: $(grep '"seed": 6,' out.txt)"
-grep -qx '{"seed": 11, "steps": 70, "elements": 160, "seconds": [0-9.]*, "stopped": "terminal"}' out.txt \
+grep -qx '{"seed": 11, "steps": 70, "elements": 160, "faces": 0, "seconds": [0-9.]*, "stopped": "terminal"}' out.txt \
   || fail "seed 11 should succeed: $(grep '"seed": 11,' out.txt)"
 [ -e f/6.svg ] && fail "a failed seed wrote its SVG"
 [ -e f/11.svg ] || fail "a good seed beside failing ones wrote no SVG"

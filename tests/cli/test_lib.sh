@@ -17,15 +17,18 @@ finish() {
   [ "$failures" = 0 ]
 }
 # compiled_same PROGRAM STEM "EXTS" ARGS...: runs the compiled PROGRAM with ARGS,
-# writing c_STEM.EXT for each of EXTS (json svg obj), which must equal the
-# interpreter's i_STEM.EXT byte for byte.
+# writing c/i_STEM.EXT for each of EXTS (json svg obj; obj brings its mtl),
+# which must equal the interpreter's i_STEM.EXT byte for byte (the same name
+# in another folder: an OBJ names its MTL).
 compiled_same() {
   local program=$1 stem=$2 exts=$3; shift 3
   local outs=() ext
+  mkdir -p c
   for ext in $exts; do
-    case $ext in json) outs+=(--json "c_$stem.json") ;; obj) outs+=(--obj "c_$stem.obj") ;; svg) outs+=(-o "c_$stem.svg") ;; esac
+    case $ext in json) outs+=(--json "c/i_$stem.json") ;; obj) outs+=(--obj "c/i_$stem.obj") ;; svg) outs+=(-o "c/i_$stem.svg") ;; esac
   done
   [[ " $exts " == *" svg "* ]] || outs+=(--no-svg)
+  [[ " $exts " == *" obj "* ]] && exts="$exts mtl"
   expect_code 0 "$program" "$@" "${outs[@]}"
-  for ext in $exts; do cmp -s "i_$stem.$ext" "c_$stem.$ext" || fail "$stem: interpreted and compiled $ext differ"; done
+  for ext in $exts; do cmp -s "i_$stem.$ext" "c/i_$stem.$ext" || fail "$stem: interpreted and compiled $ext differ"; done
 }

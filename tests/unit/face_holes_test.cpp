@@ -243,7 +243,7 @@ TEST_CASE("an island leaves a hole in its face: SVG path, JSON hole cycle, OBJ t
                 fields >> group;
             } else if (tag == "f") {
                 faces[group].emplace_back();
-                for (int k = 0; fields >> k;) faces[group].back().push_back(k - 1);
+                for (std::string corner; fields >> corner;) faces[group].back().push_back(std::stoi(corner) - 1);   // `v//n`
             }
         }
         REQUIRE(faces["Room"].size() == 8);

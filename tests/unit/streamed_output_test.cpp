@@ -43,9 +43,10 @@ std::pair<std::string, std::string> bothSvgs(rt::GrammarRun& run, const rt::SvgO
     if (space3d) rt::projectDrawing(items, g, view);
     const std::string whole = rt::writeSvg(std::move(items), run.svgDefs(), options);
     rt::StringOut out;
+    const rt::SolidFaces solid(g);
     rt::writeSvg(g, [&](rt::ElemClass cls, std::uint32_t id, rt::DrawItem& it) {
         run.drawItem(cls, id, it);
-        if (space3d) rt::projectItem(it, g, view);
+        if (space3d) rt::projectItem(it, g, view, solid);
     }, run.svgDefs(), out, options);
     return {out.text(), whole};
 }

@@ -40,8 +40,8 @@ struct Subpath {
 // and is left out, as SVG renders nothing for it.
 std::vector<Subpath> parsePathData(std::string_view text);
 
-// "#rrggbb" (lower case) for #rgb, #rrggbb, rgb(r, g, b) with numbers or
-// percentages, and the CSS named colours (any case); nullopt for anything else.
+// "#rrggbb" (lower case) for an opaque CSS colour (rt::cssColor: #hex,
+// rgb(), hsl(), the named colours, any case); nullopt for anything else.
 std::optional<std::string> parseColor(std::string_view text);
 
 std::string_view trim(std::string_view text);

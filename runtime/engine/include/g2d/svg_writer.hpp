@@ -15,8 +15,8 @@
 //   href    image source;  text  the text of a text element
 //   d       path data, points  polyline points (graph coordinates)
 //   arrow   true: directed edges end in an arrowhead
-//   z       drawing order (lower first; then faces, edges, nodes; then, in 3D,
-//           farther first; then by id)
+//   z       drawing order (lower first; then faces, edges, nodes, each by id;
+//           in 3D all three together, farther first: projection.hpp)
 //   filter  an id of a filter in `defs` (written as url(#id)) or any CSS filter
 //
 // The compact form (SvgOptions::compact) writes each run of consecutive plain
@@ -46,6 +46,7 @@ struct DrawItem {
     std::vector<StyleOverride> props;      // resolved: kind defaults, then overrides (enums as strings)
     double depth = 0;                      // 3D: the distance from the viewer (farther drawn first)
     bool turnedAway = false;               // 3D: a face seen from its back (drawn before those seen from the front)
+    bool inDepth = false;                  // 3D: faces, edges and nodes painted together by depth (projection.hpp)
 };
 
 struct SvgOptions {

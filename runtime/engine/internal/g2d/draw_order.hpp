@@ -1,7 +1,8 @@
 #pragma once
-// The order a drawing is painted in: lower z first; then faces, edges,
-// nodes; then, in 3D, faces seen from the back, and farther first; then by
-// id. Kept as compact keys, so a graph's items can be made one at a time
+// The order a drawing is painted in: lower z first; then, in 2D, faces,
+// edges, nodes, each by id; in 3D faces, edges and nodes together (seen from
+// the back first, then farther first, then faces, edges, nodes), as
+// projection.hpp sets their depths. Kept as compact keys, so a graph's items can be made one at a time
 // twice (once to measure the frame, once to write) instead of held in memory.
 #include <cstdint>
 #include <functional>
@@ -16,6 +17,7 @@ struct DrawKey {
     std::uint32_t id = 0;
     std::uint8_t layer = 0;      // 0 faces, 1 edges, 2 nodes
     bool turnedAway = false;
+    bool inDepth = false;        // 3D: ordered by depth across the layers
 };
 
 DrawKey drawKey(const DrawItem& it);

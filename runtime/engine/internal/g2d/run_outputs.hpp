@@ -20,6 +20,9 @@ struct RunOutputs {
     TextOut* svg = nullptr;
     TextOut* json = nullptr;
     TextOut* obj = nullptr;
+    TextOut* mtl = nullptr;                             // the OBJ's materials (obj_writer.hpp)
+    std::string mtlName;                                // as the OBJ's `mtllib` names it
+    bool objTriangles = false;                          // every OBJ face as triangles
     SvgOptions svgOptions;                              // its viewBox: --viewbox, else the canvas, else fitted
     ViewProjection view = viewFrom(kDefaultViewFrom);   // how the SVG shows a 3D model
     // The JSON's "graph" object.

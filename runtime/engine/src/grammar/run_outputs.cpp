@@ -1,5 +1,6 @@
 #include "g2d/run_outputs.hpp"
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -13,9 +14,11 @@ void writeRunOutputs(GrammarRun& grammar, const RunOutputs& out) {
     if (out.svg) {
         // Streamed: each item is made when written (twice: writeSvg), never all at once.
         const bool space3d = grammar.jsonSchema().space3d;
+        std::optional<SolidFaces> solid;
+        if (space3d) solid.emplace(graph);
         const ItemMaker drawn = [&](ElemClass cls, std::uint32_t id, DrawItem& it) {
             grammar.drawItem(cls, id, it);
-            if (space3d) projectItem(it, graph, out.view);
+            if (solid) projectItem(it, graph, out.view, *solid);
         };
         writeSvg(graph, drawn, grammar.svgDefs(), *out.svg, out.svgOptions);
     }
@@ -27,7 +30,14 @@ void writeRunOutputs(GrammarRun& grammar, const RunOutputs& out) {
         writeJson(graph, grammar.jsonSchema(), meta, *out.json,
                   [&](ElemClass cls, std::uint32_t id, int a) { return grammar.attribute(cls, id, a); });
     }
-    if (out.obj) writeObj(graph, grammar.jsonSchema(), *out.obj);
+    if (out.obj) {
+        ObjOptions obj;
+        obj.triangles = out.objTriangles;
+        obj.mtl = out.mtl;
+        obj.mtlName = out.mtlName;
+        obj.faceItem = [&](ElemClass cls, std::uint32_t id, DrawItem& it) { grammar.drawItem(cls, id, it); };
+        writeObj(graph, grammar.jsonSchema(), *out.obj, obj);
+    }
 }
 
 const char* stopName(StopReason reason) { return reason == StopReason::Terminal ? "terminal" : "step_limit"; }

@@ -44,6 +44,7 @@ void drawItem(const Graph& g, ElemClass cls, std::uint32_t id, const std::vector
     item.props.clear();
     item.depth = 0;
     item.turnedAway = false;
+    item.inDepth = false;
     if (cls == ElemClass::Face) {
         CornerId c = g.firstCorner(id);
         if (g.hasBends()) {   // the rings follow their edges' bends

@@ -11,17 +11,23 @@ DrawKey drawKey(const DrawItem& it) {
     k.id = it.id;
     k.layer = it.cls == ElemClass::Face ? 0 : it.cls == ElemClass::Edge ? 1 : 2;
     k.turnedAway = it.turnedAway;
+    k.inDepth = it.inDepth;
     return k;
 }
 
 bool drawnBefore(const DrawKey& a, const DrawKey& b) {
     if (a.z != b.z) return a.z < b.z;
+    if (a.inDepth) {
+        // 3D (projection.hpp): what is seen from the back first (on a closed
+        // surface it lies behind what is seen from the front, however big),
+        // then farther first, faces, edges and nodes together, so that a
+        // face hides what lies behind it; at one depth faces below edges
+        // below nodes, so that a face's sides and corners stay on top of it.
+        if (a.turnedAway != b.turnedAway) return a.turnedAway;
+        if (a.depth != b.depth) return a.depth > b.depth;
+    }
     // Faces below edges below nodes.
     if (a.layer != b.layer) return a.layer < b.layer;
-    // 3D: faces seen from the back first (on a closed surface they lie
-    // behind those seen from the front, however big), then farther first.
-    if (a.turnedAway != b.turnedAway) return a.turnedAway;
-    if (a.depth != b.depth) return a.depth > b.depth;
     return a.id < b.id;
 }
 

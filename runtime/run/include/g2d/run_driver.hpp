@@ -1,6 +1,6 @@
 #pragma once
 // The run procedure shared by `g2d run` and compiled grammars:
-// RUN [-o OUT.svg|OUT.png [--dpi N | --width PX]] [--json OUT.json] [--obj OUT.obj] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--embed-images] [--viewbox X0,Y0,X1,Y1] [--seed N] [-D NAME=VALUE]…
+// RUN [-o OUT.svg|OUT.png [--dpi N | --width PX]] [--json OUT.json] [--obj OUT.obj [--obj-triangles]] [--gltf OUT.glb] [--view OUT.html] [--no-svg] [--svg-compact] [--precision N] [--embed-images] [--viewbox X0,Y0,X1,Y1] [--seed N] [-D NAME=VALUE]…
 //     [--steps N] [--stats] [--max-elements N] [--timeout SECONDS] [--keep-partial] [--quiet]
 //     [--seeds A..B [-j N] [--summary FILE]]
 #include <cstdint>
@@ -20,7 +20,9 @@ struct RunRequest {
     std::string grammarFile;              // the .g2d file (messages, default output name)
     std::optional<std::string> svgOut;    // default: the grammar's name with .svg, in the current folder
     std::optional<std::string> jsonOut;
-    std::optional<std::string> objOut;
+    std::optional<std::string> objOut;    // and its materials beside it, with .mtl (obj_writer.hpp)
+    bool objTriangles = false;            // every OBJ face as triangles
+    std::optional<std::string> gltfOut;   // binary glTF 2.0 (gltf_writer.hpp)
     std::optional<std::string> viewOut;   // the model in 3D, as a self-contained page (view_page.hpp)
     std::optional<std::string> viewFrom;  // 3D grammars: the SVG's view direction, "X,Y,Z" (projection.hpp)
     bool noSvg = false;
@@ -53,6 +55,7 @@ struct RunRequest {
 struct RunOutcome {
     long long steps = 0;                  // the last completed step
     std::size_t elements = 0;             // nodes + edges
+    std::size_t faces = 0;
     std::string stopped;                  // as in the JSON output ("terminal", "max_elements", "error", …)
 };
 

@@ -15,6 +15,7 @@ struct SeedRow {
     int status = 0;             // runGrammar's exit code for this seed: 0 done, 1 failed, 2 bad arguments
     long long steps = 0;        // the last completed step
     std::uint64_t elements = 0; // nodes + edges at the end
+    std::uint64_t faces = 0;    // faces at the end
     double seconds = 0;         // wall time of the seed: derivation and outputs
     std::string stopped;        // as in the JSON output's "stopped", or "error", "crashed"
     std::string messages;       // what the run printed on stderr (errors, notes)
@@ -32,7 +33,7 @@ bool writeFully(int fd, const void* data, std::size_t size);
 bool readFully(int fd, void* data, std::size_t size);   // false at the end of the file
 
 // The summary's line, with a newline: {"seed": …, "steps": …, "elements": …,
-// "seconds": …, "stopped": "…"}, and "error" (the first message line) when the seed failed.
+// "faces": …, "seconds": …, "stopped": "…"}, and "error" (the first message line) when the seed failed.
 std::string summaryLine(const SeedRow& row);
 
 }  // namespace g2d::rt

@@ -45,7 +45,7 @@ std::vector<OutputPattern> outputPatterns(const RunRequest& r) {
     std::vector<OutputPattern> out;
     if (!r.noSvg) out.push_back({"-o", r.svgOut.value_or(std::filesystem::path(r.grammarFile).stem().string() + ".svg")});
     const std::pair<const char*, const std::optional<std::string>*> others[] = {
-        {"--json", &r.jsonOut}, {"--obj", &r.objOut}, {"--view", &r.viewOut}, {"--trace", &r.traceHtml}, {"--trace-json", &r.traceJson}};
+        {"--json", &r.jsonOut}, {"--obj", &r.objOut}, {"--gltf", &r.gltfOut}, {"--view", &r.viewOut}, {"--trace", &r.traceHtml}, {"--trace-json", &r.traceJson}};
     for (const auto& [option, path] : others)
         if (*path) out.push_back({option, **path});
     return out;
@@ -53,7 +53,7 @@ std::vector<OutputPattern> outputPatterns(const RunRequest& r) {
 
 // Why the batch cannot run as asked, or "".
 std::string batchArgumentError(const RunRequest& r, std::size_t seedCount) {
-    if (r.stats) return "--stats does not go with --seeds: the summary has a line per seed (steps, elements, seconds, stopped)";
+    if (r.stats) return "--stats does not go with --seeds: the summary has a line per seed (steps, elements, faces, seconds, stopped)";
     if (seedCount < 2) return "";
     for (const auto& [option, pattern] : outputPatterns(r)) {
         if (hasSeedPlaceholder(pattern)) continue;

@@ -16,12 +16,12 @@ struct RowHeader {
     std::uint64_t seed;
     std::int32_t status;
     std::int64_t steps;
-    std::uint64_t elements;
+    std::uint64_t elements, faces;
     double seconds;
     std::uint32_t stoppedSize, messagesSize, stagedCount;
 };
 
-constexpr std::uint32_t kMaxStaged = 16;   // a run writes at most six outputs
+constexpr std::uint32_t kMaxStaged = 16;   // a run writes at most eight outputs
 
 constexpr std::size_t kMaxText = 1 << 20;   // a sane bound for reading: rows come from our own workers
 
@@ -66,7 +66,7 @@ bool readFully(int fd, void* data, std::size_t size) {
 
 bool writeRow(int fd, const SeedRow& row) {
     const std::string stopped = row.stopped.substr(0, kMaxText), messages = row.messages.substr(0, kMaxText);
-    const RowHeader h{row.seed, row.status, row.steps, row.elements, row.seconds,
+    const RowHeader h{row.seed, row.status, row.steps, row.elements, row.faces, row.seconds,
                       static_cast<std::uint32_t>(stopped.size()), static_cast<std::uint32_t>(messages.size()),
                       static_cast<std::uint32_t>(row.staged.size())};
     std::string buffer(reinterpret_cast<const char*>(&h), sizeof h);
@@ -81,7 +81,7 @@ std::optional<SeedRow> readRow(int fd) {
     RowHeader h{};
     if (!readFully(fd, &h, sizeof h) || h.stoppedSize > kMaxText || h.messagesSize > kMaxText || h.stagedCount > kMaxStaged)
         return std::nullopt;
-    SeedRow row{h.seed, h.status, h.steps, h.elements, h.seconds, std::string(h.stoppedSize, '\0'),
+    SeedRow row{h.seed, h.status, h.steps, h.elements, h.faces, h.seconds, std::string(h.stoppedSize, '\0'),
                 std::string(h.messagesSize, '\0'), std::vector<StagedFile>(h.stagedCount)};
     if (!readFully(fd, row.stopped.data(), row.stopped.size()) || !readFully(fd, row.messages.data(), row.messages.size()))
         return std::nullopt;
@@ -93,7 +93,8 @@ std::optional<SeedRow> readRow(int fd) {
 
 std::string summaryLine(const SeedRow& row) {
     std::string line = "{\"seed\": " + std::to_string(row.seed) + ", \"steps\": " + std::to_string(row.steps) +
-                       ", \"elements\": " + std::to_string(row.elements) + ", \"seconds\": " + formatFixed(row.seconds, 4) +
+                       ", \"elements\": " + std::to_string(row.elements) +
+                       ", \"faces\": " + std::to_string(row.faces) + ", \"seconds\": " + formatFixed(row.seconds, 4) +
                        ", \"stopped\": " + jsonString(row.stopped);
     if (row.status != 0) {
         const std::string first = row.messages.substr(0, row.messages.find('\n'));

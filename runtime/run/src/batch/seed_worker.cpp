@@ -51,6 +51,7 @@ SeedRow runOneSeed(const RunRequest& batch, GrammarRun& grammar, std::uint64_t s
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     row.steps = outcome.steps;
     row.elements = outcome.elements;
+    row.faces = outcome.faces;
     row.stopped = outcome.stopped.empty() ? "error" : outcome.stopped;
     // The derivation ended well but an output could not be written.
     if (row.status == 1 && (row.stopped == "terminal" || row.stopped == "step_limit")) row.stopped = "output_error";
@@ -70,6 +71,7 @@ RunRequest seedRequest(const RunRequest& batch, std::uint64_t seed) {
     r.svgOut = patterned(batch.svgOut, seed);
     r.jsonOut = patterned(batch.jsonOut, seed);
     r.objOut = patterned(batch.objOut, seed);
+    r.gltfOut = patterned(batch.gltfOut, seed);
     r.viewOut = patterned(batch.viewOut, seed);
     r.traceHtml = patterned(batch.traceHtml, seed);
     r.traceJson = patterned(batch.traceJson, seed);

@@ -10,6 +10,8 @@
 #include <unistd.h>
 
 #include "g2d/atomic_file.hpp"
+#include "g2d/export_style.hpp"
+#include "g2d/gltf_writer.hpp"
 #include "g2d/image_links.hpp"
 #include "g2d/png_writer.hpp"
 #include "g2d/run_outputs.hpp"
@@ -20,6 +22,9 @@
 namespace g2d::rt {
 
 namespace {
+
+// The OBJ's materials: beside it, its name with .mtl.
+std::string mtlPath(const std::string& obj) { return std::filesystem::path(obj).replace_extension(".mtl").string(); }
 
 int usageError(const RunRequest& request, const std::string& message) {
     std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), message.c_str());
@@ -128,6 +133,9 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         viewBox = parseViewBox(*request.viewBox, why);
         if (!viewBox) return usageError(request, "--viewbox " + *request.viewBox + ": " + why);
     }
+    if (request.objTriangles && !request.objOut) return usageError(request, "--obj-triangles applies to OBJ output only: give --obj FILE");
+    if (request.objOut && std::filesystem::path(*request.objOut).extension() == ".mtl")
+        return usageError(request, "--obj " + *request.objOut + ": the OBJ's materials go beside it with .mtl; name the OBJ FILE.obj");
     if (request.seeds) return runSeedBatch(request, grammar);   // many seeds: one runGrammar per seed, in workers
     std::vector<Value> params;
     if (std::string err = parameterValues(grammar.params(), request.defines, params); !err.empty())
@@ -148,13 +156,15 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         return usageError(request, "--timeout must be a positive number of seconds");
 
     // Outputs are opened first, so an unwritable path fails before the work.
-    std::unique_ptr<AtomicFile> svgFile, jsonFile, objFile, viewFile, traceHtmlFile, traceJsonFile;
+    std::unique_ptr<AtomicFile> svgFile, jsonFile, objFile, mtlFile, gltfFile, viewFile, traceHtmlFile, traceJsonFile;
     try {
         if (!request.noSvg)
             svgFile = std::make_unique<AtomicFile>(
                 request.svgOut.value_or(std::filesystem::path(request.grammarFile).stem().string() + ".svg"));
         if (request.jsonOut) jsonFile = std::make_unique<AtomicFile>(*request.jsonOut);
         if (request.objOut) objFile = std::make_unique<AtomicFile>(*request.objOut);
+        if (request.objOut) mtlFile = std::make_unique<AtomicFile>(mtlPath(*request.objOut));
+        if (request.gltfOut) gltfFile = std::make_unique<AtomicFile>(*request.gltfOut);
         if (request.viewOut) viewFile = std::make_unique<AtomicFile>(*request.viewOut);
         if (request.traceHtml) traceHtmlFile = std::make_unique<AtomicFile>(*request.traceHtml);
         if (request.traceJson) traceJsonFile = std::make_unique<AtomicFile>(*request.traceJson);
@@ -202,7 +212,8 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         status = 1;
     }
     if (request.outcome)   // a batch's summary row (seed_batch.cpp)
-        *request.outcome = RunOutcome{result.steps, grammar.graph().nodeCount() + grammar.graph().edgeCount(), stopped};
+        *request.outcome = RunOutcome{result.steps, grammar.graph().nodeCount() + grammar.graph().edgeCount(),
+                                      grammar.graph().faceCount(), stopped};
     if (status != 0 && !(request.keepPartial && progress.started)) return status;
 
     try {
@@ -232,6 +243,9 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         outputs.svg = svgWhole ? static_cast<TextOut*>(&svgText) : svgFile.get();
         outputs.json = jsonFile.get();
         outputs.obj = objFile.get();
+        outputs.mtl = mtlFile.get();
+        if (request.objOut) outputs.mtlName = std::filesystem::path(mtlPath(*request.objOut)).filename().string();
+        outputs.objTriangles = request.objTriangles;
         writeRunOutputs(grammar, outputs);
         // The page is made before any output is committed: a face it cannot
         // draw leaves no file written.
@@ -245,6 +259,10 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
                 throw OutputError("cannot write `" + *request.viewOut + "`: " + e.what());
             }
         }
+        // Made before any file is committed: a face glTF cannot draw leaves none written.
+        std::string glb;
+        if (gltfFile)
+            glb = writeGltf(graph, grammar.jsonSchema(), [&](ElemClass cls, std::uint32_t id, DrawItem& it) { grammar.drawItem(cls, id, it); }, name);
         std::string svg;
         if (svgWhole) svg = std::move(svgText.text());
         if (png) {
@@ -272,18 +290,23 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         }
         if (jsonFile) jsonFile->commit();
         if (objFile) objFile->commit();
+        if (mtlFile) mtlFile->commit();
+        if (gltfFile) gltfFile->commit(glb);
         if (viewFile) viewFile->commit(viewPage);
         if (request.stats)
-            std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
+            std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"faces\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
                         "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld, \"rejected_splits\": %lld, "
                         "\"bends_reduced\": %lld}\n",
-                        result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
+                        result.steps, graph.nodeCount(), graph.edgeCount(), graph.faceCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
                         result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
                         result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits, result.bendsReduced);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
+        return 1;
+    } catch (const ExportError& e) {
+        std::fprintf(stderr, "%s: error: %s; no output written\n", request.grammarFile.c_str(), e.what());
         return 1;
     } catch (const std::exception& e) {
         reportRunError(request, grammar, e, progress.step);

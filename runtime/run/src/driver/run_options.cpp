@@ -37,7 +37,12 @@ void addRunOptions(CLI::App& app, RunRequest& r) {
     addOptional(app, "--dpi", r.dpi, "PNG output: pixels per inch of the drawing's size in cm (default 96)", "N");
     addOptional(app, "--width", r.width, "PNG output: the image's width in pixels (the height follows; not with --dpi)", "PX");
     addOptional(app, "--json", r.jsonOut, "Graph output in NetworkX node-link JSON", "FILE");
-    addOptional(app, "--obj", r.objOut, "Wavefront OBJ output: nodes as vertices, faces by kind, edges as lines", "FILE");
+    addOptional(app, "--obj", r.objOut,
+                "Wavefront OBJ output: nodes as vertices, faces by kind with normals, edges as lines; "
+                "the faces' colours go to an MTL beside it (FILE with .mtl)", "FILE");
+    app.add_flag("--obj-triangles", r.objTriangles, "OBJ output: every face as triangles (for importers that split faces badly)");
+    addOptional(app, "--gltf", r.gltfOut,
+                "Binary glTF 2.0 output (.glb): a mesh per face kind, thick edges as tubes, colours from the styles", "FILE");
     addOptional(app, "--view", r.viewOut, "Write the model in 3D as a self-contained HTML page (drag to turn it)", "FILE");
     addOptional(app, "--view-from", r.viewFrom,
                 "3D grammars: draw the SVG as seen from this direction (default 1,-2,1.5; z is up)", "X,Y,Z");
