@@ -241,7 +241,7 @@ TEST_CASE("warnings: `insert` between corners a matched face has on a diagonal",
     };
     const std::string quad = "q: Q(a, b, c, d);";
     CHECK(warnings(quad, "a and c") ==
-          std::vector<std::string>{"5:40: warning: `a` and `c` are not neighbouring corners of face `q` (a diagonal), so this `insert` "
+          std::vector<std::string>{"5:43: warning: `a` and `c` are not neighbouring corners of face `q` (a diagonal), so this `insert` "
                                    "does not grow it: `m` joins only faces with a side from `a` to `c`"});
     CHECK(warnings(quad, "d and b").size() == 1);
     CHECK(warnings(quad, "a and b").empty());   // a side, either way round
@@ -263,7 +263,7 @@ TEST_CASE("warnings: a face pattern whose corner kinds fit only the mirror image
         return g2d::test::diagnosticLines(r);
     };
     CHECK(warnings("Slice(h, r, l)") ==
-          std::vector<std::string>{"6:49: warning: face pattern `s` lists its corners against the order of every `Slice` face the grammar "
+          std::vector<std::string>{"6:48: warning: face pattern `s` lists its corners against the order of every `Slice` face the grammar "
                                    "makes, and a face never matches its mirror image: write `s: Slice(l, r, h)`"});
     CHECK(warnings("Slice(l, r, h)").empty());   // a rotation of the face made
     CHECK(warnings("Slice(h, l, r)").empty());
@@ -423,7 +423,9 @@ TEST_CASE("faces in the axiom, matches and daughters: kinds, corners, names", "[
          "5:57: `x` appears twice in this daughter"},
         {nodes + "}\nrule R { match { x: P; y: P; z: P; } produce { y: F(x, y, z); } }",
          "5:48: `y` is matched; a daughter's face needs a new name"},
-        {"face G directed;\naxiom { }", "4:8: expected `;` or `{`, found `directed`"},
+        {"face G directed;\naxiom { }",
+         "4:8: expected `;`, `{` or a name, found `directed`; a face kind may be `oriented`, and only edge kinds are `directed` or "
+         "`undirected`"},
     };
     for (const auto& [source, expected] : cases) {
         INFO(source);
