@@ -72,7 +72,7 @@ typeRef     : ID ;
 kindDecl
     : 'node' ID kindBody                                  # nodeKind
     | 'edge' ID (DIRECTED='directed' | UNDIRECTED='undirected')? kindBody  # edgeKind
-    | 'face' ID kindBody                                  # faceKind
+    | 'face' ID option=ID? kindBody                       # faceKind      // option: `oriented` (not a keyword)
     ;
 kindBody    : '{' kindMember* '}' | ';' ;
 kindMember

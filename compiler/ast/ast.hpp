@@ -201,6 +201,7 @@ struct StyleProp { Ident name; ExprPtr value; Span span; };
 struct KindDecl {
     enum class Class { Node, Edge, Face } cls = Class::Node;
     std::optional<bool> directed;   // edges: `directed` / `undirected` / unspecified
+    std::optional<Ident> option;    // faces: the word after the name (`oriented`)
     Ident name;
     std::vector<AttrDecl> attrs;
     std::vector<StyleProp> style;

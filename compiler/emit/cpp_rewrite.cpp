@@ -179,7 +179,7 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                        [&](const lower::DeleteNode& o) { commit += c + "G.removeNode(m.nodes[" + str(o.matchNode) + "]);\n"; },
                        [&](const lower::SetPos& o) { commit += c + "G.setPos(" + node(o.handle) + ", " + regName(o.reg) + ");\n"; },
                        [&](const lower::InsertBetween& o) {
-                           commit += c + "G.insertBetween(" + node(o.first) + ", " + node(o.second) + ", " + node(o.node) + ");\n";
+                           commit += c + "insertDaughterCorner(G, " + node(o.first) + ", " + node(o.second) + ", " + node(o.node) + ");\n";
                        },
                        [&](const lower::SetRadius& o) { commit += c + "G.setRadius(" + node(o.handle) + ", " + attrValue(o.value) + ");\n"; },
                        [&](const lower::SetNodeAttr& o) {
@@ -216,8 +216,8 @@ std::string RewritePrinter::commitOps(const std::vector<lower::CommitOp>& ops, c
                        [&](const lower::CreateFace& o) {
                            std::string corners;
                            for (int n : o.corners) corners += (corners.empty() ? "" : ", ") + node(n);
-                           commit += c + "const FaceId " + face(o.handle) + " = G.addFace(" + str(o.kind) + ", std::array<NodeId, " +
-                                     str(static_cast<int>(o.corners.size())) + ">{" + corners + "}, step);\n" + c + "(void)" + face(o.handle) +
+                           commit += c + "const FaceId " + face(o.handle) + " = addDaughterFace(G, " + str(o.kind) + ", std::array<NodeId, " +
+                                     str(static_cast<int>(o.corners.size())) + ">{" + corners + "}, step, " + (o.orient ? "true" : "false") + ");\n" + c + "(void)" + face(o.handle) +
                                      ";\n" + record(o.kind, o.attrs, face(o.handle), ir::ElemClass::Face, c);
                        },
                        [&](const lower::SetFaceStyle& o) {

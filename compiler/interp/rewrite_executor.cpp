@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "g2d/daughter_faces.hpp"
 #include "g2d/face_split.hpp"
 #include "g2d/placement.hpp"
 
@@ -190,13 +191,13 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        [&](const lower::CreateFace& o) {
                            corners_.clear();
                            for (int c : o.corners) corners_.push_back(nodes[c]);
-                           faces[o.handle] = g.addFace(o.kind, corners_, step);
+                           faces[o.handle] = rt::addDaughterFace(g, o.kind, corners_, step, o.orient);
                            for (const auto& w : o.attrs) g.initFaceAttr(faces[o.handle], w.attr, value(w.value));
                        },
                        [&](const lower::SetFaceStyle& o) {
                            if (!o.ifAlive || g.faceAlive(faces[o.handle])) g.setFaceStyle(faces[o.handle], static_cast<rt::StyleProp>(o.style->propId), value(o.value));
                        },
-                       [&](const lower::InsertBetween& o) { g.insertBetween(nodes[o.first], nodes[o.second], nodes[o.node]); },
+                       [&](const lower::InsertBetween& o) { rt::insertDaughterCorner(g, nodes[o.first], nodes[o.second], nodes[o.node]); },
                        [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },
                        [&](const lower::CreateRingFace& o) {
                            ringCorners(o, p.loops[static_cast<std::size_t>(o.loop)], loops[static_cast<std::size_t>(o.loop)]);

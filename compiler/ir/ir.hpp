@@ -173,6 +173,7 @@ struct Kind {
     std::string name;
     ElemClass cls = ElemClass::Node;
     bool directed = false;             // edges
+    bool oriented = false;             // faces: `face K oriented`: a new face takes its neighbours' orientation
     std::vector<Attribute> attrs;
     std::vector<StyleProp> style;      // defaults for how elements of this kind are drawn
     std::optional<EdgeLayout> layout;  // edges: `layout { … }`

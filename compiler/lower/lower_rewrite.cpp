@@ -83,7 +83,7 @@ private:
             ++lp.edgeHandles;
         }
         for (const auto& f : l.faces) {
-            CreateFace c{lp.faceHandles, f.kind, {}, {}};
+            CreateFace c{lp.faceHandles, f.kind, {}, {}, prog_.kinds[f.kind].oriented};
             for (const auto& r : f.corners) c.corners.push_back(handle(r));
             for (const auto& a : f.assigns) c.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
             lp.link.push_back(std::move(c));
@@ -276,7 +276,7 @@ private:
         for (std::size_t i = 0; i < d_.faces.size(); ++i) {
             const auto& df = d_.faces[i];
             const int h = static_cast<int>(i);
-            c.push_back(CreateFace{h, df.kind, df.corners, faceAttrs_[i]});
+            c.push_back(CreateFace{h, df.kind, df.corners, faceAttrs_[i], prog_.kinds[df.kind].oriented});
             for (const auto& [style, value] : faceStyles_[i]) c.push_back(SetFaceStyle{h, style, value, false});
         }
         for (std::size_t i = 0; i < d_.loops.size(); ++i) {

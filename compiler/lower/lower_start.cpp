@@ -47,7 +47,7 @@ RewriteProgram lowerAxiom(const ir::Axiom& ax, const ir::Program& prog) {
     for (std::size_t i = 0; i < ax.faces.size(); ++i) {
         const auto& f = ax.faces[i];
         const int h = static_cast<int>(i);
-        CreateFace create{h, f.kind, f.corners, {}};
+        CreateFace create{h, f.kind, f.corners, {}, prog.kinds[f.kind].oriented};
         for (const auto& a : f.assigns) create.attrs.push_back(AttrWrite{a.attr, operand(a.value)});
         faces.push_back(std::move(create));
         for (const auto& s : f.styles) faces.push_back(SetFaceStyle{h, &s, operand(s.value), false});

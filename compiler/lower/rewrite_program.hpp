@@ -117,6 +117,7 @@ struct CreateFace {
     int handle, kind;
     std::vector<int> corners;                            // node handles, in order (>= 3, distinct)
     std::vector<AttrWrite> attrs;
+    bool orient;                                         // the kind is `oriented` (rt::addDaughterFace)
 };
 struct SetFaceStyle { int handle; const ir::StyleAssign* style; Operand value; bool ifAlive; };
 struct InsertBetween { int node, first, second; };    // node handles (rt::Graph::insertBetween)

@@ -230,7 +230,8 @@ public:
             body = n->kindBody();
         } else if (auto* f = dynamic_cast<P::FaceKindContext*>(ctx)) {
             k.cls = KindDecl::Class::Face;
-            k.name = ident(f->ID());
+            k.name = ident(f->ID(0));
+            if (f->option) k.option = ident(f->option);
             body = f->kindBody();
         } else {
             auto* e = static_cast<P::EdgeKindContext*>(ctx);

@@ -60,6 +60,9 @@ std::string mistakeHint(antlr4::Parser* parser, antlr4::Token* offending, const 
         return "; g2d has no `" + text + "=`: write `" + name + " = " + element + "." + name + " " + text +
                " …` (expressions read the value before the step)";
     }
+    // `face F directed;`: a face kind's one option is a word, and not that one.
+    if (antlr4::Token* kw = neighbour(parser, offending, -2); kw && kw->getText() == "face" && expectedWords == "`;`, `{` or a name")
+        return "; a face kind may be `oriented`, and only edge kinds are `directed` or `undirected`";
     if (text == "," && expectedWords == "`)`") {
         // `Kind(all t, x)`: a face over all turns takes nothing else.
         antlr4::Token* every = neighbour(parser, offending, -2);

@@ -1,6 +1,8 @@
 #include "sema/daughter_checker.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdlib>
 
 #include "sema/graph_statements.hpp"
 
@@ -183,8 +185,10 @@ void DaughterChecker::statements() {
                 g_.diags.error(ins->second.span, "a side joins two different nodes, but both ends are `" + ins->first.name + "`");
             else if (node == first || node == second)
                 g_.diags.error(ins->node.span, "`" + ins->node.name + "` is an end of the side it would be inserted into");
-            else
+            else {
                 dg_.inserts.push_back(ir::Daughter::Insert{node, first, second, ins->span});
+                diagonalInsert(*ins, first, second);
+            }
             continue;
         }
         if (const auto* sp = std::get_if<ast::SplitStmt>(&s.stmt)) {
@@ -600,6 +604,24 @@ int DaughterChecker::keepEndpointOf(int mother) {
     named_.emplace(mn.name, mn.span);
     dg_.nodes.push_back(std::move(dn));
     return keptNodes_[mother];
+}
+
+void DaughterChecker::diagonalInsert(const ast::InsertStmt& ins, int first, int second) {
+    const int a = dg_.nodes[static_cast<std::size_t>(first)].motherNode, b = dg_.nodes[static_cast<std::size_t>(second)].motherNode;
+    if (a < 0 || b < 0) return;
+    const ir::PatternFace* across = nullptr;
+    for (const auto& f : rule_.faces) {
+        const auto& c = f.corners;
+        const auto ia = std::find(c.begin(), c.end(), a), ib = std::find(c.begin(), c.end(), b);
+        if (ia == c.end() || ib == c.end()) continue;
+        const auto gap = std::abs(ia - ib);
+        if (gap == 1 || gap == static_cast<std::ptrdiff_t>(c.size()) - 1) return;   // a side of a matched face
+        if (!across) across = &f;
+    }
+    if (across)
+        g_.diags.warning(ins.span, "`" + ins.first.name + "` and `" + ins.second.name + "` are not neighbouring corners of face `" +
+                                       across->name + "` (a diagonal), so this `insert` does not grow it: `" + ins.node.name +
+                                       "` joins only faces with a side from `" + ins.first.name + "` to `" + ins.second.name + "`");
 }
 
 }  // namespace g2d::sema

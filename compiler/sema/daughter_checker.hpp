@@ -47,6 +47,10 @@ private:
     // The daughter node for a mother node, keeping it if it is not kept yet
     // (a kept edge keeps its endpoints; wildcards are always kept).
     int keepEndpointOf(int mother);
+    // Warns about `insert m between a and c` when a matched face has a and c
+    // as corners, never next to each other (a diagonal), and no matched face
+    // has them as a side: the matched faces do not grow.
+    void diagonalInsert(const ast::InsertStmt& ins, int first, int second);
 
     RuleChecker& r_;
     Globals& g_;

@@ -137,6 +137,7 @@ void declareKindName(Globals& g, const ast::KindDecl& d) {
     k.name = d.name.name;
     k.cls = cls;
     k.directed = cls == ir::ElemClass::Edge && d.directed.value_or(false);
+    k.oriented = d.option && d.option->name == "oriented";
     k.span = d.span;
     g.kinds[k.name] = static_cast<int>(g.prog.kinds.size());
     g.prog.kinds.push_back(std::move(k));
@@ -281,6 +282,9 @@ void checkKindBody(Globals& g, ExprChecker& ec, const ast::KindDecl& d) {
     if (d.cls != ast::KindDecl::Class::Edge && d.directed.has_value()) {
         g.diags.error(d.name.span, "only edge kinds can be directed or undirected");
     }
+    if (d.option && d.option->name != "oriented")
+        g.diags.error(d.option->span, "unknown face kind option `" + d.option->name +
+                                          "`: a face kind may be `oriented` (a new face takes its neighbours' orientation)");
     std::map<std::string, Span> seen;
     for (const auto& a : d.attrs) {
         auto type = resolveType(g, a.type);

@@ -33,4 +33,10 @@ const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls, b
     return nullptr;
 }
 
+std::string otherSpaceFact(const std::string& name, ir::ElemClass cls, bool space3d) {
+    if (findElementFact(name, cls, space3d) || !findElementFact(name, cls, !space3d)) return {};
+    return std::string(rt::elemClassName(cls)) + " fact `" + name + "` exists only in " +
+           (space3d ? "2D grammars (this one is `space 3d;`)" : "3D grammars (`space 3d;`)");
+}
+
 }  // namespace g2d::sema

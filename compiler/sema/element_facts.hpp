@@ -23,5 +23,9 @@ bool hasFact(const ElementFact& f, ir::ElemClass cls, bool space3d);
 
 // The fact `name` of an element of class `cls`, or null.
 const ElementFact* findElementFact(const std::string& name, ir::ElemClass cls, bool space3d);
+// When elements of class `cls` have fact `name` only in the other space
+// (`normal` in 2D, `signed_area` in 3D): the error that says which space has
+// it; else empty.
+std::string otherSpaceFact(const std::string& name, ir::ElemClass cls, bool space3d);
 
 }  // namespace g2d::sema

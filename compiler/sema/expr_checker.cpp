@@ -186,6 +186,10 @@ std::optional<Expr> ExprChecker::name(const ast::Expr& e, const ast::Name& n, co
             r.span = e.span;
             return r;
         }
+        if (std::string other = otherSpaceFact(id, g_.prog.kinds[env.selfKind].cls, g_.prog.space3d); !other.empty()) {
+            g_.diags.error(e.span, other);   // before `normal` is taken for the Gaussian
+            return std::nullopt;
+        }
     }
     if (env.elems) {
         for (const auto& b : *env.elems) {
@@ -391,6 +395,10 @@ std::optional<Expr> ExprChecker::elementMember(const ast::Expr& e, const ElemBin
         r.span = e.span;
         if (env.deps) env.deps->insert(b.ref);
         return r;
+    }
+    if (std::string other = otherSpaceFact(member.name, b.ref.cls, g_.prog.space3d); !other.empty()) {
+        g_.diags.error(member.span, other);
+        return std::nullopt;
     }
     const bool isNode = b.ref.cls == ir::ElemClass::Node;
     if (b.kind < 0 && !isNode) return std::nullopt;   // an edge whose kind was unknown (reported already)

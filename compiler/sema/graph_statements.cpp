@@ -10,6 +10,7 @@
 #include "sema/const_fold.hpp"
 #include "sema/decl_checker.hpp"
 #include "sema/dpo_conditions.hpp"
+#include "sema/element_facts.hpp"
 
 #include "sema/graph_statements.hpp"
 
@@ -117,6 +118,10 @@ void checkAssignments(Globals& g, ExprChecker& ec, int kind, const std::vector<a
         // G^3's node radius (3D): a built-in field, unless the kind declares its own.
         if (it == k.attrs.end() && radiusOut && g.prog.space3d && a.name.name == "radius") {
             if (auto v = ec.checkAs(*a.value, ir::kFloatType, env, "the radius")) *radiusOut = std::move(*v);
+            continue;
+        }
+        if (it == k.attrs.end() && radiusOut && a.name.name == "radius") {   // 2D: say which space has it
+            g.diags.error(a.name.span, otherSpaceFact("radius", k.cls, g.prog.space3d));
             continue;
         }
         if (it == k.attrs.end()) {

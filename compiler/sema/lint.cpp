@@ -1,6 +1,7 @@
 #include "sema/lint.hpp"
 
 #include "sema/deleted_node_lint.hpp"
+#include "sema/mirrored_face_lint.hpp"
 
 #include <algorithm>
 #include <set>
@@ -68,8 +69,8 @@ void lintProgram(Globals& g) {
             for (const auto& f : r.faces)
                 if (missing(f.kind)) { why = "face kind `" + p.kinds[f.kind].name + "`"; break; }
         if (!why.empty())
-            g.diags.warning(r.span, "rule `" + r.name + "` can never match: no element of " + why +
-                                        " is ever created (the axiom has none and no rule makes one)");
+            g.diags.warning(r.span, (r.compound >= 0 ? "compound `" + r.name + "` never has an instance" : "rule `" + r.name + "` can never match") +
+                                        ": no element of " + why + " is ever created (the axiom has none and no rule makes one)");
     }
     for (const auto& r : p.rules)
         if (r.span.file == g.mainFile && r.compound < 0 && !r.daughters.empty() &&
@@ -88,6 +89,7 @@ void lintProgram(Globals& g) {
         if (!g.constUsed[i] && g.constFile[i] == g.mainFile)
             g.diags.warning(p.consts[i].span, "constant `" + p.consts[i].name + "` is never used");
     warnForgottenNodes(g);
+    warnMirroredFacePatterns(g);
 }
 
 }  // namespace g2d::sema

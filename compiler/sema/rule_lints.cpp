@@ -114,7 +114,8 @@ void RuleChecker::warnUnusedLets() {
                 break;
             }
     if (neverMatches_ && d_.name.span.file == g_.mainFile)
-        g_.diags.warning(d_.name.span, "rule `" + rule_.name + "` can never match: one of its conditions is always false");
+        g_.diags.warning(d_.name.span, d_.compoundMatch ? "compound `" + rule_.name + "` never has an instance: one of its conditions is always false"
+                                                        : "rule `" + rule_.name + "` can never match: one of its conditions is always false");
 }
 
 }  // namespace g2d::sema

@@ -218,6 +218,62 @@ TEST_CASE("warnings: unused bindings and rules that can never match", "[sema][wa
                    });
 }
 
+TEST_CASE("warnings: a compound that never has an instance says so, not `rule`", "[sema][warnings][compound]") {
+    auto r = compile("node P;\nnode Never;\naxiom { a: P at (0, 0); }\n"
+                     "compound C { match { p: P where 1 > 2; } sequence { Grow; } }\n"
+                     "compound D { match { n: Never; } sequence { Grow; } }\n"
+                     "rule Grow { match { p: P; } produce { p; q: P at p.pos + (1, 0); } }\n"
+                     "sequence { C; D; }\n");
+    REQUIRE(r.program.has_value());
+    CHECK(g2d::test::diagnosticLines(r) ==
+          std::vector<std::string>{"4:10: warning: compound `C` never has an instance: one of its conditions is always false",
+                                   "5:1: warning: compound `D` never has an instance: no element of node kind `Never` is ever created "
+                                   "(the axiom has none and no rule makes one)"});
+}
+
+TEST_CASE("warnings: `insert` between corners a matched face has on a diagonal", "[sema][warnings][faces]") {
+    auto warnings = [](const std::string& match, const std::string& between) {
+        auto r = compile("node P;\nface Q;\naxiom { a: P at (0, 0); b: P at (1, 0); c: P at (1, 1); d: P at (0, 1); Q(a, b, c, d); }\n"
+                         "rule R { match { " + match + " a: P; b: P; c: P; d: P; }\n"
+                         "produce { a; b; c; d; m: P at (0.5, 0.5); insert m between " + between + "; } }\n");
+        REQUIRE(r.program.has_value());
+        return g2d::test::diagnosticLines(r);
+    };
+    const std::string quad = "q: Q(a, b, c, d);";
+    CHECK(warnings(quad, "a and c") ==
+          std::vector<std::string>{"5:43: warning: `a` and `c` are not neighbouring corners of face `q` (a diagonal), so this `insert` "
+                                   "does not grow it: `m` joins only faces with a side from `a` to `c`"});
+    CHECK(warnings(quad, "d and b").size() == 1);
+    CHECK(warnings(quad, "a and b").empty());   // a side, either way round
+    CHECK(warnings(quad, "a and d").empty());
+    CHECK(warnings(quad, "b and a").empty());
+    // Another matched face has a-c as a side: the insert grows that one.
+    CHECK(warnings(quad + " t: Q(a, c, d);", "a and c").empty());
+    // A face of any corner count says nothing about its sides.
+    CHECK(warnings("q: Q;", "a and c").empty());
+}
+
+TEST_CASE("warnings: a face pattern whose corner kinds fit only the mirror image of the faces made", "[sema][warnings][faces]") {
+    auto warnings = [](const std::string& pattern, const std::string& more = "") {
+        auto r = compile("node Hub;\nnode Left;\nnode Right;\nface Slice;\n"
+                         "axiom { h: Hub at (0, 0); l: Left at (1, 0); r: Right at (0, 1); Slice(h, l, r); }\n"
+                         "rule Mark { match { h: Hub; l: Left; r: Right; s: " + pattern + "; }\n"
+                         "produce { h; l; r; s; n: Hub at (1, 1); } }\n" + more);
+        REQUIRE(r.program.has_value());
+        return g2d::test::diagnosticLines(r);
+    };
+    CHECK(warnings("Slice(h, r, l)") ==
+          std::vector<std::string>{"6:48: warning: face pattern `s` lists its corners against the order of every `Slice` face the grammar "
+                                   "makes, and a face never matches its mirror image: write `s: Slice(l, r, h)`"});
+    CHECK(warnings("Slice(l, r, h)").empty());   // a rotation of the face made
+    CHECK(warnings("Slice(h, l, r)").empty());
+    // A daughter that makes the mirror image too: either order matches something.
+    CHECK(warnings("Slice(h, r, l)", "rule Back { match { h: Hub; l: Left; r: Right; } produce { h; l; r; Slice(h, r, l); } }\n").empty());
+    // An insert anywhere may give faces corners of other kinds: nothing is known.
+    CHECK(warnings("Slice(h, r, l)", "rule Grow { match { h: Hub; l: Left; } produce { h; l; m: Hub at (2, 2); insert m between h and l; } }\n")
+              .empty());
+}
+
 TEST_CASE("warnings: a rule that changes nothing (as the thesis tool's empty production)", "[sema][warnings]") {
     auto idle = [](const std::string& rules) {
         auto r = compile(prelude() + rules);
@@ -367,7 +423,9 @@ TEST_CASE("faces in the axiom, matches and daughters: kinds, corners, names", "[
          "5:57: `x` appears twice in this daughter"},
         {nodes + "}\nrule R { match { x: P; y: P; z: P; } produce { y: F(x, y, z); } }",
          "5:48: `y` is matched; a daughter's face needs a new name"},
-        {"face G directed;\naxiom { }", "4:8: expected `;` or `{`, found `directed`"},
+        {"face G directed;\naxiom { }",
+         "4:8: expected `;`, `{` or a name, found `directed`; a face kind may be `oriented`, and only edge kinds are `directed` or "
+         "`undirected`"},
     };
     for (const auto& [source, expected] : cases) {
         INFO(source);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "g2d/builtins.hpp"
+#include "g2d/daughter_faces.hpp"
 #include "g2d/deadline.hpp"
 #include "g2d/derivation.hpp"
 #include "g2d/draw_items.hpp"

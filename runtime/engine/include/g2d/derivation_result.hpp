@@ -22,6 +22,11 @@ struct DerivationResult {
     // step changed no kind or attribute their rule reads (RuleInfo::readKinds,
     // readValues).
     long long setRepairs = 0, setRepairsSkipped = 0;
+    // What a grammar seldom means, counted where it happens (#47): new faces
+    // left running a shared side the same way as a face already on it
+    // (daughter_faces.hpp), `insert`s that found no face with their side, and
+    // compound commands that found no instance when the list reached them.
+    long long facesAgainstNeighbours = 0, insertsWithoutSide = 0, compoundsWithoutInstances = 0;
 };
 
 }  // namespace g2d::rt

@@ -232,6 +232,17 @@ public:
     void faceReshaped(FaceId f);
     void removeCorner(CornerId c);
     void moveCorner(CornerId c, NodeId n);
+    // What daughters' faces and `insert`s did that a grammar seldom means
+    // (daughter_faces.hpp): new faces left running a shared side the same
+    // way as a face already on it, and inserts that found no face with their
+    // side. Read by --stats (DerivationResult).
+    struct FaceCounts {
+        long long againstNeighbour = 0;
+        long long insertsWithoutSide = 0;
+    };
+    FaceCounts& faceCounts() { return faceCounts_; }
+    const FaceCounts& faceCounts() const { return faceCounts_; }
+
     // A face's holes: rings of nodes inside it, clockwise, that it does not
     // cover (an island of the drawing). Only `layout angles`' drawn faces
     // have them, set after the derivation, for the writers; a face's facts
@@ -524,6 +535,7 @@ private:
     GrowArray<CornerRec> corners_;
     GrowArray<NodeCorners> nodeCorners_;
     std::vector<FaceId> dirtyFaces_;
+    FaceCounts faceCounts_;
     std::vector<std::vector<std::vector<NodeId>>> faceHoles_;   // by face id; empty until a face has holes
     std::vector<std::vector<vec2>> edgeBends_;                   // by edge id; empty until an edge is bent
 };

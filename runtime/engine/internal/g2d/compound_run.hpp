@@ -39,6 +39,7 @@ public:
         std::function<std::size_t(std::size_t rule, const MatchSet& set, long long step, const ElementScope* const* scopes)> apply;
         std::function<void(std::size_t rule, long long step, EdgeId newEdgesFrom, NodeId newNodesFrom)> afterStep;
         std::function<void(long long step)> stepDone;
+        std::function<void()> foundNone;   // a compound found no instance (--stats)
     };
     // `parallel` is the step Hooks::apply runs (which matches it took);
     // `repeatCounts` the counts of the lists' repeats (SequenceEntry::Repeat).

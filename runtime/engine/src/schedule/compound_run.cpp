@@ -28,6 +28,7 @@ bool CompoundRun::run(std::size_t c, const MatchSet& initial, long long& applica
     std::vector<std::size_t> instances;
     for (std::size_t i = 0; i < initial.size(); ++i)
         instances.push_back(newInstance(c, initial.at(i), initial.nodes(), initial.edges(), initial.faces(), {}));
+    if (instances.empty()) hooks_.foundNone();
     return runEntries(c, instances, applications);
 }
 
@@ -104,6 +105,7 @@ bool CompoundRun::runEntries(std::size_t c, const std::vector<std::size_t>& inst
             std::vector<std::size_t> children;
             for (std::size_t i = 0; i < found.size(); ++i)
                 children.push_back(newInstance(e.index, found.at(i), found.nodes(), found.edges(), found.faces(), owners[i]));
+            if (children.empty()) hooks_.foundNone();
             return runEntries(e.index, children, applications);
         }
         if (!hooks_.mayStep()) return false;

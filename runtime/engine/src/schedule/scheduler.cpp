@@ -77,8 +77,8 @@ RunawayError timeLimit(const DerivationOptions& limits, long long step) {
 // Fills in the statistics however the derivation ends (returning or throwing).
 class ResultSummary {
 public:
-    ResultSummary(DerivationResult& result, const PickLookahead& lookahead)
-        : result_(result), lookahead_(lookahead), start_(std::chrono::steady_clock::now()) {}
+    ResultSummary(DerivationResult& result, const PickLookahead& lookahead, const Graph& g)
+        : result_(result), lookahead_(lookahead), g_(g), start_(std::chrono::steady_clock::now()) {}
     ~ResultSummary();
     ResultSummary(const ResultSummary&) = delete;
     ResultSummary& operator=(const ResultSummary&) = delete;
@@ -87,6 +87,7 @@ public:
 private:
     DerivationResult& result_;
     const PickLookahead& lookahead_;
+    const Graph& g_;
     const IncrementalMatches* sets_ = nullptr;
     std::chrono::steady_clock::time_point start_;
 };
@@ -183,6 +184,8 @@ ResultSummary::~ResultSummary() {
     result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     result_.lookaheadGuesses = lookahead_.guesses();
     result_.lookaheadHits = lookahead_.hits();
+    result_.facesAgainstNeighbours = g_.faceCounts().againstNeighbour;
+    result_.insertsWithoutSide = g_.faceCounts().insertsWithoutSide;
     if (sets_) {
         result_.setRepairs = static_cast<long long>(sets_->setsRepaired());
         result_.setRepairsSkipped = static_cast<long long>(sets_->setsSkipped());
@@ -192,7 +195,7 @@ ResultSummary::~ResultSummary() {
 Scheduler::Scheduler(Graph& g, RuleSet& rules, Rng& rng, const DerivationOptions& limits, DerivationResult& result,
                      const StepObserver& observer, StepTracer* tracer)
     : g_(g), rules_(rules), rng_(rng), limits_(limits), result_(result), observer_(observer), tracer_(tracer),
-      drawing_(limits.wholeDrawings), summary_(result, lookahead_) {
+      drawing_(limits.wholeDrawings), summary_(result, lookahead_, g) {
     result_ = DerivationResult{};
     groups_ = groupsByPriority();
     angles_ = rules_.angleLayout();
@@ -333,7 +336,8 @@ void Scheduler::runSequence() {
                                              [this](std::size_t r, const MatchSet& set, long long step, const ElementScope* const* scopes) {
                                                  return applyCommand(r, set, step, scopes);
                                              },
-                                             afterCommand, [this](long long step) { stepDone(step); }},
+                                             afterCommand, [this](long long step) { stepDone(step); },
+                                             [this] { ++result_.compoundsWithoutInstances; }},
                           limits_.repeatCounts);
     const bool finished = forEachCommand(rules_.sequence(), limits_.repeatCounts, [&](const SequenceEntry& entry) {
         if (entry.kind == SequenceEntry::Compound)
