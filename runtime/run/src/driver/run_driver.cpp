@@ -269,11 +269,12 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
             std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"seconds\": %s, \"seed\": %llu, "
                         "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
                         "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld, \"rejected_splits\": %lld, "
-                        "\"bends_reduced\": %lld}\n",
+                        "\"bends_reduced\": %lld, \"rejected_intersections\": %lld}\n",
                         result.steps, graph.nodeCount(), graph.edgeCount(), formatNumber(result.seconds).c_str(),
                         static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
                         result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
-                        result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits, result.bendsReduced);
+                        result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits, result.bendsReduced,
+                        result.rejectedIntersections);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;
