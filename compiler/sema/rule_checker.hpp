@@ -82,6 +82,7 @@ private:
     // `intersect`: an application found to intersect is undone by removing
     // what it added, so it may only add (G^3's Create edge and Create face).
     void checkOnlyAdds();
+    void warnAlwaysIntersects(const ir::Daughter& d);
     void warnUnusedLets();
 
     Globals& g_;

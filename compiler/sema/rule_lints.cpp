@@ -99,6 +99,37 @@ void RuleChecker::checkOnlyAdds() {
             diag.notes.push_back({d_.name.span, "rule `" + rule_.name + "` has `intersect`"});
             return;
         }
+        warnAlwaysIntersects(d);
+    }
+}
+
+void RuleChecker::warnAlwaysIntersects(const ir::Daughter& d) {
+    // A new edge from kept node k to a new node placed at `k.pos` has no
+    // length: it lies on every other edge at k (the shared node's contact is
+    // ignored, the rest of the new edge is that point), so the test refuses
+    // every application while k keeps an edge of the match.
+    if (d_.name.span.file != g_.mainFile) return;
+    for (const auto& e : d.edges) {
+        if (e.motherEdge >= 0 || e.src < 0 || e.dst < 0) continue;
+        for (const auto& [keptEnd, newEnd] : {std::pair{e.src, e.dst}, std::pair{e.dst, e.src}}) {
+            const auto& k = d.nodes[static_cast<std::size_t>(keptEnd)];
+            const auto& n = d.nodes[static_cast<std::size_t>(newEnd)];
+            if (k.motherNode < 0 || n.motherNode >= 0 || !n.position) continue;
+            const ir::Expr& at = *n.position;
+            const bool atK = at.op == ir::ExprOp::Fact && (at.fact == ir::ElemFact::Pos || at.fact == ir::ElemFact::Pos3) &&
+                             at.elem.cls == ElemClass::Node && at.elem.index == k.motherNode;
+            if (!atK) continue;
+            for (std::size_t i = 0; i < rule_.edges.size(); ++i) {
+                const auto& me = rule_.edges[i];
+                if (me.src == me.dst || (me.src != k.motherNode && me.dst != k.motherNode)) continue;
+                if (std::find(d.deletedEdges.begin(), d.deletedEdges.end(), static_cast<int>(i)) != d.deletedEdges.end()) continue;
+                auto& diag = g_.diags.warning(n.span, "node `" + n.name + "` is placed at `" + k.name + ".pos`, so the new edge between them has "
+                                                      "no length and lies on " + (me.name.empty() ? std::string("an edge of the match") : "edge `" + me.name + "`") +
+                                                      " at `" + k.name + "`: rule `" + rule_.name + "`'s intersection test undoes every application");
+                diag.notes.push_back({d_.name.span, "rule `" + rule_.name + "` has `intersect`"});
+                return;
+            }
+        }
     }
 }
 
