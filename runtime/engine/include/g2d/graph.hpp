@@ -511,6 +511,9 @@ private:
     // fixing the moved element's place), dead, its attributes and styles dropped.
     template <class Rec>
     void retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id);
+    // Its first part: out of its kind's index (swap-remove) and dead.
+    template <class Rec>
+    void unindex(Rec& rec, GrowArray<Rec>& recs);
     NodeCorners& cornersAt(NodeId n);
     [[noreturn]] static void deadEndpoint();
 
@@ -551,13 +554,18 @@ private:
 };
 
 template <class Rec>
-void Graph::retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id) {
+void Graph::unindex(Rec& rec, GrowArray<Rec>& recs) {
     auto& kindList = kindNodes_[rec.kind];
     const std::uint32_t moved = kindList.back();
     kindList[rec.slotInKind] = moved;
     recs[moved].slotInKind = rec.slotInKind;
     kindList.pop_back();
     rec.alive = false;
+}
+
+template <class Rec>
+void Graph::retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id) {
+    unindex(rec, recs);
     clearAttrBlock(rec.kind, rec.slot);
     if (rec.marks & kStyled) styles_.drop(styleLists[id]);
     rec.marks &= static_cast<std::uint8_t>(~kStyled);

@@ -64,12 +64,7 @@ void Graph::removeFace(FaceId f) {
         // Out of its kind's index and dead, but its attributes and styles
         // stay until the journal is kept (reviveFace brings it back).
         journal_->entries.push_back({GraphJournal::Op::FaceRemoved, f, capacities()});
-        auto& kindList = kindNodes_[rec.kind];
-        const std::uint32_t moved = kindList.back();
-        kindList[rec.slotInKind] = moved;
-        faces_[moved].slotInKind = rec.slotInKind;
-        kindList.pop_back();
-        rec.alive = false;
+        unindex(rec, faces_);
     } else {
         retire(rec, faces_, faceStyleList_, f);
     }
