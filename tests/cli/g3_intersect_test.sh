@@ -32,11 +32,20 @@ line() {   # line STEM NODES EDGES APPLICATIONS REJECTED [STEPS]
 }
 
 # A branch of radius 0.1 grown towards a wall: ending 0.01 from it, it is
-# refused (its cylinder reaches the wall); 0.2 from it, kept.
+# refused (its cylinder reaches the wall); 0.2 from it, kept. Its tip's
+# radius then swells to 0.5: the branch (the mean, 0.3) would reach the
+# wall, and the radius is put back; to 0.15 (the mean 0.125), it is kept.
 stats near "$dir/intersect_thick.g2d" -D gap=0.01
-line near 5 4 0 1
+line near 5 4 0 1 2
 stats clear "$dir/intersect_thick.g2d" -D gap=0.2
-line clear 6 5 1 0
+line clear 6 5 1 1 2
+stats swell "$dir/intersect_thick.g2d" -D gap=0.2 -D swell=0.15
+line swell 6 5 2 0 2
+python3 - i_clear.json i_swell.json <<'PY' || fail "wrong radii"
+import json, sys
+tips = [[v["radius"] for v in json.load(open(f))["nodes"] if v["kind"] == "N" and v["pos"][0] > 0.5] for f in sys.argv[1:]]
+assert tips == [[0.1], [0.15]], tips
+PY
 
 # Edit node: the stick whose drop would cross the bar is put back, the other drops.
 stats move "$dir/intersect_move.g2d"
