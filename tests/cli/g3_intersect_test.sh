@@ -76,7 +76,7 @@ PY
 
 # 2D: growth over a background face, refused only where it would cross the outline.
 stats plane "$dir/intersect_plane.g2d"
-line plane 7 6 2 2 4
+line plane 7 2 2 2 4
 python3 - i_plane.json <<'PY' || fail "wrong growth"
 import json, sys
 pos = [v["pos"] for v in json.load(open(sys.argv[1]))["nodes"] if v["kind"] == "N"]
