@@ -70,6 +70,7 @@ RuleFacts ruleFacts(const ir::Program& prog, const ir::Rule& r, const std::vecto
         if (prog.angleLayout) info.shapes.push_back(d.effects.shape);
     }
     info.intersect = r.intersect;
+    info.intersectInPlane = r.intersect && !prog.space3d;
     if ((r.merge || prog.mergeAll) && !r.intersect) {   // a command tests for intersection or merges (G^3 §4.3)
         if (!prog.mergeTolerance) info.mergeTolerance = rt::kDefaultMergeTolerance;
         else if (prog.mergeTolerance->op == ir::ExprOp::Literal) info.mergeTolerance = std::get<double>(prog.mergeTolerance->value);

@@ -79,9 +79,13 @@ private:
     void warnKeptFacesLosingCorners(const ir::Daughter& dg);
     void checkAutoPlacement(const ir::Daughter& dg);
 
-    // `intersect`: an application found to intersect is undone by removing
-    // what it added, so it may only add (G^3's Create edge and Create face).
+    // `intersect`: an application found to intersect is undone through the
+    // graph's journal (graph_journal.hpp), which restores positions, radii,
+    // edges' ends and faces' corners but not deletions or attributes: such a
+    // rule may add, move, rewire, `insert` and `split`, nothing else.
     void checkOnlyAdds();
+    // A new edge of no length beside a kept edge: every application undone.
+    void warnAlwaysIntersects(const ir::Daughter& d);
     void warnUnusedLets();
 
     Globals& g_;

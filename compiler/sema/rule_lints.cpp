@@ -78,25 +78,57 @@ void RuleChecker::checkOnlyAdds() {
     for (const auto& d : rule_.daughters) {
         std::string what;
         if (!d.deletedNodes.empty()) what = "deletes node `" + rule_.nodes[static_cast<std::size_t>(d.deletedNodes[0])].name + "`";
-        else if (!d.deletedEdges.empty()) what = "deletes an edge of the match";
+        else if (!d.deletedEdges.empty()) what = "deletes an edge of the match (to split an edge, keep it and rewire it: `s: m -[E]- b`)";
         else if (!d.deletedFaces.empty()) what = "deletes face `" + rule_.faces[static_cast<std::size_t>(d.deletedFaces[0])].name + "`";
-        else if (!d.inserts.empty()) what = "inserts a node into faces";
-        else if (!d.splits.empty()) what = "splits a face";
+        // Moves, radii, rewired edges, inserted corners and split faces are
+        // undone by the graph's journal (graph_journal.hpp); attributes,
+        // styles and deletions are not.
         for (const auto& n : d.nodes)
-            if (what.empty() && n.motherNode >= 0 && (n.position || n.radius || !n.assigns.empty() || !n.styles.empty()))
-                what = "changes node `" + n.name + "`";
+            if (what.empty() && n.motherNode >= 0 && (!n.assigns.empty() || !n.styles.empty()))
+                what = "sets attributes or styles of node `" + n.name + "`";
         for (const auto& e : d.edges)
-            if (what.empty() && e.motherEdge >= 0) {
-                if (ir::keptEdgeRewired(rule_, d, e) || !e.assigns.empty() || !e.styles.empty()) what = "changes edge `" + e.name + "`";
-            }
+            if (what.empty() && e.motherEdge >= 0 && (!e.assigns.empty() || !e.styles.empty()))
+                what = "sets attributes or styles of edge `" + e.name + "`";
         for (const auto& k : d.keptFaces)
             if (what.empty() && (!k.assigns.empty() || !k.styles.empty()))
-                what = "changes face `" + rule_.faces[static_cast<std::size_t>(k.motherFace)].name + "`";
+                what = "sets attributes or styles of face `" + rule_.faces[static_cast<std::size_t>(k.motherFace)].name + "`";
         if (!what.empty()) {
-            auto& diag = g_.diags.error(d.span, "a rule with `intersect` may only add elements (an application that would intersect "
-                                                "the model is undone), but this daughter " + what);
+            auto& diag = g_.diags.error(d.span, "a rule with `intersect` may add elements, move nodes, change radii, rewire "
+                                                "its edges, `insert` and `split` (an application that would intersect the model is "
+                                                "undone), but this daughter " + what);
             diag.notes.push_back({d_.name.span, "rule `" + rule_.name + "` has `intersect`"});
             return;
+        }
+        warnAlwaysIntersects(d);
+    }
+}
+
+void RuleChecker::warnAlwaysIntersects(const ir::Daughter& d) {
+    // A new edge from kept node k to a new node placed at `k.pos` has no
+    // length: it lies on every other edge at k (the shared node's contact is
+    // ignored, the rest of the new edge is that point), so the test refuses
+    // every application while k keeps an edge of the match.
+    if (d_.name.span.file != g_.mainFile) return;
+    for (const auto& e : d.edges) {
+        if (e.motherEdge >= 0 || e.src < 0 || e.dst < 0) continue;
+        for (const auto& [keptEnd, newEnd] : {std::pair{e.src, e.dst}, std::pair{e.dst, e.src}}) {
+            const auto& k = d.nodes[static_cast<std::size_t>(keptEnd)];
+            const auto& n = d.nodes[static_cast<std::size_t>(newEnd)];
+            if (k.motherNode < 0 || n.motherNode >= 0 || !n.position) continue;
+            const ir::Expr& at = *n.position;
+            const bool atK = at.op == ir::ExprOp::Fact && (at.fact == ir::ElemFact::Pos || at.fact == ir::ElemFact::Pos3) &&
+                             at.elem.cls == ElemClass::Node && at.elem.index == k.motherNode;
+            if (!atK) continue;
+            for (std::size_t i = 0; i < rule_.edges.size(); ++i) {
+                const auto& me = rule_.edges[i];
+                if (me.src == me.dst || (me.src != k.motherNode && me.dst != k.motherNode)) continue;
+                if (std::find(d.deletedEdges.begin(), d.deletedEdges.end(), static_cast<int>(i)) != d.deletedEdges.end()) continue;
+                auto& diag = g_.diags.warning(n.span, "node `" + n.name + "` is placed at `" + k.name + ".pos`, so the new edge between them has "
+                                                      "no length and lies on " + (me.name.empty() ? std::string("an edge of the match") : "edge `" + me.name + "`") +
+                                                      " at `" + k.name + "`: rule `" + rule_.name + "`'s intersection test undoes every application");
+                diag.notes.push_back({d_.name.span, "rule `" + rule_.name + "` has `intersect`"});
+                return;
+            }
         }
     }
 }

@@ -7,7 +7,7 @@ source "$(dirname "$0")/test_lib.sh"
 
 # Outputs and stats
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=2 -o k.svg --json k.json --stats --seed 9
-grep -qx '{"steps": 15, "nodes": 48, "edges": 48, "faces": 0, "seconds": [0-9.e-]*, "seed": 9, "stopped": "terminal", "applications": 15, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 15, "repairs_skipped": 0, "rejected_drawings": 0, "rejected_by_cost": 0, "rejected_splits": 0, "bends_reduced": 0, "faces_against_neighbours": 0, "inserts_without_side": 0, "compounds_without_instances": 0}' out.txt \
+grep -qx '{"steps": 15, "nodes": 48, "edges": 48, "faces": 0, "seconds": [0-9.e-]*, "seed": 9, "stopped": "terminal", "applications": 15, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 15, "repairs_skipped": 0, "rejected_drawings": 0, "rejected_by_cost": 0, "rejected_splits": 0, "bends_reduced": 0, "faces_against_neighbours": 0, "inserts_without_side": 0, "compounds_without_instances": 0, "rejected_intersections": 0}' out.txt \
   || fail "stats line: $(cat out.txt)"
 head -c 38 k.svg | grep -q '<?xml version="1.0" encoding="UTF-8"?>' || fail "SVG header"
 [ "$(grep -c '<line ' k.svg)" = 48 ] || fail "48 lines expected in k.svg"
@@ -122,11 +122,11 @@ grep -q 'note: wrote the graph of step 10000, the last completed (--keep-partial
 xmllint --noout spin.svg || fail "partial SVG is not well-formed"
 # --stats after a bound reports the completed steps, not zeros
 expect_code 1 "$g2d" run spin.g2d --no-svg --keep-partial --stats
-grep -qx '{"steps": 10000, "nodes": 1, "edges": 0, "faces": 0, "seconds": [0-9.e-]*, "seed": 1, "stopped": "default_step_limit", "applications": 10000, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 0, "repairs_skipped": 0, "rejected_drawings": 0, "rejected_by_cost": 0, "rejected_splits": 0, "bends_reduced": 0, "faces_against_neighbours": 0, "inserts_without_side": 0, "compounds_without_instances": 0}' out.txt \
+grep -qx '{"steps": 10000, "nodes": 1, "edges": 0, "faces": 0, "seconds": [0-9.e-]*, "seed": 1, "stopped": "default_step_limit", "applications": 10000, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 0, "repairs_skipped": 0, "rejected_drawings": 0, "rejected_by_cost": 0, "rejected_splits": 0, "bends_reduced": 0, "faces_against_neighbours": 0, "inserts_without_side": 0, "compounds_without_instances": 0, "rejected_intersections": 0}' out.txt \
   || fail "--stats at the default limit: $(cat out.txt)"
 grep -q '"seconds": 0,' out.txt && fail "--stats at the default limit: no time: $(cat out.txt)"
 expect_code 1 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=20 --max-elements 1000 --no-svg --keep-partial --stats
-grep -qx '{"steps": 166, "nodes": 501, "edges": 501, "faces": 0, "seconds": [0-9.e-]*, "seed": 1, "stopped": "element_limit", "applications": 166, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 166, "repairs_skipped": 0, "rejected_drawings": 0, "rejected_by_cost": 0, "rejected_splits": 0, "bends_reduced": 0, "faces_against_neighbours": 0, "inserts_without_side": 0, "compounds_without_instances": 0}' out.txt \
+grep -qx '{"steps": 166, "nodes": 501, "edges": 501, "faces": 0, "seconds": [0-9.e-]*, "seed": 1, "stopped": "element_limit", "applications": 166, "lookahead_guesses": 0, "lookahead_hits": 0, "repairs": 166, "repairs_skipped": 0, "rejected_drawings": 0, "rejected_by_cost": 0, "rejected_splits": 0, "bends_reduced": 0, "faces_against_neighbours": 0, "inserts_without_side": 0, "compounds_without_instances": 0, "rejected_intersections": 0}' out.txt \
   || fail "--stats at the element bound: $(cat out.txt)"
 
 # --timeout: a wall-time bound with the step it tripped at; a usage error unless positive

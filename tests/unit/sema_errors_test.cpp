@@ -483,3 +483,17 @@ TEST_CASE("for loops over a face's sides and corners: located errors", "[sema][f
         CHECK_FALSE(r.program.has_value());
     }
 }
+
+TEST_CASE("warnings: an `intersect` rule whose new edge has no length beside a kept edge", "[sema][warnings][intersect]") {
+    auto lines = [](const std::string& match, const std::string& produce) {
+        auto r = compile(prelude() + "rule Bud intersect { match { " + match + " } produce { " + produce + " } }\nsequence { Bud; }\n");
+        REQUIRE(r.program.has_value());
+        return g2d::test::diagnosticLines(r);
+    };
+    const std::string edge = "a: P; t: P; s: a -[E]-> t;";
+    CHECK(lines(edge, "s; c: P at t.pos; t -[E]-> c;") ==
+          std::vector<std::string>{"5:72: warning: node `c` is placed at `t.pos`, so the new edge between them has no length and lies "
+                                   "on edge `s` at `t`: rule `Bud`'s intersection test undoes every application"});
+    CHECK(lines(edge, "s; c: P at t.pos + (0, 1); t -[E]-> c;").empty());   // a length: tested as it comes
+    CHECK(lines("t: P;", "c: P at t.pos; t -[E]-> c;").empty());             // no edge of the match at `t` to lie on
+}

@@ -14,6 +14,7 @@ struct DerivationResult {
     long long rejectedByCost = 0;     // `layout angles` with a cost: proposals the Metropolis test refused (nothing applied)
     long long rejectedSplits = 0;     // `layout angles { connected = true; }`: proposals refused for splitting what they touch
     long long bendsReduced = 0;       // bent edges (edge_bends.hpp) whose bend was cut to keep the drawing planar
+    long long rejectedIntersections = 0;   // `intersect`: applications undone because they would intersect the model
     StopReason stopped = StopReason::Terminal;
     double seconds = 0;
     // Picks guessed a step ahead to prefetch their records (pick_lookahead.hpp), and the right guesses.

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "g2d/elem_class.hpp"
+#include "g2d/graph_journal.hpp"
 #include "g2d/grow_array.hpp"
 #include "g2d/prefetch.hpp"
 #include "g2d/style_store.hpp"
@@ -142,6 +143,7 @@ public:
     int nodeKind(NodeId n) const { return nodes_[n].kind; }
     vec2 pos(NodeId n) const { return nodes_[n].pos; }
     void setPos(NodeId n, vec2 p) {
+        if (journal_) [[unlikely]] journalNode(n);
         nodes_[n].pos = p;
         touchNode(n);
         if (faceCountAt(n) != 0) touchFacesAt(n);   // their geometry moved
@@ -159,10 +161,14 @@ public:
         setZ(n, p.z);
         setPos(n, vec2(p.x, p.y));
     }
-    void setZ(NodeId n, double z) { setColumn(z_, n, z); }
+    void setZ(NodeId n, double z) {
+        if (journal_) [[unlikely]] journalNode(n);
+        setColumn(z_, n, z);
+    }
     // G^3's node radius (3D grammars), in a column of its own like z.
     double radius(NodeId n) const { return n < radius_.size() ? radius_[n] : 0.0; }
     void setRadius(NodeId n, double r) {
+        if (journal_) [[unlikely]] journalNode(n);
         setColumn(radius_, n, r);
         touchNode(n);   // rules read it as a fact, as they read pos
     }
@@ -419,11 +425,27 @@ public:
     std::size_t changedNodeCount() const { return dirty_.size(); }
     void forgetChanges();
 
+    // An application that may be undone (graph_journal.hpp,
+    // graph_journal.cpp): from beginJournal on, changes to older elements
+    // are recorded in `j`; endJournal(true) undoes them and removes the new
+    // elements, restoring the graph as it was (change marks aside: what was
+    // undone counts as changed), endJournal(false) keeps them.
+    void beginJournal(GraphJournal& j);
+    void endJournal(bool undo);
+    const GraphJournal* journal() const { return journal_; }
+
     // Bytes held by the graph's own arrays (for the benchmarks).
     std::size_t memoryBytes() const;
 
 private:
     const ElementScope* scope_ = nullptr;
+    GraphJournal* journal_ = nullptr;
+    GraphJournal::Capacities capacities() const { return {nodes_.size(), edges_.size(), faces_.size()}; }
+    void journalNode(NodeId n);
+    void journalEdge(EdgeId e);
+    void removeNewSince(const GraphJournal::Capacities& at);
+    void revert(const GraphJournal::Entry& entry);
+    void reviveFace(FaceId f);
     struct NodeRec {                         // 48 bytes
         vec2 pos{0, 0};
         long long age = 0;
@@ -500,6 +522,9 @@ private:
     // fixing the moved element's place), dead, its attributes and styles dropped.
     template <class Rec>
     void retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id);
+    // Its first part: out of its kind's index (swap-remove) and dead.
+    template <class Rec>
+    void unindex(Rec& rec, GrowArray<Rec>& recs);
     NodeCorners& cornersAt(NodeId n);
     [[noreturn]] static void deadEndpoint();
 
@@ -541,13 +566,18 @@ private:
 };
 
 template <class Rec>
-void Graph::retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id) {
+void Graph::unindex(Rec& rec, GrowArray<Rec>& recs) {
     auto& kindList = kindNodes_[rec.kind];
     const std::uint32_t moved = kindList.back();
     kindList[rec.slotInKind] = moved;
     recs[moved].slotInKind = rec.slotInKind;
     kindList.pop_back();
     rec.alive = false;
+}
+
+template <class Rec>
+void Graph::retire(Rec& rec, GrowArray<Rec>& recs, GrowArray<std::uint32_t>& styleLists, std::uint32_t id) {
+    unindex(rec, recs);
     clearAttrBlock(rec.kind, rec.slot);
     if (rec.marks & kStyled) styles_.drop(styleLists[id]);
     rec.marks &= static_cast<std::uint8_t>(~kStyled);
@@ -624,6 +654,7 @@ void Graph::unlink(EdgeId e) {
 void Graph::removeEdge(EdgeId e) {
     auto& rec = edges_[e];
     if (!rec.alive) return;
+    if (journal_ && e < journal_->from[1]) [[unlikely]] journal_->lost = true;
     touchEdge(e);
     unlink(e);
     rec.alive = false;

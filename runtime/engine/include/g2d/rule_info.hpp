@@ -76,6 +76,9 @@ struct RuleInfo {
     // G^3's intersection tests (intersection_guard.hpp): an application
     // whose additions would intersect the model is undone.
     bool intersect = false;
+    // ... with the plane's tests (a 2D grammar): a face is an area, crossed
+    // by crossing its outline (intersection_guard.hpp).
+    bool intersectInPlane = false;
     // Per negative condition asking for a node near a point
     // (lower::nearNegative), in order: that node's kind. Their searches go
     // through RuleSet::nearQueries(), and repair revisits the matches whose
@@ -121,6 +124,7 @@ void eachRuleInfoField(Info& i, Visit&& visit) {
     visit("mergeTolerance", i.mergeTolerance);
     visit("globalMatches", i.globalMatches);
     visit("intersect", i.intersect);
+    visit("intersectInPlane", i.intersectInPlane);
     visit("nearKinds", i.nearKinds);
     visit("joinKinds", i.joinKinds);
     visit("shapes", i.shapes);

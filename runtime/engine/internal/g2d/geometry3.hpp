@@ -121,4 +121,27 @@ bool segmentPolygon(vec3 o0, vec3 o1, std::span<const vec3> polygon);
 // a polygon of three).
 bool polygonsIntersect(std::span<const vec3> p, std::span<const vec3> q);
 
+// --- Thick edges against faces, and the plane's tests (geometry3_more.cpp) ---
+
+// The distance between the closed segment o0o1 and the closed triangle
+// p0p1p2 (0 when they meet): the segment's ends against the triangle, and
+// the segment against its three sides, unless the segment crosses it.
+double segmentTriangleDistance(vec3 o0, vec3 o1, vec3 p0, vec3 p1, vec3 p2);
+
+// A thick edge (a cylinder of `radius` about o0o1, §16.8) against a face:
+// the open test of segmentPolygon, or, for radius > 0, the axis within
+// radius of the face's triangulation (closed, as edge against edge). An
+// edge with one end on a corner of the face (`shared`: 0 or 1, -1 for
+// none) touches it there, so only its far end is measured: the distance to
+// a convex piece grows along the edge from a point on it.
+bool thickSegmentPolygon(vec3 o0, vec3 o1, double radius, int shared, std::span<const vec3> polygon);
+
+// In the plane (a 2D grammar, §16.8), a face is an area and an element
+// intersects it by crossing its outline: the open segment has points both
+// strictly inside and strictly outside the polygon (z is ignored). Lying
+// inside it, along its sides or outside is not intersecting.
+bool segmentCrossesOutline(vec3 o0, vec3 o1, std::span<const vec3> polygon);
+// Some side of either crosses the other's outline (containment is nesting, not intersecting).
+bool outlinesCross(std::span<const vec3> p, std::span<const vec3> q);
+
 }  // namespace g2d::rt

@@ -14,21 +14,30 @@ bool isSide(const Graph& g, FaceId f, NodeId u, NodeId v) {
     return side;
 }
 
+template <class Ids>
+void sortUnique(Ids& ids) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
 }  // namespace
 
 IntersectionGuard::Shape IntersectionGuard::edgeShape(const Graph& g, EdgeId e) const {
     Shape s;
-    s.ends = {g.source(e), g.target(e)};
-    s.points = {g.pos3(s.ends[0]), g.pos3(s.ends[1])};
+    s.nodes = {g.source(e), g.target(e)};
+    s.points = {g.pos3(s.nodes[0]), g.pos3(s.nodes[1])};
     // Only edges without faces are thick (§3.2.1): the cylinder of the ends' mean radius.
-    if (g.sideFaceCount(s.ends[0], s.ends[1]) == 0) s.radius = (g.radius(s.ends[0]) + g.radius(s.ends[1])) / 2;
+    if (g.sideFaceCount(s.nodes[0], s.nodes[1]) == 0) s.radius = (g.radius(s.nodes[0]) + g.radius(s.nodes[1])) / 2;
     return s;
 }
 
 IntersectionGuard::Shape IntersectionGuard::faceShape(const Graph& g, FaceId f) const {
     Shape s;
     CornerId c = g.firstCorner(f);
-    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) s.points.push_back(g.pos3(g.cornerNode(c)));
+    for (int i = 0; i < g.cornerCount(f); ++i, c = g.nextCorner(c)) {
+        s.nodes.push_back(g.cornerNode(c));
+        s.points.push_back(g.pos3(s.nodes.back()));
+    }
     return s;
 }
 
@@ -52,23 +61,59 @@ void IntersectionGuard::begin(const Graph& g) {
         if (g.faceAlive(f)) faces_->insert(f, boxOf(faceShape(g, f)));
 }
 
-bool IntersectionGuard::crosses(const Graph& g, const Shape& s, bool isFace, std::uint32_t id, const Capacities& from) const {
+void IntersectionGuard::changed(const Graph& g, const GraphJournal& j, std::vector<EdgeId>& edges, std::vector<FaceId>& faces) const {
+    for (EdgeId e = static_cast<EdgeId>(j.from[1]); e < g.edgeCapacity(); ++e)
+        if (g.edgeAlive(e)) edges.push_back(e);
+    for (FaceId f = static_cast<FaceId>(j.from[2]); f < g.faceCapacity(); ++f)
+        if (g.faceAlive(f)) faces.push_back(f);
+    for (const GraphJournal::Entry& entry : j.entries) {
+        switch (entry.op) {
+        case GraphJournal::Op::Node:   // moved, or a new radius: its edges and faces
+            if (!g.nodeAlive(entry.id)) break;
+            for (EdgeId e : g.incident(entry.id)) edges.push_back(e);
+            for (CornerId c = g.firstCornerAt(entry.id); c != kNoId; c = g.nextCornerAt(c)) faces.push_back(g.cornerFace(c));
+            break;
+        case GraphJournal::Op::Edge:
+            if (g.edgeAlive(entry.id)) edges.push_back(entry.id);
+            break;
+        case GraphJournal::Op::Corner:
+            if (g.faceAlive(g.cornerFace(entry.id))) faces.push_back(g.cornerFace(entry.id));
+            break;
+        case GraphJournal::Op::FaceRemoved:
+            break;
+        }
+    }
+    sortUnique(edges);
+    sortUnique(faces);
+}
+
+bool IntersectionGuard::edgeMeetsFace(const Graph& g, const Shape& edge, FaceId f, const Shape& face) const {
+    if (isSide(g, f, edge.nodes[0], edge.nodes[1])) return false;
+    if (plane_) return segmentCrossesOutline(edge.points[0], edge.points[1], face.points);
+    const auto corner = [&](NodeId n) { return std::find(face.nodes.begin(), face.nodes.end(), n) != face.nodes.end(); };
+    const bool first = corner(edge.nodes[0]), second = corner(edge.nodes[1]);
+    if (first && second) return segmentPolygon(edge.points[0], edge.points[1], face.points);   // a chord
+    return thickSegmentPolygon(edge.points[0], edge.points[1], edge.radius, first ? 0 : second ? 1 : -1, face.points);
+}
+
+bool IntersectionGuard::crosses(const Graph& g, const Shape& s, bool isFace, std::uint32_t id,
+                                const GraphJournal::Capacities& from) const {
     const Aabb box = boxOf(s);
     std::vector<std::uint32_t> near;
     edges_->overlapping(box, near);
     for (EdgeId e : near) {
-        if (!g.edgeAlive(e) || (!isFace && e == id) || e >= from[1]) continue;   // this application's own are not indexed yet
+        if (!g.edgeAlive(e) || (!isFace && e == id) || e >= from[1]) continue;   // this application's new ones are not indexed yet
         const Shape o = edgeShape(g, e);
         if (isFace) {
-            if (!isSide(g, id, o.ends[0], o.ends[1]) && segmentPolygon(o.points[0], o.points[1], s.points)) return true;
+            if (edgeMeetsFace(g, o, id, s)) return true;
             continue;
         }
-        const int shared = (o.ends[0] == s.ends[0] || o.ends[0] == s.ends[1]) + (o.ends[1] == s.ends[0] || o.ends[1] == s.ends[1]);
+        const int shared = (o.nodes[0] == s.nodes[0] || o.nodes[0] == s.nodes[1]) + (o.nodes[1] == s.nodes[0] || o.nodes[1] == s.nodes[1]);
         const double h = s.radius + o.radius;
         if (shared == 2) continue;   // the same ends: no new geometry
         if (shared == 1) {
-            const NodeId at = (o.ends[0] == s.ends[0] || o.ends[0] == s.ends[1]) ? o.ends[0] : o.ends[1];
-            const vec3 a = g.pos3(s.ends[0] == at ? s.ends[1] : s.ends[0]), b = g.pos3(o.ends[0] == at ? o.ends[1] : o.ends[0]);
+            const NodeId at = (o.nodes[0] == s.nodes[0] || o.nodes[0] == s.nodes[1]) ? o.nodes[0] : o.nodes[1];
+            const vec3 a = g.pos3(s.nodes[0] == at ? s.nodes[1] : s.nodes[0]), b = g.pos3(o.nodes[0] == at ? o.nodes[1] : o.nodes[0]);
             if (segmentsIntersectSharing(g.pos3(at), a, b, h)) return true;
         } else if (segmentsIntersect(s.points[0], s.points[1], o.points[0], o.points[1], h)) {
             return true;
@@ -78,33 +123,36 @@ bool IntersectionGuard::crosses(const Graph& g, const Shape& s, bool isFace, std
     for (FaceId f : near) {
         if (!g.faceAlive(f) || (isFace && f == id) || f >= from[2]) continue;
         const Shape o = faceShape(g, f);
-        if (isFace ? polygonsIntersect(s.points, o.points)
-                   : !isSide(g, f, s.ends[0], s.ends[1]) && segmentPolygon(s.points[0], s.points[1], o.points))
+        if (!isFace ? edgeMeetsFace(g, s, f, o) : plane_ ? outlinesCross(s.points, o.points) : polygonsIntersect(s.points, o.points))
             return true;
     }
     return false;
 }
 
-bool IntersectionGuard::admit(Graph& g, const Capacities& from, const Capacities& to) {
+bool IntersectionGuard::admit(Graph& g) {
+    const GraphJournal& j = *g.journal();
+    const GraphJournal::Capacities from = j.from;
+    std::vector<EdgeId> edges;
+    std::vector<FaceId> faces;
+    changed(g, j, edges, faces);
+    // Older elements it changed are indexed where they are now (as well as
+    // where they were), so that they find each other.
+    for (EdgeId e : edges)
+        if (e < from[1]) edges_->insert(e, boxOf(edgeShape(g, e)));
+    for (FaceId f : faces)
+        if (f < from[2]) faces_->insert(f, boxOf(faceShape(g, f)));
     bool hit = false;
-    for (EdgeId e = static_cast<EdgeId>(from[1]); e < to[1] && !hit; ++e)
-        if (g.edgeAlive(e)) hit = crosses(g, edgeShape(g, e), false, e, from);
-    for (FaceId f = static_cast<FaceId>(from[2]); f < to[2] && !hit; ++f)
-        if (g.faceAlive(f)) hit = crosses(g, faceShape(g, f), true, f, from);
+    for (std::size_t i = 0; i < edges.size() && !hit; ++i) hit = crosses(g, edgeShape(g, edges[i]), false, edges[i], from);
+    for (std::size_t i = 0; i < faces.size() && !hit; ++i) hit = crosses(g, faceShape(g, faces[i]), true, faces[i], from);
+    g.endJournal(hit);
     if (hit) {
-        for (FaceId f = static_cast<FaceId>(from[2]); f < to[2]; ++f)
-            if (g.faceAlive(f)) g.removeFace(f);
-        for (EdgeId e = static_cast<EdgeId>(from[1]); e < to[1]; ++e)
-            if (g.edgeAlive(e)) g.removeEdge(e);
-        for (NodeId n = static_cast<NodeId>(from[0]); n < to[0]; ++n)
-            if (g.nodeAlive(n)) g.removeNode(n);
         ++cancelled_;
         return false;
     }
-    for (EdgeId e = static_cast<EdgeId>(from[1]); e < to[1]; ++e)
-        if (g.edgeAlive(e)) edges_->insert(e, boxOf(edgeShape(g, e)));
-    for (FaceId f = static_cast<FaceId>(from[2]); f < to[2]; ++f)
-        if (g.faceAlive(f)) faces_->insert(f, boxOf(faceShape(g, f)));
+    for (EdgeId e : edges)
+        if (e >= from[1]) edges_->insert(e, boxOf(edgeShape(g, e)));
+    for (FaceId f : faces)
+        if (f >= from[2]) faces_->insert(f, boxOf(faceShape(g, f)));
     return true;
 }
 

@@ -94,6 +94,7 @@ void Graph::dropEdgeExtras(EdgeRec& rec, EdgeId e) {
 void Graph::removeNode(NodeId n) {
     auto& rec = nodes_[n];
     if (!rec.alive) return;
+    if (journal_ && n < journal_->from[0]) journal_->lost = true;
     touchNode(n);
     removeFacesAt(n);
     while (rec.firstOut != kNoId) removeEdge(rec.firstOut);
@@ -106,6 +107,7 @@ void Graph::reconnectEdge(EdgeId e, NodeId src, NodeId dst) {
     auto& rec = edges_[e];
     if (!rec.alive || !nodeAlive(src) || !nodeAlive(dst)) throw std::logic_error("reconnecting a dead edge or to a dead node");
     if (rec.src == src && rec.dst == dst) return;
+    if (journal_) journalEdge(e);
     touchEdgeItself(e);
     unlink(e);
     rec.src = src;

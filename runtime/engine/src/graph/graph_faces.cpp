@@ -59,7 +59,15 @@ void Graph::removeFace(FaceId f) {
     if (trackNeighbours_) touchNeighbourAnchors(f);
     CornerId c = rec.firstCorner;
     for (std::uint32_t i = 0; i < rec.cornerCount; ++i, c = corners_[c].next) unlinkAtNode(c);
-    retire(rec, faces_, faceStyleList_, f);
+    const bool journaled = journal_ && f < journal_->from[2];
+    if (journaled) {
+        // Out of its kind's index and dead, but its attributes and styles
+        // stay until the journal is kept (reviveFace brings it back).
+        journal_->entries.push_back({GraphJournal::Op::FaceRemoved, f, capacities()});
+        unindex(rec, faces_);
+    } else {
+        retire(rec, faces_, faceStyleList_, f);
+    }
     if (f < faceHoles_.size()) faceHoles_[f].clear();
     touchFace(f);
     --liveFaces_;
@@ -82,6 +90,7 @@ void Graph::faceReshaped(FaceId f) {
 
 CornerId Graph::insertCornerAfter(CornerId c, NodeId m) {
     const auto id = static_cast<CornerId>(corners_.size());
+    if (journal_) journal_->entries.push_back({GraphJournal::Op::Corner, id, capacities()});
     const FaceId f = corners_[c].face;
     NodeCorners& at = cornersAt(m);
     const CornerId next = corners_[c].next;
@@ -107,6 +116,7 @@ void Graph::unlinkAtNode(CornerId c) {
 }
 
 void Graph::removeCorner(CornerId c) {
+    if (journal_) journal_->lost = true;
     CornerRec& cr = corners_[c];
     FaceRec& face = faces_[cr.face];
     if (trackNeighbours_) touchNeighbourAnchors(cr.face);   // those beside the old shape
@@ -119,6 +129,7 @@ void Graph::removeCorner(CornerId c) {
 }
 
 void Graph::moveCorner(CornerId c, NodeId n) {
+    if (journal_) journal_->lost = true;
     if (trackNeighbours_) touchNeighbourAnchors(corners_[c].face);
     unlinkAtNode(c);
     NodeCorners& at = cornersAt(n);

@@ -309,18 +309,24 @@ bool Scheduler::mayStep() {
 std::size_t Scheduler::applyCommand(std::size_t r, const MatchSet& set, long long step, const ElementScope* const* scopes) {
     try {
         if (!rules_.info(r).intersect) return parallel_.run(r, set, rules_, g_, rng_, step, tracer_, scopes);
-        // Each application's additions are tested as it is committed (before a compound records them).
-        IntersectionGuard guard;
+        // Each application runs under a journal and is tested as it is
+        // committed (before a compound records what it made).
+        IntersectionGuard guard(rules_.info(r).intersectInPlane);
         guard.begin(g_);
-        auto from = IntersectionGuard::capacities(g_);
+        GraphJournal journal;
+        struct Detach {   // however the step ends, the graph keeps no journal
+            Graph& g;
+            ~Detach() { g.endJournal(false); }
+        } detach{g_};
+        g_.beginJournal(journal);
         const std::function<void()> previous = rules_.appliedHook();
         AppliedHook hook(rules_, [&] {
-            const auto to = IntersectionGuard::capacities(g_);
-            guard.admit(g_, from, to);
-            from = to;
+            guard.admit(g_);
+            g_.beginJournal(journal);
             if (previous) previous();
         });
         const std::size_t applied = parallel_.run(r, set, rules_, g_, rng_, step, tracer_, scopes);
+        result_.rejectedIntersections += static_cast<long long>(guard.cancelled());
         return applied - guard.cancelled();
     } catch (const DeadlinePassed&) {
         throw timeLimit(limits_, step);

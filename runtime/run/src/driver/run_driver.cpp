@@ -15,6 +15,7 @@
 #include "g2d/image_links.hpp"
 #include "g2d/png_writer.hpp"
 #include "g2d/run_outputs.hpp"
+#include "g2d/run_stats.hpp"
 #include "g2d/seed_batch.hpp"
 #include "g2d/trace.hpp"
 #include "g2d/view_page.hpp"
@@ -293,17 +294,7 @@ int runGrammar(const RunRequest& request, GrammarRun& grammar) {
         if (mtlFile) mtlFile->commit();
         if (gltfFile) gltfFile->commit(glb);
         if (viewFile) viewFile->commit(viewPage);
-        if (request.stats)
-            std::printf("{\"steps\": %lld, \"nodes\": %zu, \"edges\": %zu, \"faces\": %zu, \"seconds\": %s, \"seed\": %llu, "
-                        "\"stopped\": \"%s\", \"applications\": %lld, \"lookahead_guesses\": %lld, \"lookahead_hits\": %lld, "
-                        "\"repairs\": %lld, \"repairs_skipped\": %lld, \"rejected_drawings\": %lld, \"rejected_by_cost\": %lld, \"rejected_splits\": %lld, "
-                        "\"bends_reduced\": %lld, \"faces_against_neighbours\": %lld, \"inserts_without_side\": %lld, "
-                        "\"compounds_without_instances\": %lld}\n",
-                        result.steps, graph.nodeCount(), graph.edgeCount(), graph.faceCount(), formatNumber(result.seconds).c_str(),
-                        static_cast<unsigned long long>(request.seed), stopped.c_str(), result.applications,
-                        result.lookaheadGuesses, result.lookaheadHits, result.setRepairs, result.setRepairsSkipped,
-                        result.rejectedDrawings, result.rejectedByCost, result.rejectedSplits, result.bendsReduced,
-                        result.facesAgainstNeighbours, result.insertsWithoutSide, result.compoundsWithoutInstances);
+        if (request.stats) std::fputs(runStatsLine(result, graph, request.seed, stopped).c_str(), stdout);
     } catch (const OutputError& e) {
         std::fprintf(stderr, "%s: error: %s\n", request.program.c_str(), e.what());
         return 1;
