@@ -103,7 +103,7 @@ std::string RewritePrinter::ringFace(const lower::CreateRingFace& o, const lower
                                : o.turnNode == 1 ? "T.v"
                                                  : "loopNodes_[std::size_t{lt} * " + str(l.localNodes) + " + " + str(o.turnNode - 2) + "]";
     out += b + "ringCorners_.push_back(" + corner + ");\n" + c + "}\n";
-    out += c + "const FaceId " + face(o.handle) + " = G.addFace(" + str(o.kind) + ", ringCorners_, step);\n" + c + "(void)" + face(o.handle) + ";\n";
+    out += c + "const FaceId " + face(o.handle) + " = addDaughterFace(G, " + str(o.kind) + ", ringCorners_, step, " + (o.orient ? "true" : "false") + ");\n" + c + "(void)" + face(o.handle) + ";\n";
     return out + record(o.kind, o.attrs, face(o.handle), ir::ElemClass::Face, c);
 }
 

@@ -201,7 +201,7 @@ void RewriteExecutor::apply(const std::vector<lower::CommitOp>& ops, rt::Match m
                        [&](const lower::CommitLoop& o) { commitLoop(p.loops[o.loop], loops[o.loop], g, step, p, loops); },
                        [&](const lower::CreateRingFace& o) {
                            ringCorners(o, p.loops[static_cast<std::size_t>(o.loop)], loops[static_cast<std::size_t>(o.loop)]);
-                           faces[o.handle] = g.addFace(o.kind, corners_, step);
+                           faces[o.handle] = rt::addDaughterFace(g, o.kind, corners_, step, o.orient);
                            for (const auto& w : o.attrs) g.initFaceAttr(faces[o.handle], w.attr, value(w.value));
                        },
                        [&](const lower::SplitFace& o) { split(p.splits[o.split], faces[o.face], registers, g, step, p, loops); },

@@ -287,7 +287,7 @@ private:
                 if (rf.loop != static_cast<int>(i)) continue;
                 const int h = static_cast<int>(d_.faces.size() + d_.keptFaces.size() + j);
                 const int turnNode = rf.corner.scope == ir::LoopNodeRef::Scope::Var ? rf.corner.index : 2 + rf.corner.index;
-                c.push_back(CreateRingFace{h, rf.kind, static_cast<int>(i), turnNode, rf.reversed, ringAttrs_[j]});
+                c.push_back(CreateRingFace{h, rf.kind, static_cast<int>(i), turnNode, rf.reversed, ringAttrs_[j], prog_.kinds[rf.kind].oriented});
                 for (const auto& [style, value] : ringStyles_[j]) c.push_back(SetFaceStyle{h, style, value, false});
             }
         }

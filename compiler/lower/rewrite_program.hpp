@@ -130,6 +130,7 @@ struct CreateRingFace {
     int loop, turnNode;
     bool reversed;
     std::vector<AttrWrite> attrs;
+    bool orient;   // the kind is `oriented` (rt::addDaughterFace)
 };
 struct SplitFace { int face; int split; };   // face handle; RewriteProgram::splits[split] (rt::splitFace)
 using CommitOp = std::variant<DeleteFace, DeleteEdge, BindNode, CreateNode, Rewire, DeleteNode, SetPos, SetRadius, SetNodeAttr,

@@ -7,6 +7,8 @@
 #   the triangles are turned: 0 counted, no side run the same way twice.
 # * tests/cli/silent_work.g2d: 4 inserts on a diagonal (and `g2d check`'s
 #   warning about them), 2 compounds without an instance.
+# * examples/extrude.g2d with its tops (faces over all turns) reversed:
+#   counted, and turned when their kind is oriented.
 # Usage: silent_counters_test.sh G2D SOURCE_DIR [COMPILED]   (COMPILED=no:
 # the interpreter only, as sanitized builds do)
 set -u
@@ -30,6 +32,10 @@ print(sum(1 for s in uses.values() for i in range(len(s)) for j in range(i + 1, 
 cp "$src/tests/cli/box_wrong_order.g2d" plain.g2d
 sed 's/^face F;/face F oriented;/' plain.g2d > oriented.g2d
 cp "$src/tests/cli/silent_work.g2d" work.g2d
+# examples/extrude.g2d, one storey, its tops over all turns written the wrong
+# way round: 3 tops against their walls (13 sides); `oriented` turns them.
+sed 's/param storeys: int = 3;/param storeys: int = 1;/; s/Top(all t);/Top(all t reversed);/' "$src/examples/extrude.g2d" > ring_plain.g2d
+sed 's/^face Top {/face Top oriented {/' ring_plain.g2d > ring_oriented.g2d
 check() {   # check NAME WANT_COUNTERS [WANT_SAME_WAY]
   local name=$1 want=$2 want_same=${3:-}
   expect_code 0 "$g2d" run "$name.g2d" --stats --json "i_$name.json" --no-svg --verify-matches
@@ -45,6 +51,8 @@ check() {   # check NAME WANT_COUNTERS [WANT_SAME_WAY]
 }
 check plain "4 0 0" 4
 check oriented "0 0 0" 0
+check ring_plain "3 0 0" 13
+check ring_oriented "0 0 0" 0
 check work "0 4 2"
 
 expect_code 0 "$g2d" check work.g2d
