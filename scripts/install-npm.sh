@@ -6,7 +6,7 @@
 # web/view/dist/view.bundle.js (and the 2D trace player's into
 # trace.bundle.js) for CMake to embed in the runtime, and
 # puppeteer-core, which drives chromium in tests/view. And the Khronos glTF
-# validator (tools/gltf-check), which the tests run on `--gltf` output. As
+# validator (tests/gltf-check), which the tests run on `--gltf` output. As
 # pinned by their package-lock.json files, without install scripts. Idempotent: does
 # nothing (and needs no network) when they are installed, the lock files have
 # not changed since and the bundle is newer than its sources. The editor
@@ -22,7 +22,7 @@ npm_ci() {  # npm ci in $1 unless its node_modules match its lock file
 }
 
 npm_ci "$root/editors/vscode"
-npm_ci "$root/tools/gltf-check"
+npm_ci "$root/tests/gltf-check"
 view="$root/web/view"
 npm_ci "$view"
 # Bundled again when the script, the package set or the build command changed.

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # The 3D exports (language.md §6): OBJ with normals and an MTL of the faces'
 # colours, OBJ as triangles, binary glTF checked by the Khronos validator
-# (tools/gltf-check); `g2d run` and a compiled program write the same bytes;
+# (tests/gltf-check); `g2d run` and a compiled program write the same bytes;
 # a face without triangles and an unwritable folder are clear errors that
 # leave no file.
 # Usage: exports_test.sh G2D SOURCE_DIR
 set -u
 g2d="$1"; src="$2"
 source "$(dirname "$0")/test_lib.sh"
-validate() { node "$src/tools/gltf-check/validate.js" "$@"; }
+validate() { node "$src/tests/gltf-check/validate.js" "$@"; }
 
 # glTF: valid for the validator (no error, no warning), 3D and 2D.
 for ex in g3_sofa g3_house g3_tree_box g3_windmill floor_plan; do
@@ -50,7 +50,7 @@ for a in plan["accessors"]:
 PY
 
 # three.js's GLTFLoader opens them: the house's seven face kinds as nodes, in order.
-node "$src/tools/gltf-check/three_load.mjs" i_g3_house.glb i_floor_plan.glb > three.txt || fail "three.js: $(cat three.txt)"
+node "$src/tests/gltf-check/three_load.mjs" i_g3_house.glb i_floor_plan.glb > three.txt || fail "three.js: $(cat three.txt)"
 grep -q '^i_g3_house.glb: Wall,Gable,Roof,Reveal,Frame,Glass,Leaf; [0-9]* meshes, [1-9][0-9]* triangles, 0 line sets$' three.txt \
   || fail "three.js: $(cat three.txt)"
 grep -q '^i_floor_plan.glb: Wall,Room,Yard; 3 meshes, 7 triangles, 1 line sets$' three.txt || fail "three.js: $(cat three.txt)"

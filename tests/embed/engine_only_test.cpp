@@ -56,7 +56,8 @@ void koch(const std::string& dir) {
           "koch: the SVG starts with its prolog and root element");
     write(dir + "/koch.svg", svg);
     write(dir + "/koch.json", g.json());
-    write(dir + "/koch.obj", g.obj());
+    write(dir + "/koch.obj", g.obj("koch.run.mtl"));
+    write(dir + "/koch.mtl", g.mtl());
 }
 
 // G^3's box (examples/g3_box.g2d): merged, a closed box of 8 corners in 3D.
@@ -84,7 +85,8 @@ void box(const std::string& dir) {
     }
     write(dir + "/box.svg", g.svg());
     write(dir + "/box.json", g.json());
-    write(dir + "/box.obj", g.obj());
+    write(dir + "/box.obj", g.obj("box.run.mtl"));
+    write(dir + "/box.mtl", g.mtl());
 }
 
 }  // namespace

@@ -62,10 +62,13 @@ public:
 
     // The outputs of `g2d run` with this seed and the same parameters, byte
     // for byte: the SVG (framed by the grammar's canvas, else fitted; a 3D
-    // model seen from g2d run's default view), the JSON, the OBJ.
+    // model seen from g2d run's default view), the JSON, the OBJ (naming
+    // its materials file `mtlName` when one is given, as `--obj` names the
+    // MTL it writes beside it) and that MTL.
     std::string svg();
     std::string json();
-    std::string obj();
+    std::string obj(const std::string& mtlName = {});
+    std::string mtl();
 
 private:
     std::unique_ptr<rt::GrammarRun> run_;

@@ -66,16 +66,22 @@ rt::Value Grammar::attribute(rt::ElemClass cls, std::uint32_t id, const std::str
 namespace {
 
 // One output of the last derivation, as g2d run writes it without options
-// (the SVG's viewBox: the canvas); `sink` says which.
+// (the SVG's viewBox: the canvas); `sink` says which. An OBJ names its MTL
+// `mtlName` when one is given; the MTL is written beside an OBJ (dropped).
 std::string lastOutput(rt::GrammarRun& run, const std::string& fileName, std::uint64_t seed, const rt::DerivationResult& last,
-                       rt::TextOut* rt::RunOutputs::*sink) {
-    rt::StringOut text;
+                       rt::TextOut* rt::RunOutputs::*sink, const std::string& mtlName = {}) {
+    rt::StringOut text, dropped;
     rt::RunOutputs out;
     out.grammarName = std::filesystem::path(fileName).filename().string();
     out.seed = seed;
     out.steps = last.steps;
     out.stopped = rt::stopName(last.stopped);
     out.svgOptions.viewBox = run.canvas();
+    if (!mtlName.empty() || sink == &rt::RunOutputs::mtl) {
+        out.obj = &dropped;
+        out.mtl = &dropped;
+        out.mtlName = mtlName;
+    }
     out.*sink = &text;
     rt::writeRunOutputs(run, out);
     return std::move(text.text());
@@ -85,6 +91,9 @@ std::string lastOutput(rt::GrammarRun& run, const std::string& fileName, std::ui
 
 std::string Grammar::svg() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::svg); }
 std::string Grammar::json() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::json); }
-std::string Grammar::obj() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::obj); }
+std::string Grammar::obj(const std::string& mtlName) {
+    return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::obj, mtlName);
+}
+std::string Grammar::mtl() { return lastOutput(*run_, fileName_, seed_, last_, &rt::RunOutputs::mtl); }
 
 }  // namespace g2d
