@@ -88,7 +88,7 @@ for entry in "${examples[@]}"; do
       stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" --no-svg --view "$work/$name-$seed.html" --stats)
       timeout 120 chromium --headless --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
         --host-resolver-rules="MAP * ~NOTFOUND" --hide-scrollbars --window-size=480,360 --virtual-time-budget=5000 \
-        --screenshot="$out/$name-$seed.png" "file://$work/$name-$seed.html" >/dev/null 2>&1
+        --screenshot="$out/$name-$seed.png" "file://$work/$name-$seed.html#hide=axes&panel=off" >/dev/null 2>&1
     else
       # Images embedded: librsvg reads no file outside the SVG's folder.
       stats=$(cd "$work" && "$g2d" run "$root/$file" --seed "$seed" -o "$work/$name-$seed.svg" --embed-images --stats)

@@ -124,6 +124,14 @@ check(!(await page.$eval("#show-edges", (b) => b.checked)) && (await page.evalua
 await page.reload({ waitUntil: "load" });
 check((await pixels("#d62728", "#1f77b4"))["#1f77b4"] === fanBare["#1f77b4"], "fan: a reload keeps edges and nodes hidden");
 
+// `panel=off` (the gallery's screenshots): the legend and its controls hidden,
+// and kept so when the view changes.
+await page.goto("about:blank");   // else a change of hash alone would not load the page again
+await open("fan.html", "#panel=off");
+check(await page.$eval("#legend", (l) => l.offsetParent === null), "fan: panel=off hides the legend");
+await key("e");
+check((await page.evaluate(() => location.hash)).includes("panel=off"), "fan: the hash keeps panel=off");
+
 // Views: the top view survives a reload (hash); a saved view comes back with V,
 // also on a fresh load of the page (localStorage).
 await open("house.html");

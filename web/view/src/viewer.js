@@ -238,7 +238,8 @@ export function createViewer({ panel, key }) {
   }
   function remember() {
     const hidden = PARTS.filter((p) => !groups[p].visible);
-    const hash = "#view=" + cameraState().join(",") + (hidden.length ? "&hide=" + hidden.join(",") : "");
+    const hash = "#view=" + cameraState().join(",") + (hidden.length ? "&hide=" + hidden.join(",") : "") +
+      (panel.hidden ? "&panel=off" : "");
     try {
       history.replaceState(null, "", hash);
     } catch (e) {
@@ -249,6 +250,8 @@ export function createViewer({ panel, key }) {
     const params = new URLSearchParams(location.hash.slice(1));
     const v = (params.get("view") || "").split(",").map(Number);
     for (const p of (params.get("hide") || "").split(",")) if (groups[p]) show(p, false, false);
+    // `panel=off`: the picture alone, for screenshots (scripts/gallery.sh).
+    panel.hidden = params.get("panel") === "off";
     return v.length === 6 && v.every(Number.isFinite) ? v : null;
   }
   const storeKey = "g2d-view:" + key;
