@@ -106,6 +106,11 @@ SPIN = ("node Point { v: float = 0; }\naxiom { a: Point at (0, 0); }\n"
         "rule Spin { match { p: Point; } produce { p { v = p.v + 1 }; } }\n")
 RUN_ERROR = ("param d: int = 0;\nnode Point { v: float = 0; }\naxiom { a: Point at (0, 0); }\nlimit 1;\n"
              "rule R { match { p: Point; } produce { p { v = 10 / d }; } }\n")
+# A step that never finishes: 2^59 function calls from step 4 on (tests/cli/run_command_test.sh).
+EXPO = ("node P { n: int = 0; }\nfn f0(x: int) -> int = x;\n"
+        + "".join(f"fn f{i}(x: int) -> int = f{i - 1}(x) + f{i - 1}(x) - x;\n" for i in range(1, 60))
+        + "axiom { a: P at (0, 0); }\nlimit 20;\n"
+        + "rule R { match { p: P; } produce { p at (p.n > 2 ? f59(1) : 0, 0) { n = p.n + 1 }; } }\n")
 BROKEN = original.replace("limit generations + 1;", "limit generations +;")
 assert BROKEN != original
 
@@ -174,6 +179,17 @@ try:
     t.join(30)
     check(slow.get("r", (0, {}))[0] == 409 and slow["r"][1]["status"] == "cancelled", f"the long run: {slow.get('r')}")
     check(status == 200 and quick["status"] == "ok" and time.monotonic() - began < 5, f"the newer run: {status}")
+
+    # ... even inside a step that never finishes (the run's deadline flag, raised early).
+    slow = {}
+    t = threading.Thread(target=lambda: slow.update(r=request(port, "POST", "/api/run", {"text": EXPO, "timeout": 30})))
+    began = time.monotonic()
+    t.start()
+    time.sleep(0.5)
+    status, quick = request(port, "POST", "/api/run", {"text": original})
+    t.join(30)
+    check(slow.get("r", (0, {}))[0] == 409 and status == 200 and time.monotonic() - began < 5,
+          f"a step cancelled inside: {slow.get('r')} {status} {time.monotonic() - began:.1f} s")
 
     # Imports: only the files the grammar imports (by name, never a path asked for).
     status, imports = request(port, "GET", "/api/imports")
