@@ -37,11 +37,13 @@ SaveResult EditedFile::save(const std::string& text, const std::string& expected
     std::lock_guard<std::mutex> lock(mutex_);
     SaveResult result;
     if (path_.empty()) {
+        result.outcome = SaveResult::Outcome::NoFile;
         result.error = "the studio was started without a file: start it as `g2d studio FILE` to save";
         return result;
     }
     const FileState now = read();
     if (now.version != expectedVersion) {
+        result.outcome = SaveResult::Outcome::Stale;
         result.version = now.version;
         result.error = "`" + path_ + "` changed on disk since version " + expectedVersion + " (now " + now.version +
                        "): reload it, or save again with the new version to overwrite";
@@ -55,7 +57,7 @@ SaveResult EditedFile::save(const std::string& text, const std::string& expected
         result.error = e.what();
         return result;
     }
-    result.saved = true;
+    result.outcome = SaveResult::Outcome::Saved;
     result.version = versionOf(text);
     return result;
 }

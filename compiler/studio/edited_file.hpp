@@ -16,7 +16,8 @@ struct FileState {
 };
 
 struct SaveResult {
-    bool saved = false;
+    enum class Outcome { Saved, Stale, NoFile, Failed };
+    Outcome outcome = Outcome::Failed;
     std::string version;   // the file's version after the save, or the one on disk that refused it
     std::string error;     // why it was not saved
 };

@@ -66,9 +66,10 @@ void addStudioRoutes(httplib::Server& server, StudioParts parts) {
         if (!(*body)["text"].is_string() || !(*body)["version"].is_string())
             return send(res, errorReply(400, "expected {\"text\": …, \"version\": …} (the version the text was loaded at)"));
         const SaveResult saved = parts.file.save((*body)["text"], (*body)["version"]);
-        if (saved.saved) return send(res, jsonReply(200, {{"status", "saved"}, {"version", saved.version}}));
-        const bool stale = saved.error.find("changed on disk") != std::string::npos;
-        send(res, jsonReply(stale ? 409 : 500, {{"status", "error"}, {"message", saved.error}, {"version", saved.version}}));
+        using Outcome = SaveResult::Outcome;
+        if (saved.outcome == Outcome::Saved) return send(res, jsonReply(200, {{"status", "saved"}, {"version", saved.version}}));
+        const int status = saved.outcome == Outcome::Stale ? 409 : saved.outcome == Outcome::NoFile ? 403 : 500;
+        send(res, jsonReply(status, {{"status", "error"}, {"message", saved.error}, {"version", saved.version}}));
     });
     server.Get("/api/imports", [parts](const httplib::Request&, httplib::Response& res) { send(res, parts.jobs.imports()); });
     server.Post("/api/check", [parts](const httplib::Request& req, httplib::Response& res) {
