@@ -17,6 +17,7 @@ namespace g2d::studio {
 namespace {
 
 constexpr double kMaxTimeoutSeconds = 60;
+constexpr std::uint64_t kMaxSteps = std::uint64_t{1} << 62;   // a long long, whatever the client sends
 
 // Thrown from the step observer when a newer request replaced this run.
 struct RunCancelled : std::runtime_error {
@@ -76,8 +77,8 @@ std::optional<RunInput> runInputOf(const nlohmann::json& request, std::string& w
         input.seed = request["seed"].get<std::uint64_t>();
     }
     if (request.contains("steps") && !request["steps"].is_null()) {
-        if (!request["steps"].is_number_unsigned()) {
-            why = "\"steps\" must be a whole number, 0 or more";
+        if (!request["steps"].is_number_unsigned() || request["steps"].get<std::uint64_t>() > kMaxSteps) {
+            why = "\"steps\" must be a whole number from 0 to " + std::to_string(kMaxSteps);
             return std::nullopt;
         }
         input.steps = request["steps"].get<long long>();

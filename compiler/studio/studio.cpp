@@ -1,6 +1,7 @@
 #include "studio/studio.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <httplib.h>
 
 #include "studio/edited_file.hpp"
@@ -12,6 +13,12 @@
 namespace g2d::studio {
 
 int runStudio(const StudioOptions& options) {
+    std::error_code error;
+    if (!options.file.empty() && std::filesystem::exists(options.file, error) &&
+        !std::filesystem::is_regular_file(options.file, error)) {
+        std::fprintf(stderr, "g2d studio: error: `%s` is not a file\n", options.file.c_str());
+        return 1;
+    }
     EditedFile file(options.file);
     FileWatch watch(file);
     GrammarJobs jobs(options.file);

@@ -13,7 +13,8 @@ struct StudioOptions {
     int port = 0;       // 0: any free port
 };
 
-// Returns the exit code: 0 after a signal, 1 when the port cannot be had.
+// Returns the exit code: 0 after a signal, 1 when the port cannot be had or
+// FILE is not a file (a folder).
 int runStudio(const StudioOptions& options);
 
 }  // namespace g2d::studio

@@ -187,6 +187,8 @@ try:
           and failed["location"]["line"] == 5 and failed["location"]["column"] == 48, f"run error: {status} {failed}")
     status, budget = request(port, "POST", "/api/run", {"text": SPIN, "steps": 10 ** 12, "timeout": 0.3})
     check(status == 422 and budget.get("stopped") == "time_limit", f"time budget: {status} {budget}")
+    status, _ = request(port, "POST", "/api/run", {"text": original, "steps": 2 ** 64 - 1})
+    check(status == 400, f"a step limit past a long long: {status}")
     status, bad = request(port, "POST", "/api/run", "{not json", headers={"Content-Type": "application/json"})
     check(status == 400, f"a body that is not JSON: {status}")
 
@@ -323,6 +325,10 @@ busy.listen()
 out = subprocess.run([G2D, "studio", NAME, "--port", str(busy.getsockname()[1])], cwd=work, capture_output=True, text=True, timeout=10)
 check(out.returncode == 1 and "cannot listen" in out.stderr and out.stdout == "", f"port in use: {out.returncode} {out.stderr}")
 busy.close()
+
+# A folder is not a file to edit.
+out = subprocess.run([G2D, "studio", ".", "--port", "0"], cwd=work, capture_output=True, text=True, timeout=10)
+check(out.returncode == 1 and "is not a file" in out.stderr and out.stdout == "", f"a folder: {out.returncode} {out.stderr}")
 
 if failures:
     print(f"{len(failures)} failures")
