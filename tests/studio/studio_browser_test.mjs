@@ -2,11 +2,12 @@
 // (web/view's devDependencies): it loads from the server alone (no network,
 // no script error, no CSP violation), shows the grammar's picture and the
 // run's counts; an edit that breaks the grammar shows the error at its line
-// and keeps the last good picture; an edit that mends it redraws. A
+// and keeps the last good picture; an edit that mends it redraws; Save
+// writes the file, and a change on disk reloads the page's text. A
 // screenshot is kept in ARTIFACTS.
 // Usage: node studio_browser_test.mjs G2D SOURCE_DIR ARTIFACTS
 import { spawn } from "node:child_process";
-import { copyFileSync, mkdirSync, mkdtempSync } from "node:fs";
+import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
 import { createRequire } from "node:module";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
@@ -71,6 +72,14 @@ try {
   await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("2 steps"), { timeout: 20000 });
   check((await page.$$eval("#diagnostics li", (l) => l.length)) === 0, "the diagnostics are cleared");
   check((await page.$eval("#picture", (p) => p.innerHTML)) !== before, "the picture is redrawn");
+
+  // Saved, then changed on disk by another editor: the page reloads the file and redraws.
+  await page.click("#save");
+  await page.waitForFunction(() => document.getElementById("status").textContent === "Saved", { timeout: 20000 });
+  check(readFileSync(join(work, "sierpinski.g2d"), "utf8").includes("int = 2"), "the save wrote the file");
+  writeFileSync(join(work, "sierpinski.g2d"), readFileSync(join(src, "examples/sierpinski.g2d"), "utf8").replace("int = 5", "int = 1"));
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("1 step,"), { timeout: 20000 });
+  check((await page.$eval("#editor", (e) => e.value)).includes("int = 1"), "the editor shows the file as changed on disk");
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);
 } finally {
   await browser.close();

@@ -51,7 +51,9 @@
       showPicture(data.svg);
       showDiagnostics(data.diagnostics, data.warning);
       const e = data.elements;
-      status.textContent = `${data.steps} steps, ${e.nodes} nodes, ${e.edges} edges, ${e.faces} faces, ${data.ms.toFixed(1)} ms`;
+      const counted = (n, noun) => `${n} ${noun}${n === 1 ? "" : "s"}`;
+      status.textContent = [counted(data.steps, "step"), counted(e.nodes, "node"), counted(e.edges, "edge"),
+                            counted(e.faces, "face"), `${data.ms.toFixed(1)} ms`].join(", ");
     } else {
       // The last good picture stays.
       const where = data.location ? `${data.location.line}:${data.location.column}: ` : "";
