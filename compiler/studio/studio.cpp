@@ -1,6 +1,9 @@
 #include "studio/studio.hpp"
 
+#include <atomic>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <httplib.h>
 
@@ -32,18 +35,21 @@ int runStudio(const StudioOptions& options) {
         std::fprintf(stderr, "g2d studio: error: cannot listen on %s:%d (in use?)\n", host, options.port);
         return 1;
     }
-    std::printf("http://%s:%d/\n", host, port);
-    std::fflush(stdout);
-
-    bool signalled = false;
+    std::atomic<bool> signalled{false}, listened{false};
     {
+        // Ready before the URL is printed: a client may signal as soon as it reads it.
         ShutdownSignal shutdown([&] {
             signalled = true;
             watch.stop();        // ends the event streams, which hold server threads
             jobs.cancelRuns();   // and the run in flight
+            // stop() does nothing before listening has begun.
+            while (!server.is_running() && !listened) std::this_thread::sleep_for(std::chrono::milliseconds(1));
             server.stop();
         });
+        std::printf("http://%s:%d/\n", host, port);
+        std::fflush(stdout);
         server.listen_after_bind();
+        listened = true;
     }
     std::fprintf(stderr, "g2d studio: %s\n", signalled ? "stopped" : "the server ended");
     return signalled ? 0 : 1;

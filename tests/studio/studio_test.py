@@ -318,6 +318,15 @@ finally:
     if proc.poll() is None:
         proc.kill()
 
+# A signal as soon as the URL is out (before the server has begun listening) still ends it.
+for _ in range(5):
+    proc, port = start([NAME], work)
+    code = stopped_by(proc, signal.SIGINT)
+    check(code == 0, f"exit code after an early SIGINT: {code}")
+    if code is None:
+        proc.kill()
+        break
+
 # A port in use: an error, exit 1.
 busy = socket.socket()
 busy.bind(("127.0.0.1", 0))
