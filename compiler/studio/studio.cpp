@@ -3,8 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <thread>
 #include <filesystem>
+#include <thread>
 #include <httplib.h>
 
 #include "studio/edited_file.hpp"

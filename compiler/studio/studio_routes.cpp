@@ -37,6 +37,9 @@ std::string sseEvent(const char* name, const FileChange& change) {
 
 void addStudioRoutes(httplib::Server& server, StudioParts parts) {
     server.set_payload_max_length(kMaxRequestBytes);
+    // No other site may embed an answer as a script, image or style (a GET without CORS), nor
+    // may the browser guess a type the studio did not say.
+    server.set_default_headers({{"Cross-Origin-Resource-Policy", "same-origin"}, {"X-Content-Type-Options", "nosniff"}});
     server.set_pre_routing_handler([parts](const httplib::Request& req, httplib::Response& res) {
         RequestHeaders headers{req.method, req.path, req.get_header_value("Host"), req.get_header_value("Origin"),
                                req.get_header_value("Content-Type"), req.has_header("Origin")};

@@ -141,6 +141,13 @@ try:
     # The page and its script, from the binary.
     status, page = request(port, "GET", "/")
     check(status == 200 and '<script src="/studio.js">' in page and 'id="editor"' in page, f"GET /: {status}")
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+    conn.request("GET", "/api/file")
+    res = conn.getresponse()
+    res.read()
+    check(res.getheader("Cross-Origin-Resource-Policy") == "same-origin" and res.getheader("X-Content-Type-Options") == "nosniff",
+          f"headers against embedding by other sites: {res.getheaders()}")
+    conn.close()
     status, script = request(port, "GET", "/studio.js")
     check(status == 200 and "/api/run" in script, f"GET /studio.js: {status}")
 
