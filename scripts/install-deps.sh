@@ -15,6 +15,7 @@ packages=(
   libxml2-utils
   librsvg2-dev libcairo2-dev
   libtinygltf-dev
+  libcpp-httplib-dev
   python3-networkx
   chromium
   ccache

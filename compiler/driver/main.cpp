@@ -11,6 +11,7 @@
 #include "driver/show_command.hpp"
 #include "g2d/run_options.hpp"
 #include "lsp/server.hpp"
+#include "studio/studio.hpp"
 
 #include <iostream>
 
@@ -44,6 +45,12 @@ int runCommandLine(int argc, char** argv) {
     auto* lsp = app.add_subcommand("lsp", "Serve the Language Server Protocol on stdin/stdout (for editors)");
     bool stdio = true;
     lsp->add_flag("--stdio", stdio, "Talk over stdin/stdout (the default and only transport)");
+
+    auto* studio = app.add_subcommand("studio", "Edit a grammar in the browser and watch its picture (a local server)");
+    g2d::studio::StudioOptions studioOptions;
+    studio->add_option("FILE", studioOptions.file, ".g2d grammar to edit (the only file the studio writes)");
+    studio->add_option("--port", studioOptions.port, "Port on 127.0.0.1 (0, the default: any free port)")
+        ->check(CLI::Range(0, 65535));
 
     auto* emitCpp = app.add_subcommand("emit-cpp", "Write the grammar as one C++ translation unit");
     g2d::BuildOptions emitOptions;
@@ -142,6 +149,7 @@ int runCommandLine(int argc, char** argv) {
         return g2d::lsp::runLanguageServer(std::cin, std::cout);
     }
     if (run->parsed()) return g2d::runRun(runRequest);
+    if (studio->parsed()) return g2d::studio::runStudio(studioOptions);
     return 2;
 }
 

@@ -29,6 +29,12 @@ inline void checkDeadline() {
     if (deadlineHasPassed()) detail::throwDeadlinePassed();
 }
 
+// Raises the flag now if a DeadlineWatch is watching: the derivation in
+// flight stops at its next check, as at its deadline (`g2d studio` cancels
+// a run that a newer edit replaces). Without a watch it does nothing, so no
+// raised flag is left for a later run's start.
+void interruptDerivation();
+
 // Raises the flag `seconds` from now unless destroyed first (which lowers it).
 class DeadlineWatch {
 public:

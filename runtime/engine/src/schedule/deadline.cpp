@@ -9,8 +9,22 @@ std::atomic<bool> deadlinePassed{false};
 void throwDeadlinePassed() { throw DeadlinePassed(); }
 }  // namespace detail
 
+namespace {
+std::mutex watching;   // held while a watch starts or ends, and while interrupting
+bool watched = false;
+}  // namespace
+
+void interruptDerivation() {
+    std::lock_guard<std::mutex> lock(watching);
+    if (watched) detail::deadlinePassed.store(true);
+}
+
 DeadlineWatch::DeadlineWatch(double seconds) {
-    detail::deadlinePassed.store(false);
+    {
+        std::lock_guard<std::mutex> lock(watching);
+        watched = true;
+        detail::deadlinePassed.store(false);
+    }
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     watcher_ = std::thread([this, until] {
         std::unique_lock<std::mutex> lock(mutex_);
@@ -25,6 +39,8 @@ DeadlineWatch::~DeadlineWatch() {
     }
     wake_.notify_all();
     watcher_.join();
+    std::lock_guard<std::mutex> lock(watching);
+    watched = false;
     detail::deadlinePassed.store(false);
 }
 

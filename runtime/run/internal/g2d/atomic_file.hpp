@@ -41,6 +41,11 @@ void releaseStaged(std::vector<StagedFile>& files);
 // over its target. Returns one text per file: "" or what went wrong.
 std::vector<std::string> placeStaged(const std::vector<StagedFile>& files);
 
+// Installs the signal handlers that remove temporary files now (else the
+// first AtomicFile does), so that a program handling SIGINT and SIGTERM
+// itself (`g2d studio`) can install its own after them.
+void installTempFileCleanup();
+
 class AtomicFile final : public TextOut {
 public:
     // Creates the temporary file now, so an unwritable target fails early.

@@ -54,6 +54,9 @@ struct ViewModel {
 ViewModel viewModelOf(const Graph& g, const std::vector<DrawItem>& items, const std::string& title,
                       const std::vector<std::string>& kindNames = {});
 
+// The model as the page's script reads it (also `g2d studio`'s 3D picture).
+std::string viewModelJson(const ViewModel& model);
+
 // The whole page. Numbers print as formatNumber does: the same model gives
 // the same bytes.
 std::string writeViewPage(const ViewModel& model);

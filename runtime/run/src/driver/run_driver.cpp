@@ -13,6 +13,7 @@
 #include "g2d/export_style.hpp"
 #include "g2d/gltf_writer.hpp"
 #include "g2d/image_links.hpp"
+#include "g2d/parameter_values.hpp"
 #include "g2d/png_writer.hpp"
 #include "g2d/run_outputs.hpp"
 #include "g2d/run_stats.hpp"
@@ -38,7 +39,8 @@ std::string trimmed(const std::string& s) {
     return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
 
-// Parameter values: defaults, then -D overrides. Returns an error message or "".
+}  // namespace
+
 std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vector<std::string>& defines,
                             std::vector<Value>& out) {
     for (const auto& p : specs) out.push_back(p.defaultValue);
@@ -71,6 +73,8 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
     }
     return "";
 }
+
+namespace {
 
 // Shows steps, elements and rate on a terminal, at most five times a second.
 class Progress {

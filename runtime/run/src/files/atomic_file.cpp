@@ -35,11 +35,7 @@ extern "C" void removeTempFilesAndDie(int sig) {
 }
 
 int registerTemp(const std::string& path) {
-    static const bool installed = [] {
-        for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, removeTempFilesAndDie);
-        return true;
-    }();
-    (void)installed;
+    installTempFileCleanup();
     if (path.size() >= sizeof tempPaths[0]) return -1;
     for (int i = 0; i < kSlots; ++i) {
         if (slotUsed[i].load()) continue;
@@ -49,6 +45,18 @@ int registerTemp(const std::string& path) {
     }
     return -1;
 }
+
+}  // namespace
+
+void installTempFileCleanup() {
+    static const bool installed = [] {
+        for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, removeTempFilesAndDie);
+        return true;
+    }();
+    (void)installed;
+}
+
+namespace {
 
 void unregisterTemp(int slot) {
     if (slot >= 0) slotUsed[slot].store(false);

@@ -70,7 +70,9 @@ private:
     std::vector<std::string> names_;
 };
 
-std::string modelJson(const ViewModel& m) {
+}  // namespace
+
+std::string viewModelJson(const ViewModel& m) {
     Palette colors;
     std::string nodes, edges, faces;
     for (const auto& n : m.nodes)
@@ -99,6 +101,8 @@ std::string modelJson(const ViewModel& m) {
     return "{\"title\":" + jsonString(m.title) + home + counts + ",\n\"colors\":" + colors.json() + ",\n\"nodes\":[" + nodes +
            "],\n\"edges\":[" + edges + "],\n\"faces\":[" + faces + "],\n\"faceAlphas\":[" + alphas + "]}";
 }
+
+namespace {
 
 std::string counted(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
@@ -196,7 +200,7 @@ std::string writeViewPage(const ViewModel& m) {
            "<small>Drag to turn, right-drag to pan, scroll to zoom; keys F, E, N, A, and R, 1, 2, 3, S, V "
            "as the buttons. Back sides are darker.</small>"
            "<span id=\"status\">This page needs JavaScript and WebGL.</span></div>\n";
-    out += "<script id=\"g2d-model\" type=\"application/json\">" + scriptSafe(modelJson(m)) + "</script>\n";
+    out += "<script id=\"g2d-model\" type=\"application/json\">" + scriptSafe(viewModelJson(m)) + "</script>\n";
     out += "<script>" + viewScript() + "</script>\n</body>\n</html>\n";
     return out;
 }

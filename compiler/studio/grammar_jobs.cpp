@@ -1,0 +1,47 @@
+#include "studio/grammar_jobs.hpp"
+
+#include <future>
+
+#include "g2d/deadline.hpp"
+#include "studio/grammar_check.hpp"
+
+namespace g2d::studio {
+
+GrammarJobs::~GrammarJobs() { cancelRuns(); }
+
+ApiReply GrammarJobs::onWorker(std::function<ApiReply()> job) {
+    auto done = std::make_shared<std::promise<ApiReply>>();
+    auto answer = done->get_future();
+    worker_.post([job = std::move(job), done] {
+        try {
+            done->set_value(job());
+        } catch (const std::exception& e) {   // a bug, not the grammar's fault: the server keeps running
+            done->set_value(errorReply(500, std::string("internal error: ") + e.what()));
+        }
+    });
+    return answer.get();
+}
+
+ApiReply GrammarJobs::check(const std::string& text) {
+    return onWorker([this, text] { return jsonReply(200, checkText(path_, text)); });
+}
+
+ApiReply GrammarJobs::imports() {
+    return onWorker([this] { return jsonReply(200, {{"files", importedFiles(path_)}}); });
+}
+
+ApiReply GrammarJobs::run(const RunInput& input) {
+    const std::uint64_t mine = ++latestRun_;
+    // Inside a long step only the deadline flag is seen; between steps, the observer.
+    rt::interruptDerivation();
+    return onWorker([this, input, mine] {
+        return deriveText(path_, input, [this, mine] { return latestRun_.load() != mine; });
+    });
+}
+
+void GrammarJobs::cancelRuns() {
+    ++latestRun_;
+    rt::interruptDerivation();
+}
+
+}  // namespace g2d::studio

@@ -1,0 +1,35 @@
+#pragma once
+// The studio's compiles and runs, one at a time on one worker thread. A new
+// run cancels the one in flight (and any still waiting): a page that sends
+// a run per edit never waits for a picture it no longer shows.
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+#include "studio/api_reply.hpp"
+#include "studio/grammar_derive.hpp"
+#include "studio/job_thread.hpp"
+
+namespace g2d::studio {
+
+class GrammarJobs {
+public:
+    explicit GrammarJobs(std::string path) : path_(std::move(path)) {}
+    ~GrammarJobs();   // cancels the run in flight
+
+    // Each blocks the calling (HTTP) thread until the worker has answered.
+    ApiReply check(const std::string& text);
+    ApiReply run(const RunInput& input);
+    ApiReply imports();
+
+    void cancelRuns();
+
+private:
+    ApiReply onWorker(std::function<ApiReply()> job);
+
+    std::string path_;
+    std::atomic<std::uint64_t> latestRun_{0};
+    JobThread worker_;   // last: joined first, while the rest still exists
+};
+
+}  // namespace g2d::studio

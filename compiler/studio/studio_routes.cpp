@@ -1,0 +1,111 @@
+#include "studio/studio_routes.hpp"
+
+#include <httplib.h>
+
+#include "studio/api_reply.hpp"
+#include "studio/edited_file.hpp"
+#include "studio/file_watch.hpp"
+#include "studio/grammar_jobs.hpp"
+#include "studio/request_guard.hpp"
+#include "studio/studio_page.hpp"
+
+namespace g2d::studio {
+
+namespace {
+
+void send(httplib::Response& res, const ApiReply& reply) {
+    res.status = reply.status;
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(reply.body, "application/json");
+}
+
+// The body as a JSON object, or a 400 already sent.
+std::optional<nlohmann::json> jsonBody(const httplib::Request& req, httplib::Response& res) {
+    auto body = nlohmann::json::parse(req.body, nullptr, false);
+    if (body.is_discarded() || !body.is_object()) {
+        send(res, errorReply(400, "the request body must be a JSON object"));
+        return std::nullopt;
+    }
+    return body;
+}
+
+std::string sseEvent(const char* name, const FileChange& change) {
+    return std::string("event: ") + name + "\ndata: " + nlohmann::json{{"version", change.version}}.dump() + "\n\n";
+}
+
+}  // namespace
+
+void addStudioRoutes(httplib::Server& server, StudioParts parts) {
+    server.set_payload_max_length(kMaxRequestBytes);
+    // No other site may embed an answer as a script, image or style (a GET without CORS), nor
+    // may the browser guess a type the studio did not say.
+    server.set_default_headers({{"Cross-Origin-Resource-Policy", "same-origin"}, {"X-Content-Type-Options", "nosniff"}});
+    server.set_pre_routing_handler([parts](const httplib::Request& req, httplib::Response& res) {
+        RequestHeaders headers{req.method, req.path, req.get_header_value("Host"), req.get_header_value("Origin"),
+                               req.get_header_value("Content-Type"), req.has_header("Origin")};
+        if (auto no = rejectRequest(headers, parts.port)) {
+            send(res, errorReply(no->status, no->reason));
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        return httplib::Server::HandlerResponse::Unhandled;
+    });
+
+    server.Get("/", [](const httplib::Request&, httplib::Response& res) {
+        res.set_header("Content-Security-Policy", studioPagePolicy());
+        res.set_content(studioPage(), "text/html; charset=utf-8");
+    });
+    server.Get("/studio.js", [](const httplib::Request&, httplib::Response& res) {
+        res.set_content(studioScript(), "text/javascript; charset=utf-8");
+    });
+
+    server.Get("/api/file", [parts](const httplib::Request&, httplib::Response& res) {
+        const FileState state = parts.file.read();
+        send(res, jsonReply(200, {{"path", parts.file.path()}, {"exists", state.exists}, {"text", state.text},
+                                  {"version", state.version}}));
+    });
+    server.Put("/api/file", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        if (!(*body)["text"].is_string() || !(*body)["version"].is_string())
+            return send(res, errorReply(400, "expected {\"text\": …, \"version\": …} (the version the text was loaded at)"));
+        const SaveResult saved = parts.file.save((*body)["text"], (*body)["version"]);
+        using Outcome = SaveResult::Outcome;
+        if (saved.outcome == Outcome::Saved) return send(res, jsonReply(200, {{"status", "saved"}, {"version", saved.version}}));
+        const int status = saved.outcome == Outcome::Stale ? 409 : saved.outcome == Outcome::NoFile ? 403 : 500;
+        send(res, jsonReply(status, {{"status", "error"}, {"message", saved.error}, {"version", saved.version}}));
+    });
+    server.Get("/api/imports", [parts](const httplib::Request&, httplib::Response& res) { send(res, parts.jobs.imports()); });
+    server.Post("/api/check", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        if (!(*body)["text"].is_string()) return send(res, errorReply(400, "expected {\"text\": …}"));
+        send(res, parts.jobs.check((*body)["text"]));
+    });
+    server.Post("/api/run", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        std::string why;
+        auto input = runInputOf(*body, why);
+        if (!input) return send(res, errorReply(400, why));
+        send(res, parts.jobs.run(*input));
+    });
+    server.Get("/api/events", [parts](const httplib::Request&, httplib::Response& res) {
+        res.set_header("Cache-Control", "no-store");
+        res.set_chunked_content_provider(
+            "text/event-stream", [parts, seen = parts.watch.latest(), sent = false](size_t, httplib::DataSink& sink) mutable {
+                if (!sent) {   // the version now (the watch may not have looked yet), so a page knows where it starts
+                    sent = true;
+                    const std::string hello = sseEvent("hello", {seen.number, parts.file.read().version});
+                    return sink.write(hello.data(), hello.size());
+                }
+                auto change = parts.watch.next(seen.number, std::chrono::seconds(10));
+                if (parts.watch.stopped()) return false;
+                // A comment line keeps the connection alive (and finds a closed one).
+                const std::string text = change ? sseEvent("file", *change) : std::string(": idle\n\n");
+                if (change) seen = *change;
+                return sink.write(text.data(), text.size());
+            });
+    });
+}
+
+}  // namespace g2d::studio
