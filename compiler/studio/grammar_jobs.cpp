@@ -39,6 +39,14 @@ ApiReply GrammarJobs::run(const RunInput& input) {
     });
 }
 
+ApiReply GrammarJobs::infer(const InferInput& input) {
+    const std::uint64_t mine = ++latestRun_;
+    rt::interruptDerivation();
+    return onWorker([this, input, mine] {
+        return inferExample(path_, input, [this, mine] { return latestRun_.load() != mine; });
+    });
+}
+
 void GrammarJobs::cancelRuns() {
     ++latestRun_;
     rt::interruptDerivation();

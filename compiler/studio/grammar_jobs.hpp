@@ -7,6 +7,7 @@
 #include <string>
 
 #include "studio/api_reply.hpp"
+#include "studio/example_inference.hpp"
 #include "studio/grammar_derive.hpp"
 #include "studio/job_thread.hpp"
 
@@ -21,6 +22,8 @@ public:
     ApiReply check(const std::string& text);
     ApiReply run(const RunInput& input);
     ApiReply imports();
+    // Infer mode: a run like any other, so a newer run or inference cancels it.
+    ApiReply infer(const InferInput& input);
 
     void cancelRuns();
 

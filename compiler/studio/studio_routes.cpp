@@ -89,6 +89,14 @@ void addStudioRoutes(httplib::Server& server, StudioParts parts) {
         if (!input) return send(res, errorReply(400, why));
         send(res, parts.jobs.run(*input));
     });
+    server.Post("/api/infer", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        std::string why;
+        auto input = inferInputOf(*body, why);
+        if (!input) return send(res, errorReply(400, why));
+        send(res, parts.jobs.infer(*input));
+    });
     server.Get("/api/events", [parts](const httplib::Request&, httplib::Response& res) {
         res.set_header("Cache-Control", "no-store");
         res.set_chunked_content_provider(

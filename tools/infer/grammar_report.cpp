@@ -9,13 +9,13 @@ std::string area(const LabelledExample& ex, int a) {
     return a < 0 ? std::string("none") : ex.shape.areas[static_cast<std::size_t>(a)].name;
 }
 
+}  // namespace
+
 std::string graphText(const LabelledExample& ex, const InferredGrammar& g, int graph) {
     const HierarchyGraph& h = g.hierarchy[static_cast<std::size_t>(graph)].graph;
     if (h.isEdgeGraph()) return "edge " + boundaryString(ex, h.boundary);
     return boundaryString(ex, h.boundary) + " (" + std::to_string(h.vertexCount()) + (h.vertexCount() == 1 ? " vertex)" : " vertices)");
 }
-
-}  // namespace
 
 InferenceCounts countInference(const LabelledExample& ex, const InferredGrammar& g) {
     InferenceCounts c;

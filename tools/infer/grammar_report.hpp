@@ -15,6 +15,8 @@ struct InferenceCounts {
 };
 
 InferenceCounts countInference(const LabelledExample& ex, const InferredGrammar& g);
+// A hierarchy graph as the rules are listed: "edge a" or its boundary string and vertex count.
+std::string graphText(const LabelledExample& ex, const InferredGrammar& g, int graph);
 std::string describeGrammar(const LabelledExample& ex, const InferredGrammar& g);
 // One JSON object (the counts and the time in milliseconds).
 std::string inferenceStatsJson(const InferenceCounts& c, double milliseconds);

@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "infer/label_colours.hpp"
 #include "infer/rule_pieces.hpp"
 #include "infer/rule_sides.hpp"
 
@@ -43,14 +44,6 @@ std::string quoted(const std::string& s) {
         out += c == '\n' || c == '\r' ? ' ' : c;
     }
     return out + "\"";
-}
-
-// Areas without a colour of their own: light, distinct, and the same for the same index every time.
-const char* const kPalette[] = {"#a6cee3", "#b2df8a", "#fb9a99", "#fdbf6f", "#cab2d6", "#ffff99", "#8dd3c7", "#bebada"};
-
-std::string areaColour(const LabelledExample& ex, int a) {
-    const std::string& own = ex.shape.areas[static_cast<std::size_t>(a)].color;
-    return own.empty() ? kPalette[static_cast<std::size_t>(a) % std::size(kPalette)] : own;
 }
 
 // The example's drawing: its bounding box, each side at least `least` (a straight line still has room across it).
@@ -205,7 +198,6 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
     const std::string width = num(roundSignificant(0.05 * typicalLength(ex.shape), 2));
     for (std::size_t i = 0; i < ex.labels.size(); ++i) {
         const EdgeLabel& l = ex.labels[i];
-        const std::string& colour = ex.shape.brushes[static_cast<std::size_t>(l.brush)].color;
         out += "edge E" + std::to_string(i) + " directed {\n    label: int = " + std::to_string(i) + ";\n";
         out += "    layout { angle = radians(" + exact(l.theta) + "); min_length = " + exact(l.minLength) + "; max_length = " + exact(l.maxLength) + ";";
         if (l.unit > 0) out += " unit = " + exact(l.unit) + ";";
@@ -213,7 +205,7 @@ std::string writeGrammar(const LabelledExample& ex, const InferredGrammar& gramm
             out += " bend = radians(" + exact(bend) + ");";
         if (l.left >= 0) out += " left = A" + std::to_string(l.left) + ";";
         if (l.right >= 0) out += " right = A" + std::to_string(l.right) + ";";
-        out += " }\n    style { stroke = " + quoted(colour.empty() ? "#202020" : colour) + "; stroke_width = " + width + "; }\n}\n";
+        out += " }\n    style { stroke = " + quoted(edgeColour(ex, static_cast<int>(i))) + "; stroke_width = " + width + "; }\n}\n";
     }
 
     out += "\n// Primitives (vertex stars): the half-edges counter-clockwise.\n";
