@@ -149,7 +149,7 @@ std::string primitiveSvg(const LabelledExample& ex, int primitive) {
 }
 
 std::string ruleSideSvg(const LabelledExample& ex, const RuleSide& side) {
-    if (side.primitive.empty()) return "";
+    if (side.primitive.empty() && side.edges.empty()) return "";
     const std::vector<double> lengths = meanLengths(ex);
     // Nodes: vertices k >= 0, interface nodes -1-k. Each edge from -> to points along its label's direction.
     std::map<int, std::vector<std::pair<int, Point>>> next;   // node -> (neighbour, offset to it)
@@ -162,7 +162,11 @@ std::string ruleSideSvg(const LabelledExample& ex, const RuleSide& side) {
     }
     std::map<int, Point> at;
     double right = 0;   // pieces side by side: each starts a unit right of the last
-    for (int start = 0; start < static_cast<int>(side.primitive.size()); ++start) {
+    std::vector<int> nodes;   // the vertices, then interface nodes (a side of edge graphs has only these)
+    for (int v = 0; v < static_cast<int>(side.primitive.size()); ++v) nodes.push_back(v);
+    for (const auto& [n, neighbours] : next)
+        if (n < 0) nodes.push_back(n);
+    for (int start : nodes) {
         if (at.count(start)) continue;
         const bool first = at.empty();
         std::vector<int> queue{start};

@@ -25,7 +25,7 @@ std::string primitiveSvg(const LabelledExample& ex, int primitive);
 
 // A rule side: its vertices placed along the edges' directions at the
 // example's mean length per label, the interface nodes as hollow dots.
-// Empty for a side with no vertex (a starter's right side).
+// Empty for a side with nothing (a starter's right side).
 std::string ruleSideSvg(const LabelledExample& ex, const RuleSide& side);
 
 }  // namespace g2d::infer
