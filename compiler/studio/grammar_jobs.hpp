@@ -20,11 +20,15 @@ public:
     // Each blocks the calling (HTTP) thread until the worker has answered.
     ApiReply check(const std::string& text);
     ApiReply run(const RunInput& input);
+    ApiReply exportFile(const RunInput& input, ExportFormat format);
+    ApiReply seeds(const RunInput& input, std::uint64_t first, int count, int width);
     ApiReply imports();
 
     void cancelRuns();
 
 private:
+    // Runs `job` as the newest run: a newer one cancels it.
+    ApiReply newestRun(std::function<ApiReply(const std::function<bool()>& cancelled)> job);
     ApiReply onWorker(std::function<ApiReply()> job);
 
     std::string path_;
