@@ -37,9 +37,13 @@ const std::string& studioPage() {
     return page;
 }
 
+// Framing: the page itself, and VS Code's studio panel (editors/vscode/studio_panel.js). There the
+// iframe's ancestors are the webview's frames (vscode-webview://…) and the workbench window
+// (vscode-file://vscode-app), and frame-ancestors checks every one. Web pages cannot have those
+// schemes, so no site can frame the studio.
 const char* studioPagePolicy() {
     return "default-src 'none'; script-src 'self'; connect-src 'self'; style-src 'unsafe-inline'; img-src 'self' data:; "
-           "base-uri 'none'; form-action 'none'; frame-ancestors 'self'";
+           "base-uri 'none'; form-action 'none'; frame-ancestors 'self' vscode-webview: vscode-file:";
 }
 
 }  // namespace g2d::studio
