@@ -16,6 +16,12 @@ const Module = require("module");
 
 const [g2d, src] = process.argv.slice(2).map((p) => path.resolve(p));
 const vscodeDir = path.join(src, "editors/vscode");
+// Every process the module starts, so that a failing check leaves no server behind.
+const childProcess = require("child_process");
+const spawned = [];
+const originalSpawn = childProcess.spawn;
+childProcess.spawn = (...args) => { const child = originalSpawn(...args); spawned.push(child); return child; };
+process.on("exit", () => spawned.forEach((child) => child.exitCode === null && child.signalCode === null && child.kill("SIGKILL")));
 const { startStudio, studioHtml, webviewOptions, studioOrigin } = require(path.join(vscodeDir, "studio_panel.js"));
 
 let failed = 0, passed = 0;

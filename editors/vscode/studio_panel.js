@@ -69,9 +69,11 @@ function studioOrigin(url) {
   return new URL(url).origin;
 }
 
-// Webview options: scripts on (the iframe inherits the webview's sandbox),
-// and the studio's port mapped to itself, as VS Code asks of any webview
-// that loads localhost content (through a tunnel when the extension runs remotely).
+// Webview options: scripts on (the iframe inherits the webview's sandbox);
+// the page kept while its tab is hidden (else the studio would reload and
+// lose its unsaved text); and the studio's port mapped to itself, as VS Code
+// asks of any webview that loads localhost content (through a tunnel when
+// the extension runs remotely).
 function webviewOptions(port) {
   return { enableScripts: true, retainContextWhenHidden: true, portMapping: [{ webviewPort: port, extensionHostPort: port }] };
 }
