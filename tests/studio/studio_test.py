@@ -145,6 +145,17 @@ try:
     # The page and its script, from the binary.
     status, page = request(port, "GET", "/")
     check(status == 200 and '<script src="/studio.js">' in page and 'id="editor"' in page, f"GET /: {status}")
+    # The page's policy, whole: its own script and connections only, and framed only by
+    # itself or VS Code's studio panel (the webview's frames and the workbench window).
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+    conn.request("GET", "/")
+    res = conn.getresponse()
+    res.read()
+    check(res.getheader("Content-Security-Policy") ==
+          "default-src 'none'; script-src 'self'; connect-src 'self'; style-src 'unsafe-inline'; img-src 'self' data: blob:; "
+          "base-uri 'none'; form-action 'none'; frame-ancestors 'self' vscode-webview: vscode-file:",
+          f"the page's Content-Security-Policy: {res.getheader('Content-Security-Policy')!r}")
+    conn.close()
     conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
     conn.request("GET", "/api/file")
     res = conn.getresponse()
