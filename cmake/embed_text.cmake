@@ -3,7 +3,8 @@
 # runtime/CMakeLists.txt). The text goes in raw string literals of under
 # 60,000 bytes each, joined at run time: no compiler limit on one literal
 # applies, and -Wpedantic stays quiet.
-# Usage: cmake -DINPUT=FILE -DOUTPUT=FILE.cpp -DNAME=function -DHEADER=g2d/x.hpp -P embed_text.cmake
+# Usage: cmake -DINPUT=FILE -DOUTPUT=FILE.cpp -DNAME=function -DHEADER=g2d/x.hpp [-DWHOLE_PAGE=ON] -P embed_text.cmake
+# WHOLE_PAGE: the text is a page served as it is (the studio's), not a script inlined in one.
 cmake_minimum_required(VERSION 3.25)
 file(READ "${INPUT}" text)
 set(delimiter "g2d_embed")
@@ -11,9 +12,13 @@ string(FIND "${text}" ")${delimiter}\"" clash)
 if(NOT clash EQUAL -1)
   message(FATAL_ERROR "${INPUT} contains )${delimiter}\": pick another delimiter in ${CMAKE_CURRENT_LIST_FILE}")
 endif()
-# The text is inlined in a <script> element: these would end it early.
+# A script is inlined in a <script> element: these would end it early.
 string(TOLOWER "${text}" lower)
-foreach(bad "</script" "<!--")
+set(inline_breakers "</script" "<!--")
+if(WHOLE_PAGE)
+  set(inline_breakers)
+endif()
+foreach(bad ${inline_breakers})
   string(FIND "${lower}" "${bad}" at)
   if(NOT at EQUAL -1)
     message(FATAL_ERROR "${INPUT} contains ${bad} at byte ${at}: it cannot be inlined in a <script> element")

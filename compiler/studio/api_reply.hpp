@@ -1,5 +1,6 @@
 #pragma once
-// An API answer: an HTTP status and a JSON body.
+// An API answer: an HTTP status and a body, JSON unless it is a file the
+// page downloads.
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -8,7 +9,8 @@ namespace g2d::studio {
 
 struct ApiReply {
     int status = 200;
-    std::string body;   // JSON
+    std::string body;   // JSON, or a file's bytes
+    std::string mediaType = "application/json";
 };
 
 inline ApiReply jsonReply(int status, const nlohmann::json& j) {

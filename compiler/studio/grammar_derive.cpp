@@ -3,175 +3,165 @@
 #include <chrono>
 #include <filesystem>
 
-#include "g2d/derive_grammar.hpp"
+#include "g2d/gltf_writer.hpp"
 #include "g2d/graph.hpp"
-#include "g2d/parameter_values.hpp"
-#include "g2d/projection.hpp"
+#include "g2d/image_links.hpp"
+#include "g2d/png_writer.hpp"
 #include "g2d/run_outputs.hpp"
 #include "g2d/view_page.hpp"
-#include "interp/interpreted_run.hpp"
-#include "studio/grammar_check.hpp"
+#include "studio/param_specs.hpp"
+#include "studio/studio_derivation.hpp"
 
 namespace g2d::studio {
 
 namespace {
 
-constexpr double kMaxTimeoutSeconds = 60;
-constexpr std::uint64_t kMaxSteps = std::uint64_t{1} << 62;   // a long long, whatever the client sends
+using Clock = std::chrono::steady_clock;
 
-// Thrown from the step observer when a newer request replaced this run.
-struct RunCancelled : std::runtime_error {
-    RunCancelled() : std::runtime_error("cancelled by a newer run") {}
-};
-
-// A parameter value as -D would spell it.
-std::optional<std::string> defineText(const nlohmann::json& v) {
-    if (v.is_string()) return v.get<std::string>();
-    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
-    if (v.is_number()) return v.dump();
-    if (v.is_array()) {
-        std::string out;
-        for (const auto& x : v) {
-            if (!x.is_number()) return std::nullopt;
-            out += (out.empty() ? "" : ",") + x.dump();
-        }
-        return out;
-    }
-    return std::nullopt;
+rt::RunOutputs outputsOf(const StudioDerivation& run, const RunInput& input) {
+    rt::RunOutputs outputs;
+    outputs.svgOptions.viewBox = run.derived.canvas;
+    outputs.grammarName = run.name;
+    outputs.seed = input.seed;
+    outputs.steps = run.derived.result.steps;
+    outputs.stopped = run.stopped;
+    return outputs;
 }
 
-nlohmann::json locationJson(const rt::SourceLocation& at) {
-    return {{"file", at.file}, {"line", at.line}, {"column", at.col}, {"end_column", at.endCol}};
+std::string svgOf(StudioDerivation& run, const RunInput& input) {
+    rt::StringOut svg;
+    rt::RunOutputs outputs = outputsOf(run, input);
+    outputs.svg = &svg;
+    rt::writeRunOutputs(*run.grammar, outputs);
+    return std::move(svg.text());
 }
 
-ApiReply cancelledReply() { return jsonReply(409, {{"status", "cancelled"}}); }
+nlohmann::json elementsJson(const rt::Graph& graph) {
+    return {{"nodes", graph.nodeCount()}, {"edges", graph.edgeCount()}, {"faces", graph.faceCount()}};
+}
+
+ApiReply outputError(const StudioDerivation& run, const std::exception& e) {
+    return jsonReply(422, {{"status", "error"}, {"message", e.what()}, {"diagnostics", run.diagnostics}});
+}
 
 }  // namespace
 
-std::optional<RunInput> runInputOf(const nlohmann::json& request, std::string& why) {
-    RunInput input;
-    if (!request.is_object() || !request.contains("text") || !request["text"].is_string()) {
-        why = "expected an object with the grammar as \"text\"";
-        return std::nullopt;
-    }
-    input.text = request["text"].get<std::string>();
-    if (request.contains("params")) {
-        if (!request["params"].is_object()) {
-            why = "\"params\" must be an object of parameter values";
-            return std::nullopt;
-        }
-        for (const auto& [name, value] : request["params"].items()) {
-            auto text = defineText(value);
-            if (!text) {
-                why = "parameter `" + name + "`: give a number, a string, true/false or a list of numbers";
-                return std::nullopt;
-            }
-            input.defines.push_back(name + "=" + *text);
-        }
-    }
-    if (request.contains("seed")) {
-        if (!request["seed"].is_number_unsigned()) {
-            why = "\"seed\" must be a whole number, 0 or more";
-            return std::nullopt;
-        }
-        input.seed = request["seed"].get<std::uint64_t>();
-    }
-    if (request.contains("steps") && !request["steps"].is_null()) {
-        if (!request["steps"].is_number_unsigned() || request["steps"].get<std::uint64_t>() > kMaxSteps) {
-            why = "\"steps\" must be a whole number from 0 to " + std::to_string(kMaxSteps);
-            return std::nullopt;
-        }
-        input.steps = request["steps"].get<long long>();
-    }
-    if (request.contains("timeout")) {
-        const auto& t = request["timeout"];
-        if (!t.is_number() || !(t.get<double>() > 0) || t.get<double>() > kMaxTimeoutSeconds) {
-            why = "\"timeout\" must be a number of seconds above 0, at most " + std::to_string(int(kMaxTimeoutSeconds));
-            return std::nullopt;
-        }
-        input.timeoutSeconds = t.get<double>();
-    }
-    return input;
-}
-
 ApiReply deriveText(const std::string& path, const RunInput& input, const std::function<bool()>& cancelled) {
-    if (cancelled()) return cancelledReply();
-    const auto started = std::chrono::steady_clock::now();
-    CompileResult compiled = compileText(path, input.text);
-    nlohmann::json diagnostics = diagnosticsJson(compiled);
-    if (!compiled.program) return jsonReply(422, {{"status", "invalid"}, {"diagnostics", diagnostics}});
-    interp::InterpretedRun grammar(*compiled.program, &compiled.sources);
-
-    std::vector<rt::Value> params;
-    if (std::string why = rt::parameterValues(grammar.params(), input.defines, params); !why.empty())
-        return errorReply(422, why);
-    rt::RunSettings settings;
-    settings.steps = input.steps;
-    settings.timeoutSeconds = input.timeoutSeconds;
-    rt::DerivedRun derived;
-    rt::RunProgress progress;
-    std::string stopped;
-    try {
-        rt::deriveGrammar(grammar, params, input.seed, settings, derived,
-                          [&](long long, const rt::Graph&) {
-                              if (cancelled()) throw RunCancelled();
-                          },
-                          &progress);
-        stopped = derived.hitDefaultLimit ? "default_step_limit" : rt::stopName(derived.result.stopped);
-    } catch (const std::exception& e) {
-        if (cancelled()) return cancelledReply();
-        nlohmann::json reply = {{"status", "error"}, {"diagnostics", diagnostics}};
-        if (const auto* runaway = dynamic_cast<const rt::RunawayError*>(&e)) {
-            reply["message"] = e.what();
-            reply["stopped"] = runaway->bound();
-        } else {
-            const std::string rule = grammar.currentRule();
-            reply["message"] = e.what() + (rule.empty() ? std::string(" (before the first step)")
-                                                        : " (in rule `" + rule + "`, step " + std::to_string(progress.step + 1) + ")");
-            if (auto at = grammar.locate(e)) reply["location"] = locationJson(*at);
-        }
-        return jsonReply(422, reply);
+    const auto started = Clock::now();
+    auto run = deriveForPage(path, input, cancelled);
+    if (run->failure) {
+        // The panel keeps its controls while a value is wrong or the run fails.
+        if (!run->failureBody || !run->grammar) return *run->failure;
+        (*run->failureBody)["params"] = paramSpecsJson(run->grammar->params());
+        return jsonReply(run->failure->status, *run->failureBody);
     }
-
-    const rt::Graph& graph = grammar.graph();
-    const std::string name = std::filesystem::path(path.empty() ? "untitled.g2d" : path).filename().string();
-    std::string model;
-    rt::StringOut svg;
+    auto& grammar = *run->grammar;
+    const bool space3d = grammar.jsonSchema().space3d;
+    std::string svg, model, trace;
     try {
-        rt::RunOutputs outputs;
-        outputs.svg = &svg;
-        outputs.svgOptions.viewBox = derived.canvas;
-        outputs.grammarName = name;
-        outputs.seed = input.seed;
-        outputs.steps = derived.result.steps;
-        outputs.stopped = stopped;
-        rt::writeRunOutputs(grammar, outputs);
-        if (grammar.jsonSchema().space3d) {
-            rt::ViewModel view = rt::viewModelOf(graph, grammar.drawItems(), name, grammar.jsonSchema().kindNames);
-            view.home = outputs.view.toward;
+        // A 3D picture is drawn by the viewer from the model: its SVG would go unseen.
+        if (space3d) {
+            rt::ViewModel view = rt::viewModelOf(grammar.graph(), grammar.drawItems(), run->name, grammar.jsonSchema().kindNames);
+            view.home = outputsOf(*run, input).view.toward;
             model = rt::viewModelJson(view);
+        } else {
+            svg = svgOf(*run, input);
         }
+        if (run->trace) trace = run->trace->json(run->name, input.seed, run->stopped);
     } catch (const std::exception& e) {
-        return jsonReply(422, {{"status", "error"}, {"message", e.what()}, {"diagnostics", diagnostics}});
+        return outputError(*run, e);
     }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     nlohmann::json reply = {
         {"status", "ok"},
-        {"space", grammar.jsonSchema().space3d ? "3d" : "2d"},
-        {"svg", std::move(svg.text())},
-        {"steps", derived.result.steps},
-        {"stopped", stopped},
-        {"elements", {{"nodes", graph.nodeCount()}, {"edges", graph.edgeCount()}, {"faces", graph.faceCount()}}},
-        {"ms", ms},
-        {"diagnostics", diagnostics},
+        {"space", space3d ? "3d" : "2d"},
+        {"params", paramSpecsJson(grammar.params())},
+        {"steps", run->derived.result.steps},
+        {"stopped", run->stopped},
+        {"elements", elementsJson(grammar.graph())},
+        {"ms", std::chrono::duration<double, std::milli>(Clock::now() - started).count()},
+        {"diagnostics", run->diagnostics},
     };
-    if (derived.hitDefaultLimit)
+    if (!space3d) reply["svg"] = std::move(svg);
+    if (run->derived.hitDefaultLimit)
         reply["warning"] = "stopped at the default limit of " + std::to_string(rt::kDefaultStepLimit) +
                            " steps: the grammar may not terminate (set `limit N;`)";
     ApiReply out = jsonReply(200, reply);
-    // The model is already JSON (the --view page's own): spliced in, not parsed again.
+    // The model and the trace are JSON already: spliced in, not parsed again.
     if (!model.empty()) out.body.insert(out.body.size() - 1, ",\"model\":" + model);
+    if (!trace.empty()) out.body.insert(out.body.size() - 1, ",\"trace\":" + trace);
     return out;
+}
+
+ApiReply exportText(const std::string& path, const RunInput& input, ExportFormat format,
+                    const std::function<bool()>& cancelled) {
+    auto run = deriveForPage(path, input, cancelled);
+    if (run->failure) return *run->failure;
+    auto& grammar = *run->grammar;
+    ApiReply out{200, "", exportMediaType(format)};
+    try {
+        rt::StringOut text, materials;
+        rt::RunOutputs outputs = outputsOf(*run, input);
+        switch (format) {
+            case ExportFormat::Svg: out.body = svgOf(*run, input); break;
+            case ExportFormat::Png: {
+                rt::PngOptions png;
+                png.baseFile = std::filesystem::absolute(path.empty() ? "untitled.g2d" : path).string();
+                out.body = rt::renderPng(svgOf(*run, input), png);
+                break;
+            }
+            case ExportFormat::Json: outputs.json = &text; break;
+            case ExportFormat::Obj:
+            case ExportFormat::Mtl:   // written together: the OBJ names its MTL, as `g2d run --obj NAME.obj` does
+                outputs.obj = format == ExportFormat::Obj ? &text : &materials;
+                outputs.mtl = format == ExportFormat::Obj ? &materials : &text;
+                outputs.mtlName = std::filesystem::path(run->name).stem().string() + ".mtl";
+                break;
+            case ExportFormat::Gltf:
+                out.body = rt::writeGltf(grammar.graph(), grammar.jsonSchema(),
+                                         [&](rt::ElemClass cls, std::uint32_t id, rt::DrawItem& it) { grammar.drawItem(cls, id, it); },
+                                         run->name);
+                break;
+        }
+        if (outputs.json || outputs.obj) {
+            rt::writeRunOutputs(grammar, outputs);
+            out.body = std::move(text.text());
+        }
+    } catch (const std::exception& e) {
+        return outputError(*run, e);
+    }
+    return out;
+}
+
+ApiReply seedSheet(const std::string& path, const RunInput& input, std::uint64_t first, int count, int width,
+                   const std::function<bool()>& cancelled) {
+    nlohmann::json sheet = nlohmann::json::array();
+    for (int i = 0; i < count; ++i) {
+        RunInput one = input;
+        one.seed = first + std::uint64_t(i);
+        one.trace = false;
+        auto run = deriveForPage(path, one, cancelled);
+        if (run->failure && run->failure->status == 409) return *run->failure;
+        if (run->failure && !run->failureBody) return *run->failure;
+        if (run->failure && (*run->failureBody)["status"] == "invalid") return *run->failure;   // no seed can do better
+        nlohmann::json cell = {{"seed", one.seed}};
+        if (run->failure) {
+            cell["message"] = (*run->failureBody)["message"];
+        } else {
+            try {
+                rt::PngOptions png;
+                png.width = width;
+                png.baseFile = std::filesystem::absolute(path.empty() ? "untitled.g2d" : path).string();
+                cell["png"] = "data:image/png;base64," + rt::base64(rt::renderPng(svgOf(*run, one), png));
+            } catch (const std::exception& e) {
+                cell["message"] = e.what();
+            }
+            cell["steps"] = run->derived.result.steps;
+            cell["stopped"] = run->stopped;
+            cell["elements"] = elementsJson(run->grammar->graph());
+        }
+        sheet.push_back(std::move(cell));
+    }
+    return jsonReply(200, {{"status", "ok"}, {"sheet", std::move(sheet)}});
 }
 
 }  // namespace g2d::studio

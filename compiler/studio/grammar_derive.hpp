@@ -1,37 +1,34 @@
 #pragma once
-// One run for the page: the text the page holds, compiled and derived by
-// the interpreter with the run's own bounds (steps, elements, time), and
-// its picture: the SVG (3D grammars drawn as `g2d run` draws them), and for
-// a 3D grammar also the --view page's model.
+// What the page gets of a run: its picture (2D: the SVG; 3D: the --view
+// page's model), its parameters, and on request its trace; a file to
+// download, made as `g2d run` makes it; or a sheet of small pictures, one
+// per seed.
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "studio/api_reply.hpp"
+#include "studio/run_request.hpp"
 
 namespace g2d::studio {
 
-struct RunInput {
-    std::string text;
-    std::vector<std::string> defines;   // NAME=VALUE, as -D takes them
-    std::uint64_t seed = 1;
-    std::optional<long long> steps;     // the step limit (else the grammar's)
-    double timeoutSeconds = 5;          // the time budget
-};
-
-// The request's JSON ({"text", "params": {name: value}, "seed", "steps",
-// "timeout"}) as a RunInput, or why it cannot be.
-std::optional<RunInput> runInputOf(const nlohmann::json& request, std::string& why);
-
-// Compiles and derives `input` as the file `path`. `cancelled` is asked after
-// every step; once it says yes, the run stops and the reply says "cancelled".
-// Answers: 200 {"status": "ok", "svg", "model" (3D), "steps", "stopped",
-// "elements": {nodes, edges, faces}, "ms", "diagnostics"}; 422 {"status":
-// "invalid", "diagnostics"} for a grammar with errors; 422 {"status":
-// "error", "message", "location"?, "stopped"?} for a run that failed;
-// 409 {"status": "cancelled"}.
+// 200 {"status": "ok", "space", "svg" (2D) | "model" (3D), "trace"?,
+// "params", "steps", "stopped", "elements": {nodes, edges, faces}, "ms",
+// "diagnostics", "warning"?}; 422 {"status": "invalid", "diagnostics"} for
+// a grammar with errors; 422 {"status": "error", "message", "location"?,
+// "stopped"?, "params"?} for a run that failed; 409 {"status": "cancelled"}.
+// `cancelled` is asked after every step.
 ApiReply deriveText(const std::string& path, const RunInput& input, const std::function<bool()>& cancelled);
+
+// The bytes `g2d run` would write for `format` (the SVG, the PNG, …), or a
+// 422 JSON answer saying why there are none.
+ApiReply exportText(const std::string& path, const RunInput& input, ExportFormat format,
+                    const std::function<bool()>& cancelled);
+
+// {"status": "ok", "sheet": [{"seed", "png" (a data: URL) | "message", "steps", "elements", "stopped"}]}
+// for seeds first, first+1, …: each a PNG `width` pixels wide. One failed
+// seed says why in its own cell.
+ApiReply seedSheet(const std::string& path, const RunInput& input, std::uint64_t first, int count, int width,
+                   const std::function<bool()>& cancelled);
 
 }  // namespace g2d::studio

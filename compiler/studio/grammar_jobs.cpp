@@ -30,12 +30,24 @@ ApiReply GrammarJobs::imports() {
     return onWorker([this] { return jsonReply(200, {{"files", importedFiles(path_)}}); });
 }
 
-ApiReply GrammarJobs::run(const RunInput& input) {
+ApiReply GrammarJobs::newestRun(std::function<ApiReply(const std::function<bool()>& cancelled)> job) {
     const std::uint64_t mine = ++latestRun_;
     // Inside a long step only the deadline flag is seen; between steps, the observer.
     rt::interruptDerivation();
-    return onWorker([this, input, mine] {
-        return deriveText(path_, input, [this, mine] { return latestRun_.load() != mine; });
+    return onWorker([this, job = std::move(job), mine] { return job([this, mine] { return latestRun_.load() != mine; }); });
+}
+
+ApiReply GrammarJobs::run(const RunInput& input) {
+    return newestRun([this, input](const auto& cancelled) { return deriveText(path_, input, cancelled); });
+}
+
+ApiReply GrammarJobs::exportFile(const RunInput& input, ExportFormat format) {
+    return newestRun([this, input, format](const auto& cancelled) { return exportText(path_, input, format, cancelled); });
+}
+
+ApiReply GrammarJobs::seeds(const RunInput& input, std::uint64_t first, int count, int width) {
+    return newestRun([this, input, first, count, width](const auto& cancelled) {
+        return seedSheet(path_, input, first, count, width, cancelled);
     });
 }
 

@@ -21,6 +21,8 @@ public:
     // Each blocks the calling (HTTP) thread until the worker has answered.
     ApiReply check(const std::string& text);
     ApiReply run(const RunInput& input);
+    ApiReply exportFile(const RunInput& input, ExportFormat format);
+    ApiReply seeds(const RunInput& input, std::uint64_t first, int count, int width);
     ApiReply imports();
     // Infer mode: a run like any other, so a newer run or inference cancels it.
     ApiReply infer(const InferInput& input);
@@ -28,6 +30,8 @@ public:
     void cancelRuns();
 
 private:
+    // Runs `job` as the newest run: a newer one cancels it.
+    ApiReply newestRun(std::function<ApiReply(const std::function<bool()>& cancelled)> job);
     ApiReply onWorker(std::function<ApiReply()> job);
 
     std::string path_;

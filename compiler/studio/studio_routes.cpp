@@ -16,7 +16,7 @@ namespace {
 void send(httplib::Response& res, const ApiReply& reply) {
     res.status = reply.status;
     res.set_header("Cache-Control", "no-store");
-    res.set_content(reply.body, "application/json");
+    res.set_content(reply.body, reply.mediaType);
 }
 
 // The body as a JSON object, or a 400 already sent.
@@ -28,6 +28,8 @@ std::optional<nlohmann::json> jsonBody(const httplib::Request& req, httplib::Res
     }
     return body;
 }
+
+constexpr std::uint64_t kMaxSheetSeeds = 64;
 
 std::string sseEvent(const char* name, const FileChange& change) {
     return std::string("event: ") + name + "\ndata: " + nlohmann::json{{"version", change.version}}.dump() + "\n\n";
@@ -88,6 +90,34 @@ void addStudioRoutes(httplib::Server& server, StudioParts parts) {
         auto input = runInputOf(*body, why);
         if (!input) return send(res, errorReply(400, why));
         send(res, parts.jobs.run(*input));
+    });
+    // A file to download, as `g2d run` writes it: {…the run's fields, "format": "svg" | "png" | …}.
+    server.Post("/api/export", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        std::string why;
+        auto input = runInputOf(*body, why);
+        if (!input) return send(res, errorReply(400, why));
+        auto format = exportFormatOf(body->value("format", ""));
+        if (!format) return send(res, errorReply(400, "\"format\" must be one of svg, png, json, obj, mtl, glb"));
+        send(res, parts.jobs.exportFile(*input, *format));
+    });
+    // Small pictures of the grammar for seeds first…first+count-1: {…the run's fields, "first", "count", "width"}.
+    server.Post("/api/seeds", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        std::string why;
+        auto input = runInputOf(*body, why);
+        if (!input) return send(res, errorReply(400, why));
+        const auto& first = (*body)["first"];
+        const auto& count = (*body)["count"];
+        const auto& width = (*body)["width"];
+        if (!first.is_number_unsigned()) return send(res, errorReply(400, "\"first\" must be a seed: a whole number, 0 or more"));
+        if (!count.is_number_unsigned() || count.get<std::uint64_t>() < 1 || count.get<std::uint64_t>() > kMaxSheetSeeds)
+            return send(res, errorReply(400, "\"count\" must be from 1 to " + std::to_string(kMaxSheetSeeds)));
+        if (!width.is_number_unsigned() || width.get<std::uint64_t>() < 16 || width.get<std::uint64_t>() > 1024)
+            return send(res, errorReply(400, "\"width\" must be from 16 to 1024 pixels"));
+        send(res, parts.jobs.seeds(*input, first.get<std::uint64_t>(), int(count.get<std::uint64_t>()), int(width.get<std::uint64_t>())));
     });
     server.Post("/api/infer", [parts](const httplib::Request& req, httplib::Response& res) {
         auto body = jsonBody(req, res);

@@ -89,6 +89,7 @@ async function main() {
   const fakeVscode = {
     workspace: { getConfiguration: () => ({ get: () => "/opt/g2d/bin/g2d" }) },
     window: { showErrorMessage: () => {} },
+    commands: { registerCommand: () => ({ dispose() {} }) },   // g2d.openStudio: editors/test/studio_panel_test.js
   };
   const originalLoad = Module._load;
   Module._load = function (request, parent, isMain) {

@@ -9,7 +9,7 @@ python3 - "$work/g2d.vsix" <<'PY'
 import json, sys, zipfile
 names = set(zipfile.ZipFile(sys.argv[1]).namelist())
 want = ["extension/package.json", "extension/extension.js", "extension/language-configuration.json",
-        "extension/syntaxes/g2d.tmLanguage.json", "extension/snippets/g2d.json",
+        "extension/syntaxes/g2d.tmLanguage.json", "extension/snippets/g2d.json", "extension/studio_panel.js",
         "extension/node_modules/vscode-languageclient/package.json"]
 missing = [w for w in want if w not in names]
 manifest = json.loads(zipfile.ZipFile(sys.argv[1]).read("extension/package.json"))

@@ -61,8 +61,12 @@ def request(port, method, path, body=None, headers=None, host=None):
         conn.putheader("Content-Length", str(len(data)))
     conn.endheaders(data)
     res = conn.getresponse()
-    text = res.read().decode()
+    data = res.read()
     conn.close()
+    try:
+        text = data.decode()
+    except UnicodeDecodeError:   # a PNG or a .glb
+        return res.status, data
     try:
         return res.status, json.loads(text)
     except ValueError:
@@ -141,6 +145,17 @@ try:
     # The page and its script, from the binary.
     status, page = request(port, "GET", "/")
     check(status == 200 and '<script src="/studio.js">' in page and 'id="editor"' in page, f"GET /: {status}")
+    # The page's policy, whole: its own script and connections only, and framed only by
+    # itself or VS Code's studio panel (the webview's frames and the workbench window).
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+    conn.request("GET", "/")
+    res = conn.getresponse()
+    res.read()
+    check(res.getheader("Content-Security-Policy") ==
+          "default-src 'none'; script-src 'self'; connect-src 'self'; style-src 'unsafe-inline'; img-src 'self' data: blob:; "
+          "base-uri 'none'; form-action 'none'; frame-ancestors 'self' vscode-webview: vscode-file:",
+          f"the page's Content-Security-Policy: {res.getheader('Content-Security-Policy')!r}")
+    conn.close()
     conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
     conn.request("GET", "/api/file")
     res = conn.getresponse()
@@ -180,11 +195,61 @@ try:
     status, bad_param = request(port, "POST", "/api/run", {"text": original, "params": {"generations": "many"}})
     check(status == 422 and "not a valid int" in bad_param["message"], f"a bad parameter: {status} {bad_param}")
 
-    # A 3D grammar: the SVG and the --view page's model.
+    # The parameters panel's specs come with every run.
+    check(run.get("params") == [{"name": "generations", "type": "int", "type_name": "int", "default": 5}],
+          f"run params: {run.get('params')}")
+    check(bad_param.get("params") == run.get("params"), f"a failed run still gives the params: {bad_param.get('params')}")
+
+    # A 3D grammar: the --view page's model, and no SVG (the page draws the model).
     box = open(os.path.join(SRC, "examples", "g3_box.g2d")).read()
     status, run3 = request(port, "POST", "/api/run", {"text": box})
-    check(status == 200 and run3["space"] == "3d" and run3["model"]["nodes"] and run3["svg"].lstrip().startswith("<"),
+    check(status == 200 and run3["space"] == "3d" and run3["model"]["nodes"] and "svg" not in run3,
           f"3D run: {status} {str(run3)[:200]}")
+
+    # Exports: the bytes `g2d run` writes for the same grammar, seed and parameters.
+    def cli_outputs(text, args, files):
+        folder = tempfile.mkdtemp(dir=other)
+        with open(os.path.join(folder, NAME), "w") as f:
+            f.write(text)
+        subprocess.run([G2D, "run", NAME, *args], cwd=folder, check=True, capture_output=True)
+        return {k: open(os.path.join(folder, v), "rb").read() for k, v in files.items()}
+    flat = cli_outputs(original, ["--seed", "3", "-D", "generations=3", "-o", "s.png", "--json", "s.json"],
+                       {"png": "s.png", "json": "s.json"})
+    solid = cli_outputs(box, ["--obj", "sierpinski.obj", "--gltf", "s.glb", "--no-svg"],
+                        {"obj": "sierpinski.obj", "mtl": "sierpinski.mtl", "glb": "s.glb"})
+    for fmt, text, args, want in [("svg", original, {"seed": 3, "params": {"generations": 3}}, cli_svg.encode()),
+                                  ("png", original, {"seed": 3, "params": {"generations": 3}}, flat["png"]),
+                                  ("json", original, {"seed": 3, "params": {"generations": 3}}, flat["json"]),
+                                  ("obj", box, {}, solid["obj"]), ("mtl", box, {}, solid["mtl"]), ("glb", box, {}, solid["glb"])]:
+        status, got = request(port, "POST", "/api/export", {"text": text, "format": fmt, **args})
+        if fmt == "json":   # parsed by request()
+            check(status == 200 and got == json.loads(want), f"export json: {status}")
+            continue
+        got = got if isinstance(got, bytes) else got.encode()
+        check(status == 200 and got == want, f"export {fmt}: {status}, {len(got)} bytes against {len(want)}")
+    status, nope = request(port, "POST", "/api/export", {"text": original, "format": "pdf"})
+    check(status == 400 and "format" in nope["message"], f"an unknown export format: {status} {nope}")
+    status, nope = request(port, "POST", "/api/export", {"text": BROKEN, "format": "svg"})
+    check(status == 422 and nope["status"] == "invalid", f"exporting a broken grammar: {status}")
+
+    # The trace for the player: what `g2d run --trace-json` writes.
+    traced = cli_outputs(original, ["--seed", "2", "--trace-json", "t.json", "--no-svg"], {"trace": "t.json"})
+    status, with_trace = request(port, "POST", "/api/run", {"text": original, "seed": 2, "trace": True})
+    check(status == 200 and with_trace.get("trace") == json.loads(traced["trace"]), f"the run's trace: {status}")
+    check("trace" not in run, "a run without \"trace\": true has none")
+
+    # The seeds sheet: one small PNG per seed, in order.
+    status, sheet = request(port, "POST", "/api/seeds", {"text": original, "first": 5, "count": 4, "width": 64})
+    cells = sheet.get("sheet", []) if isinstance(sheet, dict) else []
+    check(status == 200 and [c["seed"] for c in cells] == [5, 6, 7, 8]
+          and all(c["png"].startswith("data:image/png;base64,iVBORw0KGgo") and c["steps"] == 5 for c in cells),
+          f"seeds sheet: {status} {str(sheet)[:200]}")
+    for bad_sheet in [{"first": 1, "count": 0, "width": 64}, {"first": 1, "count": 65, "width": 64},
+                      {"first": -1, "count": 2, "width": 64}, {"first": 1, "count": 2, "width": 5000}]:
+        status, _ = request(port, "POST", "/api/seeds", {"text": original, **bad_sheet})
+        check(status == 400, f"a bad seeds request {bad_sheet}: {status}")
+    status, nope = request(port, "POST", "/api/seeds", {"text": BROKEN, "first": 1, "count": 2, "width": 64})
+    check(status == 422 and nope["status"] == "invalid", f"the seeds of a broken grammar: {status}")
 
     # A broken grammar and a run error answer in JSON; the server keeps running.
     status, invalid = request(port, "POST", "/api/run", {"text": BROKEN})

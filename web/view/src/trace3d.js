@@ -9,7 +9,8 @@ import { playerControls, traceFrames } from "./trace_state.js";
 
 const COLORS = { added: "#1a9e3a", deleted: "#d62728", matched: "#ff8c00", moved: "#1f77b4" };
 
-export function playTrace(trace, createViewer) {
+// `viewer` (viewer.js) draws the frames; the page gives it.
+export function playTrace(trace, viewer) {
   const frames = traceFrames(trace);
   const { stateAt, marks, frameCount, perFrame, steps, lo, hi } = frames;
   const diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
@@ -65,7 +66,6 @@ export function playTrace(trace, createViewer) {
     return model;
   }
 
-  const viewer = createViewer({ panel: document.getElementById("legend"), key: "trace:" + trace.grammar });
   function draw(frame) {
     const state = stateAt(frame), before = frame > 0 ? stateAt(frame - 1) : state, m = marks(frame);
     viewer.draw(modelOf(state, before, m));

@@ -97,7 +97,8 @@ export function traceFrames(trace) {
 }
 
 // The controls both pages have (#first, #prev, #play, #next, #last, #slider,
-// #position, #note; arrow keys): `draw(frame)` shows a frame. Returns `go`.
+// #position, #note; arrow keys): `draw(frame)` shows a frame. Returns `go`,
+// with `go.dispose()` to let the controls go.
 export function playerControls(frames, draw) {
   const { frameCount, perFrame, steps } = frames;
   const $ = (id) => document.getElementById(id);
@@ -111,7 +112,7 @@ export function playerControls(frames, draw) {
   const go = (f) => show(Math.max(0, Math.min(frameCount, f)));
   const slider = $("slider");
   slider.max = frameCount;
-  slider.addEventListener("input", () => show(Number(slider.value)));
+  slider.oninput = () => show(Number(slider.value));
   $("first").onclick = () => go(0);
   $("prev").onclick = () => go(current - 1);
   $("next").onclick = () => go(current + 1);
@@ -123,12 +124,19 @@ export function playerControls(frames, draw) {
     $("play").textContent = "Pause";
     timer = setInterval(() => (current >= frameCount ? stop() : go(current + 1)), Math.max(20, 4000 / Math.max(frameCount, 1)));
   };
-  document.addEventListener("keydown", (e) => {
+  // Arrows step unless something that takes text has the focus (the studio's editor).
+  const onKey = (e) => {
+    const t = e.target;
+    if (t instanceof HTMLInputElement && t.type !== "range" || t instanceof HTMLTextAreaElement ||
+        t instanceof HTMLElement && t.isContentEditable) return;
     if (e.key === "ArrowRight") go(current + 1);
     if (e.key === "ArrowLeft") go(current - 1);
-  });
-  if (perFrame > 1)
-    $("note").textContent = `This run has ${steps.length} steps: the timeline is thinned to ${frameCount} frames of ` +
-      `${perFrame} steps each (highlights show all of a frame's steps).`;
+  };
+  document.addEventListener("keydown", onKey);
+  $("note").textContent = perFrame > 1 ?
+    `This run has ${steps.length} steps: the timeline is thinned to ${frameCount} frames of ` +
+      `${perFrame} steps each (highlights show all of a frame's steps).` : "";
+  // For a page that plays one trace after another (the studio).
+  go.dispose = () => (stop(), document.removeEventListener("keydown", onKey));
   return go;
 }

@@ -22,7 +22,8 @@ try {
     // For tests and the curious: what was drawn.
     window.g2dView = { ...viewer.drawn, viewer };
   } else {
-    playTrace(JSON.parse(document.getElementById("trace").textContent), createViewer);
+    const trace = JSON.parse(document.getElementById("trace").textContent);
+    playTrace(trace, createViewer({ panel: document.getElementById("legend"), key: "trace:" + trace.grammar }));
   }
   if (status) status.textContent = "";
 } catch (e) {

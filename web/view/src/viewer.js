@@ -173,9 +173,11 @@ function dispose(group) {
 const PARTS = ["faces", "edges", "nodes", "axes"];
 const KEYS = { f: "faces", e: "edges", n: "nodes", a: "axes" };
 
-// A viewer in `document.body`, its controls added to `panel`. `key` names
-// the saved view in localStorage (the page's title).
-export function createViewer({ panel, key }) {
+// A viewer in `container` (the whole window when it is `document.body`),
+// its controls added to `panel`. `key` names the saved view in localStorage
+// (the page's title). `keepInHash`: the camera and hidden parts are kept in the
+// URL's hash (the --view page), not on a page with its own state (the studio).
+export function createViewer({ panel, key, container = document.body, keepInHash = true }) {
   const scene = new Scene();
   scene.background = new Color(0xffffff);
   const groups = {};
@@ -192,7 +194,7 @@ export function createViewer({ panel, key }) {
 
   const renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   renderer.setPixelRatio(window.devicePixelRatio || 1);
-  document.body.appendChild(renderer.domElement);
+  container.appendChild(renderer.domElement);
   const controls = new OrbitControls(camera, renderer.domElement);
 
   const center = new Vector3(), drawn = { triangles: 0, faces: 0, edges: 0, tubes: 0, nodes: 0 };
@@ -237,6 +239,7 @@ export function createViewer({ panel, key }) {
     render();
   }
   function remember() {
+    if (!keepInHash) return;
     const hidden = PARTS.filter((p) => !groups[p].visible);
     const hash = "#view=" + cameraState().join(",") + (hidden.length ? "&hide=" + hidden.join(",") : "") +
       (panel.hidden ? "&panel=off" : "");
@@ -247,6 +250,7 @@ export function createViewer({ panel, key }) {
     }
   }
   function fromHash() {
+    if (!keepInHash) return null;
     const params = new URLSearchParams(location.hash.slice(1));
     const v = (params.get("view") || "").split(",").map(Number);
     for (const p of (params.get("hide") || "").split(",")) if (groups[p]) show(p, false, false);
@@ -320,8 +324,12 @@ export function createViewer({ panel, key }) {
     if (keep) remember(), render();
   }
 
-  window.addEventListener("keydown", (e) => {
-    if (e.ctrlKey || e.metaKey || e.altKey || e.target instanceof HTMLInputElement && e.target.type === "range") return;
+  // Keys act on the picture only when nothing that takes text has the focus (the studio's editor).
+  const typing = (t) => t instanceof HTMLInputElement || t instanceof HTMLTextAreaElement || t instanceof HTMLSelectElement ||
+    (t instanceof HTMLElement && t.isContentEditable);
+  function onKey(e) {
+    if (e.ctrlKey || e.metaKey || e.altKey || typing(e.target) || !renderer.domElement.isConnected ||
+        renderer.domElement.offsetParent === null && container !== document.body) return;
     const k = e.key.toLowerCase();
     if (KEYS[k]) show(KEYS[k], !groups[KEYS[k]].visible);
     else if (k === "r") views.home();
@@ -330,20 +338,27 @@ export function createViewer({ panel, key }) {
     else if (k === "3") views.top();
     else if (k === "s") save();
     else if (k === "v") restore();
-  });
+  }
+  window.addEventListener("keydown", onKey);
   controls.addEventListener("change", render);
   controls.addEventListener("end", remember);
+  const whole = container === document.body;
   function resize() {
-    renderer.setSize(window.innerWidth, window.innerHeight);
-    camera.aspect = window.innerWidth / Math.max(window.innerHeight, 1);
+    const width = whole ? window.innerWidth : container.clientWidth, height = whole ? window.innerHeight : container.clientHeight;
+    if (width === 0 || height === 0) return;   // hidden: sized when shown
+    renderer.setSize(width, height);
+    camera.aspect = width / height;
     camera.updateProjectionMatrix();
     render();
   }
-  window.addEventListener("resize", resize);
+  const resizes = whole ? null : new ResizeObserver(resize);
+  if (resizes) resizes.observe(container);
+  else window.addEventListener("resize", resize);
 
   // What the camera frames: the box low..high ([x, y, z] each), first seen
-  // from `from` (z up), or as the hash says.
-  function frame(low, high, from) {
+  // from `from` (z up), or as the hash says. `keep`: the camera stays where
+  // the user put it (a redraw of an edited model); Home frames the new box.
+  function frame(low, high, from, keep = false) {
     const lo = new Vector3(...low), hi = new Vector3(...high);
     center.copy(lo).add(hi).multiplyScalar(0.5);
     radius = Math.max(hi.distanceTo(lo) / 2, 1e-6);
@@ -354,6 +369,7 @@ export function createViewer({ panel, key }) {
     resize();
     dispose(groups.axes);
     groups.axes.add(axes(radius * 0.5));
+    if (keep) return render();
     const v = fromHash();
     if (v) setCamera(v);
     else views.home();
@@ -394,5 +410,18 @@ export function createViewer({ panel, key }) {
   }
 
   const visible = () => Object.fromEntries(PARTS.map((p) => [p, groups[p].visible]));
-  return { draw, frame, bounds, render, views, show, visible, save, restore, drawn, camera: cameraState };
+  // Frees the GL context and the listeners (the studio makes viewers as grammars change space).
+  function destroy() {
+    window.removeEventListener("keydown", onKey);
+    if (resizes) resizes.disconnect();
+    else window.removeEventListener("resize", resize);
+    controls.dispose();
+    for (const part of PARTS) dispose(groups[part]);
+    renderer.dispose();
+    renderer.domElement.remove();
+    bar.remove(), buttons.remove();
+  }
+
+  return { draw, frame, bounds, render, views, show, visible, save, restore, drawn, camera: cameraState, destroy,
+           canvas: renderer.domElement };
 }

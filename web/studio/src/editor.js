@@ -1,0 +1,84 @@
+// The grammar's editor: CodeMirror 6 with g2d's highlighting, the checker's
+// diagnostics at their lines (@codemirror/lint), and completion of the
+// language's words and the names the text declares.
+import { autocompletion, completeFromList } from "@codemirror/autocomplete";
+import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
+import { bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from "@codemirror/language";
+import { lintGutter, setDiagnostics } from "@codemirror/lint";
+import { highlightSelectionMatches, searchKeymap } from "@codemirror/search";
+import { Annotation, EditorState } from "@codemirror/state";
+import { EditorView, drawSelection, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
+import { g2dLanguage, g2dWords } from "./g2d_language.js";
+
+// Marks a change made from the file on disk: not an edit of the user's.
+const fromFile = Annotation.define();
+
+// The names a text declares (kinds, enums, params, consts, functions, rules), for completion.
+function declaredNames(text) {
+  const names = new Set();
+  for (const m of text.matchAll(/\b(?:node|edge|face|enum|param|const|fn|rule|compound|sequence)\s+([A-Za-z_][A-Za-z0-9_]*)/g))
+    names.add(m[1]);
+  return [...names];
+}
+
+function completions(context) {
+  const word = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*/);
+  if (!word || (word.from === word.to && !context.explicit)) return null;
+  const options = [
+    ...declaredNames(context.state.doc.toString()).map((label) => ({ label, type: "variable" })),
+    ...g2dWords.keywords.map((label) => ({ label, type: "keyword" })),
+    ...g2dWords.builtins.map((label) => ({ label, type: "function" })),
+    ...g2dWords.types.map((label) => ({ label, type: "type" })),
+  ];
+  return completeFromList(options)(context);
+}
+
+// An editor in `parent`. `onEdit(text)` is called after every change of the text.
+export function createEditor(parent, { onEdit, onSave }) {
+  const view = new EditorView({
+    parent,
+    state: EditorState.create({
+      doc: "",
+      extensions: [
+        lineNumbers(), history(), drawSelection(), highlightActiveLine(), indentOnInput(), bracketMatching(),
+        highlightSelectionMatches(), lintGutter(), g2dLanguage, syntaxHighlighting(defaultHighlightStyle),
+        autocompletion({ override: [completions] }),
+        keymap.of([{ key: "Mod-s", run: () => (onSave(), true), preventDefault: true },
+                   indentWithTab, ...defaultKeymap, ...historyKeymap, ...searchKeymap]),
+        EditorView.updateListener.of((u) => {
+          if (u.docChanged && !u.transactions.every((t) => t.annotation(fromFile))) onEdit(view.state.doc.toString());
+        }),
+        EditorView.contentAttributes.of({ "aria-label": "Grammar" }),
+      ],
+    }),
+  });
+
+  // Diagnostics of `g2d check` (1-based lines and columns; `end_column` on
+  // `end_line`) at their places; those of imported files are not in this text.
+  function showDiagnostics(list, inThisText) {
+    const doc = view.state.doc;
+    const at = (line, column) => {
+      if (!(line >= 1)) return 0;
+      if (line > doc.lines) return doc.length;
+      const l = doc.line(line);
+      return Math.min(l.from + Math.max(column - 1, 0), l.to);
+    };
+    const marks = (list || []).filter(inThisText).map((d) => {
+      const from = at(d.line, d.column);
+      const to = Math.max(from, at(d.end_line || d.line, d.end_column || d.column));
+      const notes = (d.notes || []).map((n) => "\n" + (n.message || n)).join("");
+      return { from, to, severity: d.severity === "error" ? "error" : d.severity === "warning" ? "warning" : "info",
+               message: d.message + notes };
+    });
+    view.dispatch(setDiagnostics(view.state, marks));
+  }
+
+  return {
+    view,
+    text: () => view.state.doc.toString(),
+    setText(text) {
+      view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text }, annotations: fromFile.of(true) });
+    },
+    showDiagnostics,
+  };
+}

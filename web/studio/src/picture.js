@@ -1,0 +1,49 @@
+// The live picture: a 2D run's SVG, or a 3D run's model in the --view page's
+// viewer (web/view/src/viewer.js), whose camera stays where the user put it
+// from one redraw to the next. A drawing of more than LARGE elements is
+// shown as an image (rendered once by the browser, not as 10^5 DOM
+// elements), and the page says so.
+import { createViewer } from "../../view/src/viewer.js";
+
+const LARGE = 100000;
+
+export function createPicture({ flat, solid, panel, note }) {
+  let viewer = null, imageUrl = null;
+
+  function showSvg(svgText, elements) {
+    solid.hidden = true, flat.hidden = false, panel.hidden = true;
+    if (imageUrl) URL.revokeObjectURL(imageUrl), (imageUrl = null);
+    const count = elements.nodes + elements.edges + elements.faces;
+    if (count > LARGE) {
+      imageUrl = URL.createObjectURL(new Blob([svgText], { type: "image/svg+xml" }));
+      const img = Object.assign(document.createElement("img"), { src: imageUrl, alt: "The derived drawing" });
+      flat.replaceChildren(img);
+      note.textContent = `${count} elements: shown as an image, so the page stays quick (export the SVG for the drawing itself).`;
+      return;
+    }
+    const doc = new DOMParser().parseFromString(svgText, "image/svg+xml");
+    const svg = doc.documentElement;
+    if (svg.nodeName !== "svg") throw new Error("the run's SVG could not be read");
+    flat.replaceChildren(document.importNode(svg, true));
+    note.textContent = "";
+  }
+
+  function showModel(model) {
+    flat.hidden = true, solid.hidden = false, panel.hidden = false;
+    const first = !viewer;
+    if (first) viewer = createViewer({ panel, key: "studio", container: solid, keepInHash: false });
+    viewer.draw(model);
+    const { lo, hi } = viewer.bounds(model);
+    viewer.frame(lo, hi, model.home, !first);
+    note.textContent = "";
+  }
+
+  return {
+    // A run's answer (200 from /api/run).
+    show(data) {
+      if (data.space === "3d") showModel(data.model);
+      else showSvg(data.svg, data.elements);
+    },
+    viewer: () => viewer,
+  };
+}

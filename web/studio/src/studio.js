@@ -1,0 +1,130 @@
+// The page of `g2d studio` (compiler/studio/): the grammar in an editor,
+// re-derived on every edit and drawn at once; the parameters panel; the
+// derivation player; the seeds sheet; infer mode; export buttons. All
+// through the studio's JSON API: a newer run cancels the older one on the
+// server, and an answer the page no longer wants is dropped. An error keeps
+// the last good picture. Saves send the version the text was loaded at; a
+// change on disk reloads a text the user has not edited.
+import { api } from "./api.js";
+import { createEditor } from "./editor.js";
+import { createExports } from "./exports.js";
+import { createParamsPanel } from "./params_panel.js";
+import { createPicture } from "./picture.js";
+import { createPlayer } from "./player.js";
+import { createSeedsSheet } from "./seeds_sheet.js";
+import { createTabs } from "./tabs.js";
+
+const $ = (id) => document.getElementById(id);
+const statusLine = $("status"), list = $("diagnostics");
+let path = "", version = "none", dirty = false, asked = 0, editedAt = null;
+// For tests and the benchmark: what the page has drawn, and when.
+const studio = (window.g2dStudio = { runs: 0, draws: 0, last: null, errors: 0 });
+
+const say = (text) => (statusLine.textContent = text);
+const counted = (n, noun) => `${n} ${noun}${n === 1 ? "" : "s"}`;
+
+const editor = createEditor($("editor"), { onEdit: edited, onSave: save });
+const params = createParamsPanel($("params"), () => run());
+const picture = createPicture({ flat: $("flat"), solid: $("solid"), panel: $("view-panel"), note: $("picture-note") });
+const player = createPlayer({ stage: $("stage"), solid: $("player-solid"), panel: $("player-panel"), info: $("info") });
+const request = () => ({ text: editor.text(), ...params.request() });
+const stem = () => (path.split("/").pop() || "untitled.g2d").replace(/\.g2d$/, "") + "-seed" + params.request().seed;
+const sheet = createSeedsSheet($("seeds-pane"), { api, request, status: say, takeSeed: (seed) => (tabs.open("picture"), params.setSeed(seed)) });
+createExports($("exports"), { api, request, stem, status: say });
+const tabs = createTabs({
+  picture: () => {},
+  player: () => play(),
+  seeds: () => sheet.fill(),
+});
+
+// A diagnostic of this text is shown at its line; one of an imported file only in the list.
+const inThisText = (d) => !d.file || d.file === path || (!path && d.file.endsWith("untitled.g2d"));
+
+function showDiagnostics(diagnostics, extra) {
+  editor.showDiagnostics(diagnostics, inThisText);
+  list.replaceChildren();
+  const item = (cls, text) => list.append(Object.assign(document.createElement("li"), { className: cls, textContent: text }));
+  for (const d of diagnostics || [])
+    item(d.severity, `${inThisText(d) ? "" : (d.file || "").split("/").pop() + ":"}${d.line}:${d.column}: ${d.severity}: ${d.message}`);
+  if (extra) item("error", extra);
+}
+
+async function run() {
+  const mine = ++asked;
+  studio.runs++;
+  const { status: code, data } = await api("POST", "/api/run", request());
+  if (mine !== asked || code === 409) return;   // a newer run answers
+  if (data.params) params.draw(data.params);
+  if (data.status === "ok") {
+    try {
+      picture.show(data);
+    } catch (e) {
+      showDiagnostics(data.diagnostics, "The picture could not be drawn: " + e.message);
+      return;
+    }
+    showDiagnostics(data.diagnostics, data.warning);
+    const e = data.elements;
+    say([counted(data.steps, "step"), counted(e.nodes, "node"), counted(e.edges, "edge"), counted(e.faces, "face"),
+         `${data.ms.toFixed(1)} ms`].join(", "));
+    studio.draws++;
+    studio.last = { editedAt, drawnAt: performance.now(), serverMs: data.ms, space: data.space, elements: e, steps: data.steps };
+    editedAt = null;
+    if (tabs.current() === "player") play();
+    else if (tabs.current() === "seeds") sheet.fill();
+  } else {
+    // The last good picture stays.
+    studio.errors++;
+    const where = data.location ? `${data.location.line}:${data.location.column}: ` : "";
+    showDiagnostics(data.diagnostics, data.message ? where + data.message : "");
+    say(data.status === "invalid" ? "The grammar has errors: the picture is the last good one" : "The run failed: the picture is the last good one");
+  }
+}
+
+async function play() {
+  const mine = ++asked;
+  say("Recording the derivation…");
+  const { status: code, data } = await api("POST", "/api/run", { ...request(), trace: true });
+  if (mine !== asked || code === 409) return;
+  if (data.status !== "ok") return say("The grammar has errors: the player shows the last good run");
+  player.play(data);
+  say(`${counted(data.steps, "step")}: step through with the buttons or the arrow keys`);
+}
+
+function edited() {
+  dirty = true;
+  if (editedAt === null) editedAt = performance.now();
+  run();
+}
+
+async function load() {
+  const { data } = await api("GET", "/api/file");
+  path = data.path || "";
+  $("file").textContent = path ? path.split("/").pop() : "untitled";
+  $("file").title = path;
+  document.title = `${$("file").textContent} — g2d studio`;
+  editor.setText(data.text);
+  version = data.version;
+  dirty = false;
+  await run();
+}
+
+async function save() {
+  const { status: code, data } = await api("PUT", "/api/file", { text: editor.text(), version });
+  if (code === 200) {
+    version = data.version;
+    dirty = false;
+    say("Saved");
+  } else {
+    say(data.message);
+  }
+}
+
+$("save").addEventListener("click", save);
+const events = new EventSource("/api/events");
+events.addEventListener("file", (e) => {
+  const changed = JSON.parse(e.data).version;
+  if (changed === version) return;   // our own save
+  if (dirty) say("The file changed on disk; saving will say so");
+  else load();
+});
+load();
