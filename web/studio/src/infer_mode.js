@@ -1,0 +1,147 @@
+// Infer mode (Merrell's app, in the studio): an example dropped, picked or
+// drawn goes to POST /api/infer, which runs `g2d infer` on it. The pane
+// shows the example with its vertices marked by primitive, the primitives
+// and rules (small pictures from the server), one generated output
+// ("Generate": another seed, through /api/run of the written grammar), and
+// opens the written grammar in the editor.
+import { createDrawing } from "./infer_drawing.js";
+
+const el = (tag, props = {}, ...children) => {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+};
+
+// An SVG the server made, as an element (parsed as XML: no script of it runs under the page's CSP).
+function svgNode(text) {
+  const svg = new DOMParser().parseFromString(text, "image/svg+xml").documentElement;
+  return svg.nodeName === "svg" ? document.importNode(svg, true) : el("span", { textContent: "(no picture)" });
+}
+
+const formatOf = (name, text) => (/\.svg$/i.test(name) ? "svg" : /\.json$/i.test(name) ? "json" : /^\s*</.test(text) ? "svg" : "json");
+const counted = (n, noun) => `${n} ${noun}${n === 1 ? "" : "s"}`;
+
+export function createInferMode(root, { api, openGrammar }) {
+  let asked = 0, grammar = "", seed = 1;
+  const status = el("p", { id: "infer-status", role: "status", textContent: "Drop, pick or draw an example." });
+
+  // Input: a drop zone, a file picker, a drawing, and the grammar's size.
+  const file = el("input", { type: "file", id: "infer-file", accept: ".svg,.json" });
+  const drop = el("div", { id: "infer-drop", tabIndex: 0, textContent: "Drop an example here: an SVG drawing or the JSON of Merrell's app" });
+  Object.assign(drop.style, { border: "2px dashed #999", borderRadius: "6px", padding: "14px", textAlign: "center", color: "#555" });
+  const size = el("input", { type: "number", id: "infer-size", min: 1, step: 1, placeholder: "20 × the example" });
+  size.style.width = "9em";
+  const connected = el("input", { type: "checkbox", id: "infer-connected" });
+  const settings = el("div", {}, el("label", { htmlFor: "infer-size", textContent: "Target vertices " }), size, " ",
+    connected, el("label", { htmlFor: "infer-connected", textContent: " One connected piece" }));
+  const drawing = el("details", { id: "infer-draw" }, el("summary", { textContent: "Draw an example" }));
+  createDrawing(drawing, { onUse: (text) => infer(text, "svg", "drawing.svg"), status: (t) => (status.textContent = t) });
+  const input = el("section", {},
+    drop, el("p", {}, el("label", { htmlFor: "infer-file", textContent: "Example file (.svg, .json) " }), file), drawing, settings);
+
+  // Results.
+  const example = el("div", { id: "infer-example" });
+  const labels = el("ul", { id: "infer-labels" });
+  const primitives = el("ul", { id: "infer-primitives" });
+  const rules = el("ol", { id: "infer-rules", start: 0 });
+  const generated = el("div", { id: "infer-generated" });
+  Object.assign(generated.style, { border: "1px solid #ccc", background: "#fff", minHeight: "4em" });
+  const generate = el("button", { type: "button", id: "infer-generate", textContent: "Generate", disabled: true,
+    title: "Derive the written grammar again with another seed" });
+  const open = el("button", { type: "button", id: "infer-open", textContent: "Open grammar in editor", disabled: true });
+  const results = el("section", { id: "infer-results", hidden: true },
+    el("h3", { textContent: "Example" }), example, el("h3", { textContent: "Edge labels" }), labels,
+    el("h3", { textContent: "Primitives" }), primitives, el("h3", { textContent: "Rules" }), rules,
+    el("h3", { textContent: "Generated" }), el("p", {}, generate, " ", open), generated);
+  for (const list of [labels, primitives, rules]) Object.assign(list.style, { listStyle: "none", padding: 0, margin: 0 });
+  input.setAttribute("aria-label", "Example");
+  root.append(input, status, results);
+  Object.assign(root.style, { padding: "8px", display: "block" });
+
+  function showGenerated(svgText, note) {
+    const svg = svgNode(svgText);
+    Object.assign(svg.style, { width: "100%", height: "auto", maxHeight: "60vh", display: "block" });
+    generated.replaceChildren(svg);
+    generated.title = note;
+  }
+
+  function show(data) {
+    grammar = data.grammar;
+    seed = data.seed;
+    const ex = svgNode(data.example_svg);
+    ex.style.maxWidth = "100%";
+    example.replaceChildren(ex);
+    labels.replaceChildren(...data.labels.map((l) => {
+      const swatch = el("span", { textContent: "━━ " });
+      swatch.style.color = l.color;
+      return el("li", {}, swatch, `${l.id}: ${l.brush} at ${+l.direction.toFixed(1)}°, left ${l.left}, right ${l.right}, ` +
+        `length ${+l.min_length.toFixed(3)} to ${+l.max_length.toFixed(3)}, ${l.count} in the example`);
+    }));
+    primitives.replaceChildren(...data.primitives.map((p) => {
+      const star = p.halves.map((h) => `${h.label} ${h.out ? "out" : "in"} ${+h.direction.toFixed(1)}°`).join(", ");
+      const item = el("li", { className: "primitive" }, svgNode(p.svg), el("span", { textContent: ` ${p.id}: ${star} (${p.count} in the example)` }));
+      Object.assign(item.style, { display: "flex", alignItems: "center", gap: "6px" });
+      return item;
+    }));
+    rules.replaceChildren(...data.rules.map((r) => {
+      const right = r.starter ? "nothing" : r.right.join(" | ");
+      const item = el("li", { className: "rule" },
+        el("div", { textContent: `${r.index}: ${r.left} ↔ ${right}${r.restructures ? " (restructures)" : ""}${r.starter ? " (starter)" : ""}` }),
+        el("div", {}, svgNode(r.left_svg), el("span", { textContent: " ↔ " }), r.right_svg ? svgNode(r.right_svg) : el("span", { textContent: "nothing" })));
+      item.style.margin = "6px 0";
+      item.lastChild.style.cssText = "display: flex; align-items: center; gap: 6px; flex-wrap: wrap";
+      return item;
+    }));
+    if (data.generated_svg) showGenerated(data.generated_svg, `seed ${data.seed}`);
+    else generated.replaceChildren(el("p", { className: "error", textContent: "No output: " + data.generate_error }));
+    generate.disabled = open.disabled = false;
+    results.hidden = false;
+    const c = data.counts;
+    status.textContent = `${data.name}: ${counted(c.labels, "edge label")}, ${counted(c.primitives, "primitive")}, ` +
+      `${counted(c.rules, "rule")} and ${counted(c.starters, "starter rule")} in ${data.ms.toFixed(0)} ms; seed ${data.seed}` +
+      (data.warning ? `. Note: ${data.warning}` : "");
+  }
+
+  async function infer(text, format, name) {
+    const mine = ++asked;
+    status.textContent = `Inferring a grammar from ${name}…`;
+    status.className = "";
+    const body = { example: text, format, name, seed: 1, connected: connected.checked };
+    if (size.value) body.size = Number(size.value);
+    const { status: code, data } = await api("POST", "/api/infer", body);
+    if (mine !== asked || code === 409) return;   // a newer request answers
+    if (code === 200 && data.status === "ok") return show(data);
+    status.textContent = data && data.message ? "The example was refused: " + data.message : `The inference failed (${code})`;
+    status.className = "error";
+  }
+
+  async function readFile(f) {
+    if (!f) return;
+    const text = await f.text();
+    infer(text, formatOf(f.name, text), f.name);
+  }
+  file.addEventListener("change", () => readFile(file.files[0]));
+  drop.addEventListener("dragover", (e) => (e.preventDefault(), (drop.style.borderColor = "#36c")));
+  drop.addEventListener("dragleave", () => (drop.style.borderColor = "#999"));
+  drop.addEventListener("drop", (e) => {
+    e.preventDefault();
+    drop.style.borderColor = "#999";
+    readFile(e.dataTransfer.files[0]);
+  });
+  drop.addEventListener("keydown", (e) => (e.key === "Enter" || e.key === " ") && (e.preventDefault(), file.click()));
+
+  generate.addEventListener("click", async () => {
+    const mine = ++asked;
+    seed += 1;
+    status.textContent = `Generating with seed ${seed}…`;
+    const { status: code, data } = await api("POST", "/api/run", { text: grammar, seed });
+    if (mine !== asked || code === 409) return;
+    if (code === 200 && data.svg) {
+      showGenerated(data.svg, `seed ${seed}`);
+      status.textContent = `Generated with seed ${seed}: ${counted(data.elements.nodes, "node")}, ${data.ms.toFixed(0)} ms`;
+    } else status.textContent = `No output for seed ${seed}: ${data && data.message ? data.message : code}`;
+  });
+  open.addEventListener("click", () => openGrammar(grammar));
+
+  return { infer };
+}
