@@ -94,7 +94,7 @@ std::string primitiveColour(int primitive) {
 
 std::string exampleSvg(const LabelledExample& ex) {
     const ExampleShape& s = ex.shape;
-    const Frame f = Frame::around(s.vertices, 40, 16);
+    const Frame f = Frame::around(s.vertices, 40, 24);   // room for the names beside the dots
     std::string bands, edges, dots;
     const double offset = 4 / f.scale;   // the bands lie 4 px beside the edge
     for (std::size_t e = 0; e < s.edges.size(); ++e) {

@@ -49,11 +49,19 @@ export function createInferMode(root, { api, openGrammar }) {
   const generate = el("button", { type: "button", id: "infer-generate", textContent: "Generate", disabled: true,
     title: "Derive the written grammar again with another seed" });
   const open = el("button", { type: "button", id: "infer-open", textContent: "Open grammar in editor", disabled: true });
-  const results = el("section", { id: "infer-results", hidden: true },
-    el("h3", { textContent: "Example" }), example, el("h3", { textContent: "Edge labels" }), labels,
+  // The example and its output side by side, as Merrell's app has them; then what inference found.
+  const figure = (title, ...content) => {
+    const f = el("figure", {}, el("h3", { textContent: title }), ...content);
+    Object.assign(f.style, { margin: 0, flex: "1 1 260px", minWidth: 0 });
+    return f;
+  };
+  const pair = el("div", {}, figure("Example", example), figure("Generated", el("p", {}, generate, " ", open), generated));
+  Object.assign(pair.style, { display: "flex", gap: "16px", flexWrap: "wrap", alignItems: "flex-start" });
+  const results = el("section", { id: "infer-results", hidden: true }, pair,
     el("h3", { textContent: "Primitives" }), primitives, el("h3", { textContent: "Rules" }), rules,
-    el("h3", { textContent: "Generated" }), el("p", {}, generate, " ", open), generated);
+    el("h3", { textContent: "Edge labels" }), labels);
   for (const list of [labels, primitives, rules]) Object.assign(list.style, { listStyle: "none", padding: 0, margin: 0 });
+  Object.assign(primitives.style, { display: "flex", flexWrap: "wrap", gap: "4px 12px" });
   input.setAttribute("aria-label", "Example");
   root.append(input, status, results);
   Object.assign(root.style, { padding: "8px", display: "block" });
@@ -80,7 +88,7 @@ export function createInferMode(root, { api, openGrammar }) {
     primitives.replaceChildren(...data.primitives.map((p) => {
       const star = p.halves.map((h) => `${h.label} ${h.out ? "out" : "in"} ${+h.direction.toFixed(1)}°`).join(", ");
       const item = el("li", { className: "primitive" }, svgNode(p.svg), el("span", { textContent: ` ${p.id}: ${star} (${p.count} in the example)` }));
-      Object.assign(item.style, { display: "flex", alignItems: "center", gap: "6px" });
+      Object.assign(item.style, { display: "flex", alignItems: "center", gap: "6px", flex: "0 1 22em" });
       return item;
     }));
     rules.replaceChildren(...data.rules.map((r) => {
