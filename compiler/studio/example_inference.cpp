@@ -207,7 +207,7 @@ ApiReply inferExample(const std::string& path, const InferInput& input, const st
     const nlohmann::json result = nlohmann::json::parse(generated.body, nullptr, false);
     if (generated.status == 200 && result.is_object()) {
         reply["generated_svg"] = result["svg"];
-        reply["generated"] = {{"steps", result["steps"]}, {"stopped", result["stopped"]}, {"elements", result["elements"]}};
+        reply["generated"] = {{"steps", result["steps"]}, {"stopped", result["stopped"]}, {"elements", result["elements"]}, {"ms", result["ms"]}};
     } else {   // the inference stands; the page shows why there is no picture
         reply["generated_svg"] = nullptr;
         reply["generate_error"] = result.is_object() && result.contains("message") ? result["message"].get<std::string>()

@@ -29,7 +29,7 @@ std::optional<InferInput> inferInputOf(const nlohmann::json& request, std::strin
 // Answers 200 {"status": "ok", "name", "counts", "labels", "primitives",
 // "rules", "report", "warning"?, "grammar", "example_svg", "generated_svg"
 // (null when the generation failed: "generate_error" says why), "generated":
-// {steps, stopped, elements}, "seed", "ms"}; 422 {"status": "error",
+// {steps, stopped, elements, ms}, "seed", "ms" (all of it)}; 422 {"status": "error",
 // "message", "location"?} for an example the readers refuse; 409
 // {"status": "cancelled"} once `cancelled` says yes. `path` is the studio's
 // file, as /api/run compiles a text as that file.
