@@ -18,7 +18,6 @@ namespace g2d::studio {
 
 namespace {
 
-constexpr double kMaxTimeoutSeconds = 60;
 constexpr int kMaxSize = 100000;   // target vertices: far beyond what a page can show
 
 std::string areaName(const infer::LabelledExample& ex, int a) {
@@ -128,13 +127,6 @@ std::optional<InferInput> inferInputOf(const nlohmann::json& request, std::strin
         const std::string name = std::filesystem::path(request["name"].get<std::string>()).filename().string();
         if (!name.empty()) input.name = name;
     }
-    if (request.contains("seed")) {
-        if (!request["seed"].is_number_unsigned()) {
-            why = "\"seed\" must be a whole number, 0 or more";
-            return std::nullopt;
-        }
-        input.seed = request["seed"].get<std::uint64_t>();
-    }
     if (request.contains("size") && !request["size"].is_null()) {
         if (!request["size"].is_number_unsigned() || request["size"].get<std::uint64_t>() < 1 || request["size"].get<std::uint64_t>() > kMaxSize) {
             why = "\"size\" (the target number of vertices) must be a whole number from 1 to " + std::to_string(kMaxSize);
@@ -149,14 +141,14 @@ std::optional<InferInput> inferInputOf(const nlohmann::json& request, std::strin
         }
         input.connected = request["connected"].get<bool>();
     }
-    if (request.contains("timeout")) {
-        const auto& t = request["timeout"];
-        if (!t.is_number() || !(t.get<double>() > 0) || t.get<double>() > kMaxTimeoutSeconds) {
-            why = "\"timeout\" must be a number of seconds above 0, at most " + std::to_string(int(kMaxTimeoutSeconds));
-            return std::nullopt;
-        }
-        input.timeoutSeconds = t.get<double>();
-    }
+    // The seed and the generation's time budget as /api/run reads them (one set of rules and messages).
+    nlohmann::json run = {{"text", ""}, {"timeout", input.timeoutSeconds}};
+    for (const char* key : {"seed", "timeout"})
+        if (request.contains(key)) run[key] = request[key];
+    const auto runInput = runInputOf(run, why);
+    if (!runInput) return std::nullopt;
+    input.seed = runInput->seed;
+    input.timeoutSeconds = runInput->timeoutSeconds;
     return input;
 }
 
