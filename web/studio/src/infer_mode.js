@@ -23,6 +23,16 @@ const counted = (n, noun) => `${n} ${noun}${n === 1 ? "" : "s"}`;
 
 export function createInferMode(root, { api, openGrammar }) {
   let asked = 0, grammar = "", seed = 1;
+  // Request `mine`'s answer, or null once a newer one of this pane was sent. A 409 from a request
+  // that reached the server later (parallel connections reorder them) is asked again, once: the
+  // editor's run asks again too, so each asking without end could cancel the other without end.
+  async function ask(mine, path, body) {
+    for (let tries = 0; ; tries++) {
+      const answer = await api("POST", path, body);
+      if (mine !== asked) return null;
+      if (answer.status !== 409 || tries === 1) return answer;
+    }
+  }
   const status = el("p", { id: "infer-status", role: "status", textContent: "Drop, pick or draw an example." });
 
   // Input: a drop zone, a file picker, a drawing, and the grammar's size.
@@ -116,8 +126,10 @@ export function createInferMode(root, { api, openGrammar }) {
     status.className = "";
     const body = { example: text, format, name, seed: 1, connected: connected.checked };
     if (size.value) body.size = Number(size.value);
-    const { status: code, data } = await api("POST", "/api/infer", body);
-    if (mine !== asked || code === 409) return;   // a newer request answers
+    const answer = await ask(mine, "/api/infer", body);
+    if (!answer) return;   // a newer request answers
+    const { status: code, data } = answer;
+    if (code === 409) return (status.textContent = "Cancelled by a run of the editor: try again");
     if (code === 200 && data.status === "ok") return show(data);
     status.textContent = data && data.message ? "The example was refused: " + data.message : `The inference failed (${code})`;
     status.className = "error";
@@ -142,12 +154,14 @@ export function createInferMode(root, { api, openGrammar }) {
     const mine = ++asked;
     seed += 1;
     status.textContent = `Generating with seed ${seed}…`;
-    const { status: code, data } = await api("POST", "/api/run", { text: grammar, seed });
-    if (mine !== asked || code === 409) return;
+    const answer = await ask(mine, "/api/run", { text: grammar, seed });
+    if (!answer) return;
+    const { status: code, data } = answer;
     if (code === 200 && data.svg) {
       showGenerated(data.svg, `seed ${seed}`);
       status.textContent = `Generated with seed ${seed}: ${counted(data.elements.nodes, "node")}, ${data.ms.toFixed(0)} ms`;
-    } else status.textContent = `No output for seed ${seed}: ${data && data.message ? data.message : code}`;
+    } else if (code === 409) status.textContent = "Cancelled by a run of the editor: press Generate again";
+    else status.textContent = `No output for seed ${seed}: ${data && data.message ? data.message : code}`;
   });
   open.addEventListener("click", () => openGrammar(grammar));
 
