@@ -123,8 +123,11 @@ std::optional<InferInput> inferInputOf(const nlohmann::json& request, std::strin
             why = "\"name\" must be a string (the example's file name)";
             return std::nullopt;
         }
-        // Only for messages: the last part of whatever the page sends.
-        const std::string name = std::filesystem::path(request["name"].get<std::string>()).filename().string();
+        // Only for messages and the grammar's header comment: the last part of whatever the page
+        // sends, without control characters (a line break would end the comment).
+        std::string name = std::filesystem::path(request["name"].get<std::string>()).filename().string();
+        for (char& c : name)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
         if (!name.empty()) input.name = name;
     }
     if (request.contains("size") && !request["size"].is_null()) {

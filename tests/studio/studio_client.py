@@ -16,13 +16,16 @@ def start(g2d, args, cwd):
 
 
 def post(port, path, body, timeout=60):
-    """(status, parsed JSON) of a POST of `body` as JSON, sent as the page sends it."""
+    """(status, parsed JSON, or {} when the answer is not JSON) of a POST of `body` as JSON, sent as the page sends it."""
     conn = http.client.HTTPConnection("127.0.0.1", port, timeout=timeout)
     conn.request("POST", path, json.dumps(body), {"Content-Type": "application/json"})
     res = conn.getresponse()
     text = res.read().decode()
     conn.close()
-    return res.status, json.loads(text)
+    try:
+        return res.status, json.loads(text)
+    except ValueError:
+        return res.status, {}
 
 
 def stop(proc):

@@ -116,7 +116,7 @@ try:
     text = open(os.path.join(work, "T.json")).read()
     status, sized = post(port, "/api/infer", {"example": text, "format": "json", "name": "T.json", "size": 30, "connected": True})
     written = cli("infer", "T.json", "--size", "30", "--connected", "-o", "cli.g2d", cwd=work)
-    check(status == 200 and sized["grammar"] == open(os.path.join(work, "cli.g2d")).read(), "size and connected as --size, --connected")
+    check(status == 200 and sized.get("grammar") == open(os.path.join(work, "cli.g2d")).read(), "size and connected as --size, --connected")
 
     # Broken examples: the reader's message with its line; the server keeps running.
     broken = {
@@ -131,7 +131,7 @@ try:
     }
     for name, (fmt, text, message, location) in broken.items():
         status, got = post(port, "/api/infer", {"example": text, "format": fmt, "name": name})
-        check(status == 422 and got["status"] == "error" and got["message"].startswith(message) and got.get("location") == location,
+        check(status == 422 and got.get("status") == "error" and got["message"].startswith(message) and got.get("location") == location,
               f"{name}: {status} {got}")
         with open(os.path.join(work, name), "w") as f:
             f.write(text)
@@ -143,10 +143,15 @@ try:
                        ({"example": "x", "format": "svg", "size": 0}, "size 0"),
                        ({"example": "x", "format": "svg", "timeout": 100}, "a timeout past 60 s")):
         status, got = post(port, "/api/infer", body)
-        check(status == 400 and got["status"] == "error" and got["message"], f"{what}: {status} {got}")
+        check(status == 400 and got.get("status") == "error" and got["message"], f"{what}: {status} {got}")
     # A name is only a name: no path in it reaches a message.
     status, got = post(port, "/api/infer", {"example": broken["bad.svg"][1], "format": "svg", "name": "../../etc/x.svg"})
-    check(status == 422 and got["message"].startswith("x.svg:3: "), f"a name with a path: {got}")
+    check(status == 422 and got.get("message", "").startswith("x.svg:3: "), f"a name with a path: {got}")
+    # Nor can a name add a line to the grammar: control characters become spaces.
+    status, got = post(port, "/api/infer", {"example": open(os.path.join(work, "house.svg")).read(), "format": "svg",
+                                            "name": "a\rrule X {}\n.svg"})
+    check(status == 200 and got["grammar"].startswith("// Inferred by `g2d infer` from a rule X {} .svg (Merrell"),
+          f"a name with line breaks: {status} {got.get('grammar', '')[:100]}")
 
     # Cancellation: a long inference (a million steps of generation) gives way to a newer run, and to a newer inference.
     t_json = open(os.path.join(work, "T.json")).read()
