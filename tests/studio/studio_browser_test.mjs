@@ -1,10 +1,12 @@
-// The studio's first page in Debian's chromium, driven by puppeteer-core
+// The studio's page in Debian's chromium, driven by puppeteer-core
 // (web/view's devDependencies): it loads from the server alone (no network,
 // no script error, no CSP violation), shows the grammar's picture and the
-// run's counts; an edit that breaks the grammar shows the error at its line
-// and keeps the last good picture; an edit that mends it redraws; Save
-// writes the file, and a change on disk reloads the page's text. A
-// screenshot is kept in ARTIFACTS.
+// run's counts; typing an edit redraws; an edit that breaks the grammar
+// shows the error at its line (in the editor and the list) and keeps the
+// last good picture; a parameter control and "Another seed" redraw; the
+// SVG export; the seeds sheet; the player steps; Save writes the file, and
+// a change on disk reloads the page's text; a 3D grammar is drawn in the
+// viewer, whose camera stays across redraws. Screenshots are kept in ARTIFACTS.
 // Usage: node studio_browser_test.mjs G2D SOURCE_DIR ARTIFACTS
 import { spawn } from "node:child_process";
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
@@ -31,55 +33,144 @@ check(/^http:\/\/127\.0\.0\.1:\d+\/$/.test(url), `the URL: ${url}`);
 const browser = await puppeteer.launch({
   executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
   headless: true,
-  args: ["--no-sandbox", "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1", "--hide-scrollbars"],
+  args: ["--no-sandbox", "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1", "--hide-scrollbars", "--use-gl=angle",
+         "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
   defaultViewport: { width: 1100, height: 700 },
 });
 try {
   const page = await browser.newPage();
   const errors = [];
   page.on("pageerror", (e) => errors.push(e.message));
-  // A broken grammar's run answers 422, which the console reports; nothing else may fail.
-  page.on("console", (m) => m.type() === "error" && !m.text().includes("status of 422") && errors.push(m.text()));
+  // A broken grammar's run answers 422 and a cancelled one 409, which the console reports; nothing else may fail.
+  page.on("console", (m) => m.type() === "error" && !/status of (422|409)/.test(m.text()) && errors.push(m.text()));
   page.on("requestfailed", (r) => errors.push("request failed: " + r.url()));
   await page.goto(url, { waitUntil: "load" });
-  await page.waitForFunction(() => document.querySelector("#picture svg") !== null, { timeout: 20000 });
-  const picture = await page.$eval("#picture svg", (svg) => ({
+  const status = () => page.$eval("#status", (s) => s.textContent);
+  const draws = () => page.evaluate(() => window.g2dStudio.draws);
+  // A wait that says what it waited for when it times out.
+  const waitFor = (what, fn, options, ...args) =>
+    page.waitForFunction(fn, options, ...args).catch(async (e) => {
+      const state = await page.evaluate(() => ({ line12: window.g2dStudio.text().split("\n")[11], runs: window.g2dStudio.runs,
+        draws: window.g2dStudio.draws, generations: (document.getElementById("param-generations") || {}).value }));
+      throw new Error(`waiting for ${what}: ${e.message} (the status: ${await status()}; ${JSON.stringify(state)})`);
+    });
+  const waitStatus = (prefix) => waitFor(`the status "${prefix}…"`, (p) => document.getElementById("status").textContent.startsWith(p),
+    { timeout: 20000 }, prefix);
+  await waitFor("the first picture", () => document.querySelector("#flat svg") !== null, { timeout: 20000 });
+  const picture = await page.$eval("#flat svg", (svg) => ({
     drawn: svg.querySelectorAll("path, line, polyline, polygon, circle").length,
     width: svg.getBoundingClientRect().width,
   }));
   check(picture.drawn > 0 && picture.width > 100, `the picture: ${JSON.stringify(picture)}`);
-  const status = await page.$eval("#status", (s) => s.textContent);
-  check(/^5 steps, 366 nodes, 729 edges, 0 faces, [\d.]+ ms$/.test(status), `the status: ${status}`);
-  check((await page.$eval("#editor", (e) => e.value)).includes("rule Split parallel"), "the editor holds the file");
+  check(/^5 steps, 366 nodes, 729 edges, 0 faces, [\d.]+ ms$/.test(await status()), `the status: ${await status()}`);
+  check((await page.evaluate(() => window.g2dStudio.text())).includes("rule Split parallel"), "the editor holds the file");
+  check(await page.$eval(".cm-content", (c) => c.querySelector(".tok-keyword, .ͼb, [class*=tok]") !== null ||
+        getComputedStyle(c.querySelector(".cm-line span") || c).color !== getComputedStyle(c).color), "the text is highlighted");
   await page.screenshot({ path: join(artifacts, "studio_sierpinski.png") });
 
-  // Break the grammar: the error at its line, the picture kept.
-  const before = await page.$eval("#picture", (p) => p.innerHTML);
-  await page.$eval("#editor", (e) => {
-    e.value = e.value.replace("limit generations + 1;", "limit generations +;");
-    e.dispatchEvent(new Event("input"));
-  });
-  await page.waitForFunction(() => document.querySelector("#diagnostics .error") !== null, { timeout: 20000 });
-  const error = await page.$eval("#diagnostics .error", (li) => li.textContent);
-  check(/^32:\d+: error: /.test(error), `the error: ${error}`);
-  check((await page.$eval("#picture", (p) => p.innerHTML)) === before, "the last good picture stays");
+  // Typing an edit redraws: the default 5 becomes 3, key by key.
+  await page.evaluate(() => window.g2dStudio.select("int = 5") && window.g2dStudio.select("5;"));
+  await page.keyboard.type("3;");
+  await waitStatus("3 steps");
+  check(/^3 steps, 42 nodes, 81 edges/.test(await status()), `after typing: ${await status()}`);
 
-  // Mend it with fewer generations: a new picture.
-  await page.$eval("#editor", (e) => {
-    e.value = e.value.replace("limit generations +;", "limit generations + 1;").replace("int = 5", "int = 2");
-    e.dispatchEvent(new Event("input"));
+  // Break the grammar: the error at its line in the editor and the list, the picture kept.
+  const before = await page.$eval("#flat", (p) => p.innerHTML);
+  await page.evaluate(() => window.g2dStudio.select("generations + 1;") && window.g2dStudio.select("1;"));
+  await page.keyboard.type(";");
+  await waitFor("the error", () => document.querySelector("#diagnostics .error") !== null, { timeout: 20000 });
+  const error = await page.$eval("#diagnostics .error", (li) => li.textContent);
+  check(/^32:\d+: error: /.test(error), `the error in the list: ${error}`);
+  const marks = await page.evaluate(() => window.g2dStudio.marks());
+  check(marks.length > 0 && marks[0].line === 32 && marks[0].severity === "error", `the error in the editor: ${JSON.stringify(marks)}`);
+  check((await page.$$(".cm-lint-marker-error")).length > 0 || (await page.$$(".cm-lintRange-error")).length > 0,
+        "the editor marks the error");
+  check((await page.$eval("#flat", (p) => p.innerHTML)) === before, "the last good picture stays");
+  check((await status()).includes("last good"), `the status says the picture is the last good one: ${await status()}`);
+
+  // Mend it: a new picture, no diagnostics.
+  await page.evaluate(() => window.g2dStudio.select("+ ;"));
+  await page.keyboard.type("+ 1;");
+  await waitFor("the diagnostics to clear", () => document.querySelectorAll("#diagnostics li").length === 0, { timeout: 20000 });
+  check((await page.evaluate(() => window.g2dStudio.marks())).length === 0, "the editor's marks are cleared");
+
+  // The parameters panel: a labelled control per param; changing it redraws.
+  check(await page.$eval("label[for=param-generations]", (l) => l.textContent) === "generations", "the parameter's label");
+  await page.$eval("#param-generations", (f) => ((f.value = "2"), f.dispatchEvent(new Event("input"))));
+  await waitStatus("2 steps");
+  check(/^2 steps, 15 nodes, 27 edges/.test(await status()), `after the parameter: ${await status()}`);
+  // "Another seed" redraws with the next seed.
+  let n = await draws();
+  await page.click("#another-seed");
+  await waitFor("another seed's picture", (k) => window.g2dStudio.draws > k, { timeout: 20000 }, n);
+  check(await page.$eval("#seed", (f) => f.value) === "2", "another seed: 2");
+
+  // Exports: the file the server makes, downloaded under the grammar's name.
+  await page.evaluate(() => {   // the blob each download link names (the page's CSP lets no fetch read it back)
+    const blobs = new Map(), make = URL.createObjectURL;
+    URL.createObjectURL = (blob) => {
+      const u = make(blob);
+      blobs.set(u, blob);
+      return u;
+    };
+    window.downloads = [];
+    HTMLAnchorElement.prototype.click = function () {
+      window.downloads.push(blobs.get(this.href).text().then((t) => ({ name: this.download, text: t })));
+    };
   });
-  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("2 steps"), { timeout: 20000 });
-  check((await page.$$eval("#diagnostics li", (l) => l.length)) === 0, "the diagnostics are cleared");
-  check((await page.$eval("#picture", (p) => p.innerHTML)) !== before, "the picture is redrawn");
+  await page.click("#export-svg");
+  await waitFor("the download", () => window.downloads.length === 1, { timeout: 20000 });
+  const svg = await page.evaluate(() => window.downloads[0]);
+  check(svg.name === "sierpinski.svg" && svg.text.includes("<svg"), `the SVG export: ${svg.name} ${svg.text.slice(0, 60)}`);
+
+  // The seeds sheet: 16 seeds; a click takes one.
+  await page.click("#mode-seeds");
+  await waitFor("16 seeds", () => document.querySelectorAll(".seed-cell img").length === 16, { timeout: 30000 });
+  n = await draws();
+  await page.click(".seed-cell[data-seed='7']");
+  await waitFor("the seed's picture", (k) => window.g2dStudio.draws > k, { timeout: 20000 }, n);
+  check(await page.$eval("#seed", (f) => f.value) === "7" && !(await page.$eval("#picture-pane", (p) => p.hidden)),
+        "a seed taken from the sheet");
+
+  // The player steps through the derivation.
+  await page.click("#mode-player");
+  await waitFor("the trace", () => window.g2dTrace && window.g2dTrace.steps === 2, { timeout: 20000 });
+  await page.click("#first");
+  check(await page.evaluate(() => window.g2dTrace.frame) === 0, "the player's first frame");
+  await page.click("#next");
+  const step1 = await page.evaluate(() => ({ frame: window.g2dTrace.frame, drawn: window.g2dTrace.drawn }));
+  check(step1.frame === 1 && step1.drawn.added > 0 && step1.drawn.deleted > 0, `the player's step 1: ${JSON.stringify(step1)}`);
+  check(await page.$eval("#stage", (s) => s.querySelectorAll("line").length) > 0, "the player draws the graph");
+  await page.screenshot({ path: join(artifacts, "studio_player.png") });
+  await page.click("#mode-picture");
+
+  // "Defaults": the parameters as the text declares them again.
+  await page.click("#reset-params");
+  await waitStatus("3 steps");
+  check(await page.$eval("#param-generations", (f) => f.value) === "3", "the parameter's default again");
 
   // Saved, then changed on disk by another editor: the page reloads the file and redraws.
   await page.click("#save");
-  await page.waitForFunction(() => document.getElementById("status").textContent === "Saved", { timeout: 20000 });
-  check(readFileSync(join(work, "sierpinski.g2d"), "utf8").includes("int = 2"), "the save wrote the file");
+  await waitFor("the save", () => document.getElementById("status").textContent === "Saved", { timeout: 20000 });
+  check(readFileSync(join(work, "sierpinski.g2d"), "utf8").includes("generations + 1;"), "the save wrote the file");
   writeFileSync(join(work, "sierpinski.g2d"), readFileSync(join(src, "examples/sierpinski.g2d"), "utf8").replace("int = 5", "int = 1"));
-  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("1 step,"), { timeout: 20000 });
-  check((await page.$eval("#editor", (e) => e.value)).includes("int = 1"), "the editor shows the file as changed on disk");
+  await waitStatus("1 step,");
+  check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1"), "the editor shows the file as changed on disk");
+
+  // A 3D grammar on disk: the viewer draws it; a parameter redraws it with the camera where it was.
+  writeFileSync(join(work, "sierpinski.g2d"), readFileSync(join(src, "examples/g3_box.g2d"), "utf8"));
+  await waitFor("the 3D picture", () => window.g2dStudio.last && window.g2dStudio.last.space === "3d", { timeout: 20000 });
+  check(await page.$eval("#solid canvas", (c) => c.width > 100 && c.height > 100), "the 3D picture's canvas");
+  check(!(await page.$eval("#view-panel", (p) => p.hidden)) && (await page.$eval("#flat", (p) => p.hidden)), "3D: the viewer's panel, no SVG");
+  await page.click("#solid canvas");
+  await page.keyboard.press("2");   // the viewer's side view
+  const camera = await page.evaluate(() => window.g2dStudio.camera());
+  n = await draws();
+  await page.$eval("#param-height", (f) => ((f.value = "2"), f.dispatchEvent(new Event("input"))));
+  await waitFor("the 3D redraw", (k) => window.g2dStudio.draws > k, { timeout: 20000 }, n);
+  check(JSON.stringify(await page.evaluate(() => window.g2dStudio.camera())) === JSON.stringify(camera),
+        "the camera stays across redraws");
+  await page.screenshot({ path: join(artifacts, "studio_g3_box.png") });
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);
 } finally {
   await browser.close();

@@ -4,7 +4,7 @@
 import { autocompletion, completeFromList } from "@codemirror/autocomplete";
 import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
 import { bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from "@codemirror/language";
-import { lintGutter, setDiagnostics } from "@codemirror/lint";
+import { forEachDiagnostic, lintGutter, setDiagnostics } from "@codemirror/lint";
 import { highlightSelectionMatches, searchKeymap } from "@codemirror/search";
 import { Annotation, EditorState } from "@codemirror/state";
 import { EditorView, drawSelection, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
@@ -80,5 +80,19 @@ export function createEditor(parent, { onEdit, onSave }) {
       view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text }, annotations: fromFile.of(true) });
     },
     showDiagnostics,
+    // The marks shown, as [{line, severity, message}] (for tests).
+    marks() {
+      const out = [];
+      forEachDiagnostic(view.state, (d, from) => out.push({ line: view.state.doc.lineAt(from).number, severity: d.severity, message: d.message }));
+      return out;
+    },
+    // Selects the first `text` and focuses the editor, so that typing replaces it (for tests and the benchmark).
+    select(text) {
+      const at = view.state.doc.toString().indexOf(text);
+      if (at < 0) return false;
+      view.focus();
+      view.dispatch({ selection: { anchor: at, head: at + text.length }, scrollIntoView: true });
+      return true;
+    },
   };
 }

@@ -5,8 +5,10 @@ const FORMATS = [
 ];
 
 export function createExports(root, { api, request, stem, status }) {
-  async function download(format) {
+  async function download(format, tries = 3) {
     const { status: code, data, blob } = await api("POST", "/api/export", { ...request(), format });
+    // A run started while the file was made cancels it: the file is asked for again.
+    if (code === 409 && tries > 1) return download(format, tries - 1);
     if (code !== 200 || !blob) {
       if (code !== 409) status(`${format.toUpperCase()}: ${data ? data.message || "the grammar has errors" : code}`);
       return false;

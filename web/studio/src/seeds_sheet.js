@@ -12,7 +12,8 @@ export function createSeedsSheet(root, { api, request, takeSeed, status }) {
     const mine = ++asked;
     status(`Deriving seeds ${first}–${first + COUNT - 1}…`);
     const { status: code, data } = await api("POST", "/api/seeds", { ...request(), first, count: COUNT, width: WIDTH });
-    if (mine !== asked || code === 409) return;
+    if (mine !== asked) return;
+    if (code === 409) return fill();   // cancelled by an older request that arrived later (see studio.js)
     if (data.status !== "ok") return status(data.message || "The grammar has errors: the sheet is as it was");
     grid.replaceChildren(...data.sheet.map((cell) => {
       const b = Object.assign(document.createElement("button"), { type: "button", className: "seed-cell" });

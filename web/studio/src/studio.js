@@ -28,7 +28,8 @@ const params = createParamsPanel($("params"), () => run());
 const picture = createPicture({ flat: $("flat"), solid: $("solid"), panel: $("view-panel"), note: $("picture-note") });
 const player = createPlayer({ stage: $("stage"), solid: $("player-solid"), panel: $("player-panel"), info: $("info") });
 const request = () => ({ text: editor.text(), ...params.request() });
-const stem = () => (path.split("/").pop() || "untitled.g2d").replace(/\.g2d$/, "") + "-seed" + params.request().seed;
+// As `g2d run --obj NAME.obj` names them, so that the OBJ finds its MTL.
+const stem = () => (path.split("/").pop() || "untitled.g2d").replace(/\.g2d$/, "");
 const sheet = createSeedsSheet($("seeds-pane"), { api, request, status: say, takeSeed: (seed) => (tabs.open("picture"), params.setSeed(seed)) });
 createExports($("exports"), { api, request, stem, status: say });
 const tabs = createTabs({
@@ -53,7 +54,10 @@ async function run() {
   const mine = ++asked;
   studio.runs++;
   const { status: code, data } = await api("POST", "/api/run", request());
-  if (mine !== asked || code === 409) return;   // a newer run answers
+  if (mine !== asked) return;   // a newer run answers
+  // Cancelled by an older request that reached the server later (requests travel on parallel
+  // connections): this is still the run the page wants, so it asks again.
+  if (code === 409) return run();
   if (data.params) params.draw(data.params);
   if (data.status === "ok") {
     try {
@@ -84,7 +88,8 @@ async function play() {
   const mine = ++asked;
   say("Recording the derivation…");
   const { status: code, data } = await api("POST", "/api/run", { ...request(), trace: true });
-  if (mine !== asked || code === 409) return;
+  if (mine !== asked) return;
+  if (code === 409) return play();   // as in run()
   if (data.status !== "ok") return say("The grammar has errors: the player shows the last good run");
   player.play(data);
   say(`${counted(data.steps, "step")}: step through with the buttons or the arrow keys`);
@@ -125,6 +130,18 @@ events.addEventListener("file", (e) => {
   const changed = JSON.parse(e.data).version;
   if (changed === version) return;   // our own save
   if (dirty) say("The file changed on disk; saving will say so");
-  else load();
+  else Object.assign(studio, {
+  text: () => editor.text(),
+  marks: () => editor.marks(),
+  select: (text) => editor.select(text),
+  camera: () => picture.viewer() && picture.viewer().camera(),
+});
+load();
+});
+Object.assign(studio, {
+  text: () => editor.text(),
+  marks: () => editor.marks(),
+  select: (text) => editor.select(text),
+  camera: () => picture.viewer() && picture.viewer().camera(),
 });
 load();
