@@ -45,6 +45,8 @@ try {
   // A refused example answers 422, which the console reports; nothing else may fail.
   page.on("console", (m) => m.type() === "error" && !m.text().includes("status of 422") && errors.push(m.text()));
   page.on("requestfailed", (r) => errors.push("request failed: " + r.url()));
+  let lastInfer = null;   // the last answer of /api/infer the page got
+  page.on("response", async (r) => r.url().endsWith("/api/infer") && r.status() === 200 && (lastInfer = await r.json()));
   await page.goto(url, { waitUntil: "load" });
   await page.waitForFunction(() => document.querySelector("#flat svg, #flat img") !== null, { timeout: 20000 });
   const sierpinski = await page.$eval("#flat", (f) => f.innerHTML);
@@ -108,8 +110,8 @@ try {
 
   // Open grammar in editor: the written grammar in the editor, and its picture in the Picture tab.
   await page.click("#infer-open");
-  await page.waitForFunction(() => document.querySelector("#editor .cm-content").textContent.includes("Inferred by `g2d infer` from drawing.svg"),
-                             { timeout: 20000 });
+  await page.waitForFunction(() => window.g2dStudio.text().startsWith("// Inferred by `g2d infer` from drawing.svg"), { timeout: 20000 });
+  check((await page.evaluate(() => window.g2dStudio.text())) === lastInfer.grammar, "the editor holds the grammar /api/infer wrote");
   if (await page.$eval("#picture-pane", (p) => p.hidden)) await page.click("#mode-picture");
   await page.waitForFunction((old) => document.querySelector("#flat svg, #flat img") !== null && document.getElementById("flat").innerHTML !== old,
                              { timeout: 30000 }, sierpinski);
