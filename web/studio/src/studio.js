@@ -71,7 +71,10 @@ async function run() {
     say([counted(data.steps, "step"), counted(e.nodes, "node"), counted(e.edges, "edge"), counted(e.faces, "face"),
          `${data.ms.toFixed(1)} ms`].join(", "));
     studio.draws++;
-    studio.last = { editedAt, drawnAt: performance.now(), serverMs: data.ms, space: data.space, elements: e, steps: data.steps };
+    const last = (studio.last = { editedAt, drawnAt: performance.now(), paintedAt: null, serverMs: data.ms, space: data.space,
+                                  elements: e, steps: data.steps });
+    // The frame that shows the picture has been painted once the task after its animation frame runs.
+    requestAnimationFrame(() => setTimeout(() => (last.paintedAt = performance.now())));
     editedAt = null;
     if (tabs.current() === "player") play();
     else if (tabs.current() === "seeds") sheet.fill();
