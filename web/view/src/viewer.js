@@ -349,8 +349,9 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   }
 
   // Keys act on the picture only when nothing that takes text has the focus (the studio's editor).
-  const typing = (t) => t instanceof HTMLInputElement || t instanceof HTMLTextAreaElement || t instanceof HTMLSelectElement ||
-    (t instanceof HTMLElement && t.isContentEditable);
+  // (A checkbox or button keeps the keys: the toggles are clicked, then keys pressed.)
+  const typing = (t) => t instanceof HTMLInputElement && !["checkbox", "radio", "button", "submit", "reset"].includes(t.type) ||
+    t instanceof HTMLTextAreaElement || t instanceof HTMLSelectElement || (t instanceof HTMLElement && t.isContentEditable);
   function onKey(e) {
     if (e.ctrlKey || e.metaKey || e.altKey || typing(e.target) || !renderer.domElement.isConnected ||
         renderer.domElement.offsetParent === null && container !== document.body) return;
