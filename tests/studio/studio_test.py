@@ -178,7 +178,8 @@ try:
           and run["ms"] >= 0 and run["stopped"] == "step_limit" or run.get("stopped") == "terminal",
           f"run counts: {run.get('steps')} {run.get('elements')} {run.get('stopped')}")
     status, bad_param = request(port, "POST", "/api/run", {"text": original, "params": {"generations": "many"}})
-    check(status == 422 and "not a valid int" in bad_param["message"], f"a bad parameter: {status} {bad_param}")
+    check(status == 422 and bad_param["message"] == "parameter `generations`: expected an int, got `many`",
+          f"a bad parameter: {status} {bad_param}")
 
     # A 3D grammar: the SVG and the --view page's model.
     box = open(os.path.join(SRC, "examples", "g3_box.g2d")).read()
