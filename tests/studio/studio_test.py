@@ -193,7 +193,8 @@ try:
           and run["ms"] >= 0 and run["stopped"] == "step_limit" or run.get("stopped") == "terminal",
           f"run counts: {run.get('steps')} {run.get('elements')} {run.get('stopped')}")
     status, bad_param = request(port, "POST", "/api/run", {"text": original, "params": {"generations": "many"}})
-    check(status == 422 and "not a valid int" in bad_param["message"], f"a bad parameter: {status} {bad_param}")
+    check(status == 422 and bad_param["message"] == "parameter `generations`: expected an int, got `many`",
+          f"a bad parameter: {status} {bad_param}")
 
     # No answer is compressed, though the browser accepts it: on loopback it only costs time
     # (Brotli took 200 ms for this picture, and seconds for the page's script).
