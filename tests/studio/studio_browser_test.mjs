@@ -158,7 +158,10 @@ try {
   check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1"), "the editor shows the file as changed on disk");
 
   // A 3D grammar on disk: the viewer draws it; a parameter redraws it with the camera where it was.
-  writeFileSync(join(work, "sierpinski.g2d"), readFileSync(join(src, "examples/g3_box.g2d"), "utf8"));
+  // (Its height given a range, so that the panel shows a slider.)
+  const ranged = readFileSync(join(src, "examples/g3_box.g2d"), "utf8").replace("param height: float = 1;", "param height: float = 1 in 0.5..3 step 0.5;");
+  check(ranged.includes("in 0.5..3"), "the 3D grammar's range");
+  writeFileSync(join(work, "sierpinski.g2d"), ranged);
   await waitFor("the 3D picture", () => window.g2dStudio.last && window.g2dStudio.last.space === "3d", { timeout: 20000 });
   check(await page.$eval("#solid canvas", (c) => c.width > 100 && c.height > 100), "the 3D picture's canvas");
   check(!(await page.$eval("#view-panel", (p) => p.hidden)) && (await page.$eval("#flat", (p) => p.hidden)), "3D: the viewer's panel, no SVG");
@@ -166,10 +169,14 @@ try {
   await page.keyboard.press("2");   // the viewer's side view
   const camera = await page.evaluate(() => window.g2dStudio.camera());
   n = await draws();
-  await page.$eval("#param-height", (f) => ((f.value = "2"), f.dispatchEvent(new Event("input"))));
+  const slider = await page.$eval("#param-height + input[type=range], .param input[type=range][aria-label=height]",
+    (r) => ({ min: r.min, max: r.max, step: r.step, value: r.value }));
+  check(JSON.stringify(slider) === JSON.stringify({ min: "0.5", max: "3", step: "0.5", value: "1" }), `the range's slider: ${JSON.stringify(slider)}`);
+  await page.$eval(".param input[type=range][aria-label=height]", (r) => ((r.value = "2"), r.dispatchEvent(new Event("input"))));
   await waitFor("the 3D redraw", (k) => window.g2dStudio.draws > k, { timeout: 20000 }, n);
   check(JSON.stringify(await page.evaluate(() => window.g2dStudio.camera())) === JSON.stringify(camera),
         "the camera stays across redraws");
+  check(await page.$eval("#param-height", (f) => f.value) === "2", "the slider moves the number field");
   await page.screenshot({ path: join(artifacts, "studio_g3_box.png") });
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);
 } finally {

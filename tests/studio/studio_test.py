@@ -213,6 +213,13 @@ try:
           f"run params: {run.get('params')}")
     check(bad_param.get("params") == run.get("params"), f"a failed run still gives the params: {bad_param.get('params')}")
 
+    # A range in the declaration comes with the spec, for a slider.
+    house = open(os.path.join(SRC, "examples", "g3_house.g2d")).read()
+    status, ranged = request(port, "POST", "/api/run", {"text": house.replace("int = 3 in 1..16", "int = 3 in 1..16 step 3")})
+    check(status == 200 and ranged["params"][:2] == [
+        {"name": "windows", "type": "int", "type_name": "int", "default": 3, "min": 1, "max": 16, "step": 3},
+        {"name": "storeys", "type": "int", "type_name": "int", "default": 2, "min": 1, "max": 7}], f"ranged params: {ranged.get('params')}")
+
     # A 3D grammar: the --view page's model, and no SVG (the page draws the model).
     box = open(os.path.join(SRC, "examples", "g3_box.g2d")).read()
     status, run3 = request(port, "POST", "/api/run", {"text": box})
