@@ -35,7 +35,7 @@ ALLOWED = {
     "emit": {"diag", "ir", "lower", "engine"},
     "lsp": {"ast", "diag", "front", "sema", "engine", "antlr"},   # the lexer's keyword list
     "show": {"diag", "ir", "sema", "engine"},
-    "studio": {"ast", "diag", "ir", "front", "interp", "engine", "run"},   # g2d studio: check and run on a server
+    "studio": {"ast", "diag", "ir", "front", "interp", "lsp", "engine", "run"},   # g2d studio: check, complete and run on a server
     "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "studio", "infer", "import", "engine", "run"},
 }
 # The tools beside the compiler (tools/) include none of its stages.

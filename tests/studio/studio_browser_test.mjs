@@ -94,6 +94,15 @@ try {
   await waitFor("the diagnostics to clear", () => document.querySelectorAll("#diagnostics li").length === 0, { timeout: 20000 });
   check((await page.evaluate(() => window.g2dStudio.marks())).length === 0, "the editor's marks are cleared");
 
+  // Completion as the language server gives it: after `ab.`, the edge's attribute.
+  await page.evaluate(() => window.g2dStudio.select("ab.gen <") && window.g2dStudio.select("gen <"));
+  await page.keyboard.press("ArrowLeft");
+  await page.keyboard.down("Control"), await page.keyboard.press("Space"), await page.keyboard.up("Control");
+  await waitFor("the completion list", () => document.querySelector(".cm-tooltip-autocomplete li") !== null, { timeout: 20000 });
+  const offered = await page.$$eval(".cm-tooltip-autocomplete li", (l) => l.map((li) => li.textContent));
+  check(offered.some((o) => o.startsWith("gen")) && !offered.some((o) => o.startsWith("Corner")), `completion after ab.: ${offered}`);
+  await page.keyboard.press("Escape");
+
   // The parameters panel: a labelled control per param; changing it redraws.
   check(await page.$eval("label[for=param-generations]", (l) => l.textContent) === "generations", "the parameter's label");
   await page.$eval("#param-generations", (f) => ((f.value = "2"), f.dispatchEvent(new Event("input"))));
@@ -156,6 +165,28 @@ try {
   writeFileSync(join(work, "sierpinski.g2d"), readFileSync(join(src, "examples/sierpinski.g2d"), "utf8").replace("int = 5", "int = 1"));
   await waitStatus("1 step,");
   check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1"), "the editor shows the file as changed on disk");
+
+  // Changed on disk under unsaved edits: the page says so and keeps the edits; the user keeps them…
+  const onDisk = (n) => readFileSync(join(src, "examples/sierpinski.g2d"), "utf8").replace("int = 5", `int = ${n}`);
+  await page.evaluate(() => window.g2dStudio.select("int = 1"));
+  await page.keyboard.type("int = 2");
+  await waitStatus("2 steps");
+  writeFileSync(join(work, "sierpinski.g2d"), onDisk(4));
+  await waitFor("the conflict bar", () => !document.getElementById("conflict").hidden, { timeout: 20000 });
+  check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 2"), "the edits stay when the file changes on disk");
+  await page.click("#overwrite-file");
+  await waitFor("the save over the file", () => document.getElementById("status").textContent === "Saved", { timeout: 20000 });
+  check(readFileSync(join(work, "sierpinski.g2d"), "utf8").includes("int = 2;") && await page.$eval("#conflict", (c) => c.hidden),
+        "Keep mine and save writes the edits over the file");
+  // … or reloads the file.
+  await page.evaluate(() => window.g2dStudio.select("int = 2"));
+  await page.keyboard.type("int = 3");
+  await waitStatus("3 steps");
+  writeFileSync(join(work, "sierpinski.g2d"), onDisk(1));
+  await waitFor("the conflict bar again", () => !document.getElementById("conflict").hidden, { timeout: 20000 });
+  await page.click("#reload-file");
+  await waitStatus("1 step,");
+  check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1;"), "Reload it takes the file from disk");
 
   // A 3D grammar on disk: the viewer draws it; a parameter redraws it with the camera where it was.
   // (Its height given a range, so that the panel shows a slider.)
