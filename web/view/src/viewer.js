@@ -36,6 +36,7 @@ import {
   PerspectiveCamera,
   Quaternion,
   Scene,
+  IcosahedronGeometry,
   SphereGeometry,
   Sprite,
   SpriteMaterial,
@@ -126,8 +127,10 @@ function tubes(palette, nodes, edges) {
 }
 
 function spheres(palette, shown) {
-  const mesh = new InstancedMesh(new SphereGeometry(1, roundness(16, shown.length), roundness(12, shown.length)),
-    new MeshLambertMaterial(), shown.length);
+  // Past 5,000 balls, each is a once-divided icosahedron (80 triangles, rounder than a sphere of as many).
+  const ball = shown.length > 5000 ? new IcosahedronGeometry(1, 1)
+    : new SphereGeometry(1, roundness(16, shown.length), roundness(12, shown.length));
+  const mesh = new InstancedMesh(ball, new MeshLambertMaterial(), shown.length);
   const m = new Matrix4();
   shown.forEach((n, i) => {
     m.makeScale(n[3], n[3], n[3]).setPosition(n[0], n[1], n[2]);
