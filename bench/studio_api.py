@@ -3,7 +3,7 @@
 at its default size, the fastest of --repeat round trips (HTTP on loopback,
 compile, derive, SVG, the 3D model, JSON), and the server's own "ms".
 Prints one Markdown row per example, then the median and the worst.
-The page's side (parse, draw) is measured in the browser; see docs/studio-plan.md.
+The page's side (parse, draw) is measured in the browser by bench/studio_keystroke.mjs.
 Usage: python3 bench/studio_api.py [--g2d build/release/bin/g2d] [--repeat 3]
 """
 import argparse

@@ -27,7 +27,11 @@ topDecl
 // `space 3d;`: positions are vec3 (the default is `space 2d;`).
 spaceDecl   : 'space' SPACE_DIM ';' ;
 importDecl  : 'import' STRING ';' ;
-paramDecl   : 'param' name=(ID | 'merge') ':' typeRef '=' expr ';' ;
+// param depth: int = 6 in 1..10;   param tilt: float = 0.5 in 0..1 step 0.05;
+// The range (int and float only) bounds the values a run accepts; `step` is
+// not a keyword (it may still name anything): sema checks the word.
+paramDecl   : 'param' name=(ID | 'merge') ':' typeRef '=' expr paramRange? ';' ;
+paramRange  : 'in' lower=expr '..' upper=expr (stepWord=ID step=expr)? ;
 constDecl   : 'const' ID (':' typeRef)? '=' expr ';' ;
 enumDecl    : 'enum' ID '{' ID (',' ID)* ','? '}' ;
 fnDecl      : 'fn' ID '(' (fnParam (',' fnParam)*)? ')' '->' typeRef '=' expr ';' ;
@@ -199,7 +203,9 @@ signedNumber: '-'? (INT | FLOAT) ;
 // ---- lexer -----------------------------------------------------------------
 SPACE_DIM   : [23] [d] ;
 ID          : [a-zA-Z_] [a-zA-Z_0-9]* ;
-FLOAT       : DIGITS '.' DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
+// `1..10` is a range, not the float `1.` and the float `.10`: a `.` after
+// digits starts a fraction only when no second `.` follows.
+FLOAT       : DIGITS '.' {_input->LA(1) != '.'}? DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
 INT         : DIGITS ;
 fragment DIGITS   : [0-9]+ ;
 fragment EXPONENT : [eE] [+-]? DIGITS ;

@@ -190,7 +190,10 @@ struct RuleDecl {
 // ---- declarations ----------------------------------------------------------
 struct SpaceDecl { int dimensions = 2; Span span; };
 struct ImportDecl { std::string path; Span span; };
-struct ParamDecl { Ident name; TypeRef type; ExprPtr value; Span span; };
+// `in LOWER..UPPER [step STEP]` after a parameter's default (`step` is a
+// plain name: sema checks the word).
+struct ParamRange { ExprPtr lower, upper; std::optional<Ident> stepWord; ExprPtr step; Span span; };
+struct ParamDecl { Ident name; TypeRef type; ExprPtr value; Span span; std::optional<ParamRange> range; };
 struct ConstDecl { Ident name; std::optional<TypeRef> type; ExprPtr value; Span span; };
 struct EnumDecl { Ident name; std::vector<Ident> values; Span span; };
 struct FnParam { Ident name; TypeRef type; };

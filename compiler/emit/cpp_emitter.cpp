@@ -156,7 +156,12 @@ private:
             if (p.type.kind == ir::TypeKind::Enum)
                 for (std::size_t v = 0; v < prog_.enums[p.type.enumId].values.size(); ++v)
                     out += (v ? ", " : "") + cLiteral(prog_.enums[p.type.enumId].values[v]);
-            out += "}, " + valueOf(p.type, cppLiteral(p.defaultValue, p.type)) + "});\n";
+            // The range as ir::Param holds it (interpreted_run.cpp copies the same fields).
+            auto bound = [](const std::optional<double>& b) {
+                return b ? cppLiteral(ir::Value{*b}, ir::kFloatType) : std::string("std::nullopt");
+            };
+            out += "}, " + valueOf(p.type, cppLiteral(p.defaultValue, p.type)) + ", " + bound(p.min) + ", " + bound(p.max) +
+                   ", " + bound(p.step) + "});\n";
         }
         if (prog_.space3d) out += "        schema_.space3d = true;\n";
         for (const auto& k : prog_.kinds) {

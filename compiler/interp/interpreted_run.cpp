@@ -26,6 +26,9 @@ std::vector<rt::ParamSpec> paramSpecs(const ir::Program& prog) {
         default: s.type = rt::ParamType::String; break;
         }
         s.defaultValue = fromLiteral(p.defaultValue);
+        s.min = p.min;
+        s.max = p.max;
+        s.step = p.step;
         out.push_back(std::move(s));
     }
     return out;

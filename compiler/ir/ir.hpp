@@ -184,6 +184,9 @@ struct Param {
     std::string name;
     Type type;
     Value defaultValue;
+    // `in MIN..MAX [step STEP]` (int and float only), folded; a run refuses
+    // values outside [min, max]. Both back ends copy them into rt::ParamSpec.
+    std::optional<double> min, max, step;
     Span span;
 };
 

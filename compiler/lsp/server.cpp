@@ -5,17 +5,15 @@
 #include <map>
 #include <memory>
 #include <ostream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "front/compile.hpp"
 #include "lsp/json_rpc.hpp"
-#include "front/reserved_names.hpp"
+#include "lsp/completion.hpp"
 #include "lsp/positions.hpp"
 #include "lsp/symbol_index.hpp"
 #include "sema/builtins.hpp"
-#include "sema/element_facts.hpp"
 
 namespace g2d::lsp {
 
@@ -70,21 +68,6 @@ int symbolKindNumber(SymbolKind k) {   // LSP SymbolKind
     case SymbolKind::Enumerator: return 22;    // EnumMember
     case SymbolKind::Import: return 2;         // Module
     default: return 13;                        // Variable
-    }
-}
-
-int completionKindNumber(SymbolKind k) {   // LSP CompletionItemKind
-    switch (k) {
-    case SymbolKind::NodeKind: return 7;       // Class
-    case SymbolKind::EdgeKind: return 22;      // Struct
-    case SymbolKind::FaceKind: return 22;      // Struct
-    case SymbolKind::Face: return 6;           // Variable
-    case SymbolKind::Attribute: return 10;     // Property
-    case SymbolKind::Function: return 3;       // Function
-    case SymbolKind::Const: return 21;         // Constant
-    case SymbolKind::Enum: return 13;          // Enum
-    case SymbolKind::Enumerator: return 20;    // EnumMember
-    default: return 6;                         // Variable
     }
 }
 
@@ -365,32 +348,8 @@ private:
         const Place p = place(params);
         json items = json::array();
         if (!p.doc) return items;
-        std::set<std::string> seen;
-        auto add = [&](const std::string& label, int kind, const std::string& detail) {
-            if (!seen.insert(label).second) return;
-            items.push_back(json{{"label", label}, {"kind", kind}, {"detail", detail}});
-        };
-        if (!p.receiver.empty()) {
-            // After `x.`: x's attributes (all attributes if x's kind is unknown),
-            // and the facts of its class (an edge has no position).
-            std::string kind;
-            ir::ElemClass cls = ir::ElemClass::Node;
-            if (const Symbol* r = p.doc->index->resolve(p.receiver, kMainFile, p.line, p.col)) {
-                kind = r->typeName;
-                if (r->kind == SymbolKind::PatternEdge || r->kind == SymbolKind::DaughterEdge) cls = ir::ElemClass::Edge;
-                if (r->kind == SymbolKind::Face) cls = ir::ElemClass::Face;
-            }
-            for (const auto& s : p.doc->index->all())
-                if (s.kind == SymbolKind::Attribute && (kind.empty() || s.container == kind))
-                    add(s.name, 10, s.typeName + " (" + s.container + ")");
-            for (const auto& f : sema::elementFacts())
-                if (sema::hasFact(f, cls, p.doc->index->space3d())) add(f.name, 10, f.meaning);
-            return items;
-        }
-        for (const Symbol* s : p.doc->index->visible(kMainFile, p.line, p.col))
-            if (s->kind != SymbolKind::Rule) add(s->name, completionKindNumber(s->kind), SymbolIndex::describe(s->kind));
-        for (const auto& b : sema::builtinFunctions()) add(b.name, 3, b.signature);
-        for (const auto& k : front::keywords()) add(k, 14, "keyword");
+        for (const auto& item : completionsAt(*p.doc->index, kMainFile, p.line, p.col, p.receiver))
+            items.push_back(json{{"label", item.label}, {"kind", item.kind}, {"detail", item.detail}});
         return items;
     }
 

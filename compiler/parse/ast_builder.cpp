@@ -104,8 +104,18 @@ public:
     Decl decl(P::TopDeclContext* ctx) {
         if (auto* c = ctx->importDecl())
             return Decl{ImportDecl{unescape(c->STRING()->getText()), span(c)}};
-        if (auto* c = ctx->paramDecl())
-            return Decl{ParamDecl{ident(c->name), typeRef(c->typeRef()), expr(c->expr()), span(c)}};
+        if (auto* c = ctx->paramDecl()) {
+            ParamDecl d{ident(c->name), typeRef(c->typeRef()), expr(c->expr()), span(c), std::nullopt};
+            if (auto* r = c->paramRange()) {
+                ParamRange range{expr(r->lower), expr(r->upper), std::nullopt, nullptr, span(r)};
+                if (r->stepWord) {
+                    range.stepWord = ident(r->stepWord);
+                    range.step = expr(r->step);
+                }
+                d.range = std::move(range);
+            }
+            return Decl{std::move(d)};
+        }
         if (auto* c = ctx->constDecl()) {
             ConstDecl d{ident(c->ID()), std::nullopt, expr(c->expr()), span(c)};
             if (c->typeRef()) d.type = typeRef(c->typeRef());

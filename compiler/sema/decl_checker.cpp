@@ -6,6 +6,7 @@
 
 #include "sema/builtins.hpp"
 #include "sema/const_fold.hpp"
+#include "sema/param_range_checker.hpp"
 
 namespace g2d::sema {
 
@@ -153,6 +154,7 @@ void checkParam(Globals& g, ExprChecker& ec, const ast::ParamDecl& d) {
     p.name = d.name.name;
     p.type = *type;
     p.span = d.span;
+    bool defaultKnown = false;
     if (value) {
         std::string error;
         auto folded = fold(*value, g.prog, &error);
@@ -163,8 +165,10 @@ void checkParam(Globals& g, ExprChecker& ec, const ast::ParamDecl& d) {
                                              "` must be a constant (literals and constants only)");
         } else {
             p.defaultValue = *folded;
+            defaultKnown = true;
         }
     }
+    checkParamRange(g, ec, d, p, defaultKnown);
     g.params[p.name] = static_cast<int>(g.prog.params.size());
     g.paramUsed.push_back(false);
     g.paramFile.push_back(d.name.span.file);

@@ -28,10 +28,12 @@ rt::RunOutputs outputsOf(const StudioDerivation& run, const RunInput& input) {
     return outputs;
 }
 
-std::string svgOf(StudioDerivation& run, const RunInput& input) {
+// `compact`: alike lines joined into paths (the same picture, fewer elements for the page).
+std::string svgOf(StudioDerivation& run, const RunInput& input, bool compact = false) {
     rt::StringOut svg;
     rt::RunOutputs outputs = outputsOf(run, input);
     outputs.svg = &svg;
+    outputs.svgOptions.compact = compact;
     rt::writeRunOutputs(*run.grammar, outputs);
     return std::move(svg.text());
 }
@@ -65,7 +67,7 @@ ApiReply deriveText(const std::string& path, const RunInput& input, const std::f
             view.home = outputsOf(*run, input).view.toward;
             model = rt::viewModelJson(view);
         } else {
-            svg = svgOf(*run, input);
+            svg = svgOf(*run, input, true);
         }
         if (run->trace) trace = run->trace->json(run->name, input.seed, run->stopped);
     } catch (const std::exception& e) {

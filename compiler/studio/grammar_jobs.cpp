@@ -4,6 +4,7 @@
 
 #include "g2d/deadline.hpp"
 #include "studio/grammar_check.hpp"
+#include "studio/grammar_complete.hpp"
 
 namespace g2d::studio {
 
@@ -24,6 +25,10 @@ ApiReply GrammarJobs::onWorker(std::function<ApiReply()> job) {
 
 ApiReply GrammarJobs::check(const std::string& text) {
     return onWorker([this, text] { return jsonReply(200, checkText(path_, text)); });
+}
+
+ApiReply GrammarJobs::complete(const std::string& text, std::uint32_t line, std::uint32_t character) {
+    return onWorker([this, text, line, character] { return jsonReply(200, completeText(path_, text, line, character)); });
 }
 
 ApiReply GrammarJobs::imports() {

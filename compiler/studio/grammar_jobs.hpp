@@ -20,6 +20,7 @@ public:
 
     // Each blocks the calling (HTTP) thread until the worker has answered.
     ApiReply check(const std::string& text);
+    ApiReply complete(const std::string& text, std::uint32_t line, std::uint32_t character);
     ApiReply run(const RunInput& input);
     ApiReply exportFile(const RunInput& input, ExportFormat format);
     ApiReply seeds(const RunInput& input, std::uint64_t first, int count, int width);

@@ -42,6 +42,9 @@ nlohmann::json paramSpecsJson(const std::vector<rt::ParamSpec>& specs) {
         nlohmann::json p = {{"name", spec.name}, {"type", typeWord(spec.type)}, {"type_name", spec.typeName},
                             {"default", valueJson(spec.defaultValue, spec)}};
         if (spec.type == rt::ParamType::Enum) p["values"] = spec.enumValues;
+        if (spec.min) p["min"] = *spec.min;   // the declaration's range (`in 1..10 step 1`): a slider
+        if (spec.max) p["max"] = *spec.max;
+        if (spec.step) p["step"] = *spec.step;
         out.push_back(std::move(p));
     }
     return out;

@@ -1,6 +1,6 @@
 #pragma once
 // The grammar's `param` declarations as the page's parameters panel reads
-// them: [{"name", "type", "type_name", "default", "values"?}].
+// them: [{"name", "type", "type_name", "default", "values"?, "min"?, "max"?, "step"?}].
 #include <vector>
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,7 @@
 #include "studio/run_request.hpp"
 
+#include "studio/api_reply.hpp"
+
 namespace g2d::studio {
 
 namespace {
@@ -28,10 +30,11 @@ struct FormatName {
     const char* name;
     const char* mediaType;
 };
+// Types cpp-httplib does not compress (api_reply.hpp says why).
 constexpr FormatName kFormats[] = {
-    {ExportFormat::Svg, "svg", "image/svg+xml"},        {ExportFormat::Png, "png", "image/png"},
-    {ExportFormat::Json, "json", "application/json"},   {ExportFormat::Obj, "obj", "text/plain"},
-    {ExportFormat::Mtl, "mtl", "text/plain"},           {ExportFormat::Gltf, "glb", "model/gltf-binary"},
+    {ExportFormat::Svg, "svg", "image/svg+xml; charset=utf-8"},   {ExportFormat::Png, "png", "image/png"},
+    {ExportFormat::Json, "json", kJsonType},                      {ExportFormat::Obj, "obj", "model/obj"},
+    {ExportFormat::Mtl, "mtl", "model/mtl"},                      {ExportFormat::Gltf, "glb", "model/gltf-binary"},
 };
 
 const FormatName& formatName(ExportFormat format) {

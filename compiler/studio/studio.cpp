@@ -26,6 +26,9 @@ int runStudio(const StudioOptions& options) {
     FileWatch watch(file);
     GrammarJobs jobs(options.file);
     httplib::Server server;
+    // An answer goes out at once: with Nagle's algorithm, its last small write waited for the
+    // browser's delayed ACK, and every picture came 200 ms late.
+    server.set_tcp_nodelay(true);
     int port = 0;
     addStudioRoutes(server, StudioParts{file, watch, jobs, port});
 

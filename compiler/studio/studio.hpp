@@ -1,6 +1,6 @@
 #pragma once
 // `g2d studio [FILE] [--port N]`: a local server for editing a grammar and
-// watching its picture (docs/studio-plan.md). It listens on 127.0.0.1 only,
+// watching its picture (docs/studio.md). It listens on 127.0.0.1 only,
 // prints its URL as the first line of standard output, and serves until
 // SIGINT or SIGTERM.
 

@@ -54,10 +54,10 @@ void addStudioRoutes(httplib::Server& server, StudioParts parts) {
 
     server.Get("/", [](const httplib::Request&, httplib::Response& res) {
         res.set_header("Content-Security-Policy", studioPagePolicy());
-        res.set_content(studioPage(), "text/html; charset=utf-8");
+        res.set_content(studioPage(), "text/html; charset=utf-8");   // 5 kB: compressed or not, it makes no odds
     });
     server.Get("/studio.js", [](const httplib::Request&, httplib::Response& res) {
-        res.set_content(studioScript(), "text/javascript; charset=utf-8");
+        res.set_content(studioScript(), "application/javascript; charset=utf-8");   // not compressed (api_reply.hpp)
     });
 
     server.Get("/api/file", [parts](const httplib::Request&, httplib::Response& res) {
@@ -82,6 +82,16 @@ void addStudioRoutes(httplib::Server& server, StudioParts parts) {
         if (!body) return;
         if (!(*body)["text"].is_string()) return send(res, errorReply(400, "expected {\"text\": …}"));
         send(res, parts.jobs.check((*body)["text"]));
+    });
+    // The language server's completion at {"text", "line" (1-based), "character" (0-based, UTF-16)}.
+    server.Post("/api/complete", [parts](const httplib::Request& req, httplib::Response& res) {
+        auto body = jsonBody(req, res);
+        if (!body) return;
+        const auto &text = (*body)["text"], &line = (*body)["line"], &character = (*body)["character"];
+        if (!text.is_string() || !line.is_number_unsigned() || !character.is_number_unsigned() ||
+            line.get<std::uint64_t>() > UINT32_MAX || character.get<std::uint64_t>() > UINT32_MAX)
+            return send(res, errorReply(400, "expected {\"text\": …, \"line\": N, \"character\": N}"));
+        send(res, parts.jobs.complete(text, line.get<std::uint32_t>(), character.get<std::uint32_t>()));
     });
     server.Post("/api/run", [parts](const httplib::Request& req, httplib::Response& res) {
         auto body = jsonBody(req, res);

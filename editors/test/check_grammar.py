@@ -623,6 +623,8 @@ defs "<filter id=\"blur\"/>";
 const half: float = 1.5e3 + .5 + 2E-2 + 7;
 const turn = tau / 4 + pi;
 param who: Side = Left;
+param depth: int = 6 in 1..10 step 2;
+param tilt: float = 0.5 in 0.25..turn;
 enum Side { Left, Right, }
 fn mid(a: vec2, b: vec2) -> vec2 = (a + b) / 2;
 fn pickone(x: int) -> Side = x > 0 ? Side.Left : Right;
@@ -662,6 +664,15 @@ SNIPPET_EXPECT = [
     ("const turn", "tau", 0, "support.constant", True),
     ("const turn", "pi", 0, "support.constant", True),
     ("param who: Side", "Side", 0, "entity.name.type", True),
+    ("param depth", "in", 0, "keyword.control", True),
+    ("param depth", "1", 0, "constant.numeric.integer", True),
+    ("param depth", "..", 0, "keyword.operator.range", True),
+    ("param depth", "10", 0, "constant.numeric.integer", True),
+    ("param depth", "step", 0, "keyword.control", True),
+    ("param depth", "2", 0, "constant.numeric.integer", True),
+    ("param tilt", "0.25", 0, "constant.numeric.float", True),
+    ("param tilt", "..", 0, "keyword.operator.range", True),
+    ("param tilt", "turn", 0, "keyword", False),
     ("enum Side", "Side", 0, "entity.name.type", True),
     ("fn mid", "fn", 0, "keyword", True),
     ("fn mid", "mid", 0, "entity.name.function", True),
@@ -875,6 +886,10 @@ VIM_EXPECT = [
     ("snippet", "fn pickone", "->", 0, "g2dReturnArrow"),
     ("snippet", "fn pickone", "Side", 0, "g2dReturnKind"),
     ("snippet", "fn pickone", "Right", 0, ""),
+    ("snippet", "param depth", "1", 0, "g2dInteger"),
+    ("snippet", "param depth", "10", 0, "g2dInteger"),
+    ("snippet", "param depth", "step", 0, "g2dRuleKeyword"),
+    ("snippet", "param tilt", "0.25", 0, "g2dFloat"),
     ("snippet", "canvas (-1, 0) to", "canvas", 0, "g2dDeclKeyword"),
     ("snippet", "canvas (-1, 0) to", "to", 0, "g2dDeclKeyword"),
     ("snippet", "axiom {", "vec2", 0, "g2dBuiltin"),

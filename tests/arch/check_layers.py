@@ -35,7 +35,7 @@ ALLOWED = {
     "emit": {"diag", "ir", "lower", "engine"},
     "lsp": {"ast", "diag", "front", "sema", "engine", "antlr"},   # the lexer's keyword list
     "show": {"diag", "ir", "sema", "engine"},
-    "studio": {"ast", "diag", "ir", "front", "interp", "infer", "engine", "run"},   # g2d studio: check, run and infer on a server
+    "studio": {"ast", "diag", "ir", "front", "interp", "lsp", "infer", "engine", "run"},   # g2d studio: check, complete, run and infer on a server
     "driver": {"ast", "diag", "ir", "front", "interp", "emit", "lsp", "show", "studio", "infer", "import", "engine", "run"},
 }
 # The tools beside the compiler (tools/) include none of its stages.

@@ -50,7 +50,7 @@ expect_code 2 ./div --timeout -3
 expect_code 2 ./div --frobnicate
 grep -q '^div: error: .*frobnicate' err.txt || fail "a compiled program names itself: $(cat err.txt)"
 expect_code 2 ./div -D nosuch=1
-grep -qx 'div: error: -D nosuch: the grammar has no parameter `nosuch` (its parameters: d)' err.txt || fail "compiled -D error: $(cat err.txt)"
+grep -qx 'div: error: the grammar has no parameter `nosuch` (its parameters: d)' err.txt || fail "compiled -D error: $(cat err.txt)"
 expect_code 2 ./div --seed -1
 expect_code 0 ./div --help
 grep -q '^  d: float  *default 0$' out.txt || fail "compiled --help lists no parameters: $(cat out.txt)"

@@ -29,7 +29,7 @@ PY
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" -D " max_lod = 2 " --no-svg --stats
 grep -q '"steps": 15,' out.txt || fail "-D with spaces: $(cat out.txt) $(cat err.txt)"
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D "gens = 3" --no-svg
-grep -qx 'g2d run: error: -D gens: the grammar has no parameter `gens` (its parameters: max_lod)' err.txt || fail "-D unknown: $(cat err.txt)"
+grep -qx 'g2d run: error: the grammar has no parameter `gens` (its parameters: max_lod)' err.txt || fail "-D unknown: $(cat err.txt)"
 # `g2d run FILE --help` lists the grammar's parameters, with types and defaults
 expect_code 0 "$g2d" run "$src/examples/koch_snowflake.g2d" --help
 grep -q -- '--verify-matches' out.txt || fail "run --help: $(cat out.txt)"
@@ -77,7 +77,7 @@ grep -q "it is a directory" err.txt || fail "directory output message: $(cat err
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D nosuch=3
 grep -q 'no parameter `nosuch` (its parameters: max_lod)' err.txt || fail "unknown parameter message: $(cat err.txt)"
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" -D max_lod=abc
-grep -q 'not a valid int' err.txt || fail "bad value message: $(cat err.txt)"
+grep -qx 'g2d run: error: parameter `max_lod`: expected an int, got `abc`' err.txt || fail "bad value message: $(cat err.txt)"
 # -D takes vec2, enum and bool values as the language writes them (and the short forms).
 cat > params.g2d <<'G2D'
 enum Mode { Big, Small }
@@ -96,9 +96,9 @@ for vec in "(1.5,-2)" "1.5,-2" "( 1.5 , -2 )"; do
   done
 done
 expect_code 2 "$g2d" run params.g2d -D m=Colour.Small --no-svg
-grep -qx 'g2d run: error: -D m=Colour.Small: not a valid Mode (one of Big Small)' err.txt || fail "-D wrong enum: $(cat err.txt)"
+grep -qx 'g2d run: error: parameter `m`: expected a Mode, got `Colour.Small` (one of Big Small)' err.txt || fail "-D wrong enum: $(cat err.txt)"
 expect_code 2 "$g2d" run params.g2d -D b=1 --no-svg
-grep -qx 'g2d run: error: -D b=1: not a valid bool (write true or false)' err.txt || fail "-D bad bool: $(cat err.txt)"
+grep -qx 'g2d run: error: parameter `b`: expected a bool, got `1` (write true or false)' err.txt || fail "-D bad bool: $(cat err.txt)"
 expect_code 2 "$g2d" run "$src/examples/koch_snowflake.g2d" --seed -1
 expect_code 2 "$g2d" run
 

@@ -66,7 +66,7 @@ path = os.path.join(work, "grammar.g2d")
 uri = "file://" + path
 broken = """node Point { size: float = 1; }
 edge Seg directed { lod: int = 0; }
-param levels: int = 3;
+param levels: int = 3 in 1..8;
 axiom { a: Point at (0, 0); b: Point at (1, 0); a -[Seg]-> b; }
 rule Split {
     match { s: Point; e: Point; old: s -[Seg]-> e where old.lod < levles; }
@@ -117,7 +117,7 @@ check(h and "attribute" in h["contents"]["value"] and "lod: int = 0" in h["conte
 h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(5, "old")})["result"]
 check(h and "matched edge" in h["contents"]["value"] and "`Seg`" in h["contents"]["value"], "hover on old: %s" % h)
 h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(5, "levels")})["result"]
-check(h and "parameter" in h["contents"]["value"] and "param levels: int = 3;" in h["contents"]["value"], "hover on levels: %s" % h)
+check(h and "parameter" in h["contents"]["value"] and "param levels: int = 3 in 1..8;" in h["contents"]["value"], "hover on levels (its range too): %s" % h)
 
 h = c.request("textDocument/hover", {"textDocument": doc, "position": pos(7, "v,")})["result"]
 check(h and "let binding" in h["contents"]["value"] and "`v`: `vec2`" in h["contents"]["value"], "hover on let v (type inferred): %s" % h)

@@ -94,6 +94,15 @@ try {
   await waitFor("the diagnostics to clear", () => document.querySelectorAll("#diagnostics li").length === 0, { timeout: 20000 });
   check((await page.evaluate(() => window.g2dStudio.marks())).length === 0, "the editor's marks are cleared");
 
+  // Completion as the language server gives it: after `ab.`, the edge's attribute.
+  await page.evaluate(() => window.g2dStudio.select("ab.gen <") && window.g2dStudio.select("gen <"));
+  await page.keyboard.press("ArrowLeft");
+  await page.keyboard.down("Control"), await page.keyboard.press("Space"), await page.keyboard.up("Control");
+  await waitFor("the completion list", () => document.querySelector(".cm-tooltip-autocomplete li") !== null, { timeout: 20000 });
+  const offered = await page.$$eval(".cm-tooltip-autocomplete li", (l) => l.map((li) => li.textContent));
+  check(offered.some((o) => o.startsWith("gen")) && !offered.some((o) => o.startsWith("Corner")), `completion after ab.: ${offered}`);
+  await page.keyboard.press("Escape");
+
   // The parameters panel: a labelled control per param; changing it redraws.
   check(await page.$eval("label[for=param-generations]", (l) => l.textContent) === "generations", "the parameter's label");
   await page.$eval("#param-generations", (f) => ((f.value = "2"), f.dispatchEvent(new Event("input"))));
@@ -157,8 +166,33 @@ try {
   await waitStatus("1 step,");
   check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1"), "the editor shows the file as changed on disk");
 
+  // Changed on disk under unsaved edits: the page says so and keeps the edits; the user keeps them…
+  const onDisk = (n) => readFileSync(join(src, "examples/sierpinski.g2d"), "utf8").replace("int = 5", `int = ${n}`);
+  await page.evaluate(() => window.g2dStudio.select("int = 1"));
+  await page.keyboard.type("int = 2");
+  await waitStatus("2 steps");
+  writeFileSync(join(work, "sierpinski.g2d"), onDisk(4));
+  await waitFor("the conflict bar", () => !document.getElementById("conflict").hidden, { timeout: 20000 });
+  check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 2"), "the edits stay when the file changes on disk");
+  await page.click("#overwrite-file");
+  await waitFor("the save over the file", () => document.getElementById("status").textContent === "Saved", { timeout: 20000 });
+  check(readFileSync(join(work, "sierpinski.g2d"), "utf8").includes("int = 2;") && await page.$eval("#conflict", (c) => c.hidden),
+        "Keep mine and save writes the edits over the file");
+  // … or reloads the file.
+  await page.evaluate(() => window.g2dStudio.select("int = 2"));
+  await page.keyboard.type("int = 3");
+  await waitStatus("3 steps");
+  writeFileSync(join(work, "sierpinski.g2d"), onDisk(1));
+  await waitFor("the conflict bar again", () => !document.getElementById("conflict").hidden, { timeout: 20000 });
+  await page.click("#reload-file");
+  await waitStatus("1 step,");
+  check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1;"), "Reload it takes the file from disk");
+
   // A 3D grammar on disk: the viewer draws it; a parameter redraws it with the camera where it was.
-  writeFileSync(join(work, "sierpinski.g2d"), readFileSync(join(src, "examples/g3_box.g2d"), "utf8"));
+  // (Its height given a range, so that the panel shows a slider.)
+  const ranged = readFileSync(join(src, "examples/g3_box.g2d"), "utf8").replace("param height: float = 1;", "param height: float = 1 in 0.5..3 step 0.5;");
+  check(ranged.includes("in 0.5..3"), "the 3D grammar's range");
+  writeFileSync(join(work, "sierpinski.g2d"), ranged);
   await waitFor("the 3D picture", () => window.g2dStudio.last && window.g2dStudio.last.space === "3d", { timeout: 20000 });
   check(await page.$eval("#solid canvas", (c) => c.width > 100 && c.height > 100), "the 3D picture's canvas");
   check(!(await page.$eval("#view-panel", (p) => p.hidden)) && (await page.$eval("#flat", (p) => p.hidden)), "3D: the viewer's panel, no SVG");
@@ -166,10 +200,14 @@ try {
   await page.keyboard.press("2");   // the viewer's side view
   const camera = await page.evaluate(() => window.g2dStudio.camera());
   n = await draws();
-  await page.$eval("#param-height", (f) => ((f.value = "2"), f.dispatchEvent(new Event("input"))));
+  const slider = await page.$eval("#param-height + input[type=range], .param input[type=range][aria-label=height]",
+    (r) => ({ min: r.min, max: r.max, step: r.step, value: r.value }));
+  check(JSON.stringify(slider) === JSON.stringify({ min: "0.5", max: "3", step: "0.5", value: "1" }), `the range's slider: ${JSON.stringify(slider)}`);
+  await page.$eval(".param input[type=range][aria-label=height]", (r) => ((r.value = "2"), r.dispatchEvent(new Event("input"))));
   await waitFor("the 3D redraw", (k) => window.g2dStudio.draws > k, { timeout: 20000 }, n);
   check(JSON.stringify(await page.evaluate(() => window.g2dStudio.camera())) === JSON.stringify(camera),
         "the camera stays across redraws");
+  check(await page.$eval("#param-height", (f) => f.value) === "2", "the slider moves the number field");
   await page.screenshot({ path: join(artifacts, "studio_g3_box.png") });
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);
 } finally {

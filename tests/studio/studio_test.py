@@ -183,22 +183,62 @@ try:
     check(status == 200 and broken["status"] == "invalid" and broken["diagnostics"] == expected and expected
           and expected[0]["line"] > 0 and expected[0]["column"] > 0, f"check of a broken grammar: {broken} vs {expected}")
 
-    # run: the SVG `g2d run` writes, with steps, counts and time.
+    # run: the SVG `g2d run --svg-compact` writes (the same picture in fewer elements), with
+    # steps, counts and time. Exports (below) are the plain SVG.
     status, run = request(port, "POST", "/api/run", {"text": original, "seed": 3, "params": {"generations": 3}})
     subprocess.run([G2D, "run", NAME, "--seed", "3", "-D", "generations=3", "-o", os.path.join(other, "cli.svg")],
                    cwd=work, check=True)
+    subprocess.run([G2D, "run", NAME, "--seed", "3", "-D", "generations=3", "--svg-compact", "-o", os.path.join(other, "compact.svg")],
+                   cwd=work, check=True)
     cli_svg = open(os.path.join(other, "cli.svg")).read()
-    check(status == 200 and run["status"] == "ok" and run["space"] == "2d" and run["svg"] == cli_svg, f"run: {status}")
+    compact_svg = open(os.path.join(other, "compact.svg")).read()
+    check(compact_svg != cli_svg, "the compact SVG differs from the plain one")
+    check(status == 200 and run["status"] == "ok" and run["space"] == "2d" and run["svg"] == compact_svg, f"run: {status}")
     check(run.get("steps") == 3 and run["elements"]["nodes"] == (3 ** 4 + 3) // 2 and run["elements"]["edges"] == 3 ** 4
           and run["ms"] >= 0 and run["stopped"] == "step_limit" or run.get("stopped") == "terminal",
           f"run counts: {run.get('steps')} {run.get('elements')} {run.get('stopped')}")
     status, bad_param = request(port, "POST", "/api/run", {"text": original, "params": {"generations": "many"}})
-    check(status == 422 and "not a valid int" in bad_param["message"], f"a bad parameter: {status} {bad_param}")
+    check(status == 422 and bad_param["message"] == "parameter `generations`: expected an int, got `many`",
+          f"a bad parameter: {status} {bad_param}")
+
+    # No answer is compressed, though the browser accepts it: on loopback it only costs time
+    # (Brotli took 200 ms for this picture, and seconds for the page's script).
+    for method, path, body in [("POST", "/api/run", {"text": original}), ("GET", "/studio.js", None),
+                               ("POST", "/api/export", {"text": original, "format": "svg"})]:
+        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+        conn.request(method, path, json.dumps(body) if body else None,
+                     {"Accept-Encoding": "gzip, deflate, br", "Content-Type": "application/json"})
+        res = conn.getresponse()
+        res.read()
+        check(res.status == 200 and res.getheader("Content-Encoding") is None, f"{path} is sent as it is: {res.getheader('Content-Encoding')}")
+        conn.close()
 
     # The parameters panel's specs come with every run.
     check(run.get("params") == [{"name": "generations", "type": "int", "type_name": "int", "default": 5}],
           f"run params: {run.get('params')}")
     check(bad_param.get("params") == run.get("params"), f"a failed run still gives the params: {bad_param.get('params')}")
+
+    # Completion: the language server's list at a place in the text (UTF-16 columns, as the browser counts).
+    lines = original.split("\n")
+    row = next(i for i, l in enumerate(lines) if "ab.gen < generations" in l)
+    at = lines[row].index("ab.gen") + 3   # just after `ab.`
+    status, done = request(port, "POST", "/api/complete", {"text": original, "line": row + 1, "character": at})
+    labels = {i["label"]: i for i in done.get("items", [])} if isinstance(done, dict) else {}
+    check(status == 200 and "gen" in labels and labels["gen"]["detail"] == "int (Side)" and "Corner" not in labels,
+          f"completion after `ab.`: {status} {sorted(labels)[:12]}")
+    status, done = request(port, "POST", "/api/complete", {"text": original, "line": row + 1, "character": 8})
+    labels = {i["label"] for i in done.get("items", [])} if isinstance(done, dict) else set()
+    check(status == 200 and {"Corner", "Side", "generations", "sin", "rule", "ab"} <= labels,
+          f"completion in a rule: {status} {sorted(labels)[:20]}")
+    status, _ = request(port, "POST", "/api/complete", {"text": original, "line": -1, "character": 0})
+    check(status == 400, f"a bad completion request: {status}")
+
+    # A range in the declaration comes with the spec, for a slider.
+    house = open(os.path.join(SRC, "examples", "g3_house.g2d")).read()
+    status, ranged = request(port, "POST", "/api/run", {"text": house.replace("int = 3 in 1..16", "int = 3 in 1..16 step 3")})
+    check(status == 200 and ranged["params"][:2] == [
+        {"name": "windows", "type": "int", "type_name": "int", "default": 3, "min": 1, "max": 16, "step": 3},
+        {"name": "storeys", "type": "int", "type_name": "int", "default": 2, "min": 1, "max": 7}], f"ranged params: {ranged.get('params')}")
 
     # A 3D grammar: the --view page's model, and no SVG (the page draws the model).
     box = open(os.path.join(SRC, "examples", "g3_box.g2d")).read()

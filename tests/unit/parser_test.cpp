@@ -159,6 +159,27 @@ TEST_CASE("a face over a loop's turns: Kind(all t [reversed])", "[parser]") {
     CHECK(q.corners.size() == 3);
 }
 
+TEST_CASE("a parameter's range: `1..10` is two ints and `..`, and `1.` is still a float", "[parser]") {
+    auto p = parse("param d: int = 6 in 1..10 step 2;\n"
+                   "param t: float = 0.5 in 0.25..-x;\n"
+                   "const f = 1.;\n");
+    REQUIRE(p.program);
+    const auto& d = std::get<ast::ParamDecl>(p.program->decls[0].decl);
+    REQUIRE(d.range);
+    CHECK(std::get<ast::IntLit>(d.range->lower->node).value == 1);
+    CHECK(std::get<ast::IntLit>(d.range->upper->node).value == 10);
+    REQUIRE(d.range->stepWord);
+    CHECK(d.range->stepWord->name == "step");
+    CHECK(std::get<ast::IntLit>(d.range->step->node).value == 2);
+    CHECK(d.range->span.col == 18);   // from `in`, for the errors about the whole range
+    const auto& t = std::get<ast::ParamDecl>(p.program->decls[1].decl);
+    REQUIRE(t.range);
+    CHECK(std::get<ast::FloatLit>(t.range->lower->node).value == 0.25);
+    CHECK(std::get<ast::Unary>(t.range->upper->node).op == ast::UnaryOp::Neg);
+    CHECK_FALSE(t.range->step);
+    CHECK(std::get<ast::FloatLit>(std::get<ast::ConstDecl>(p.program->decls[2].decl).value->node).value == 1.0);
+}
+
 TEST_CASE("expression precedence", "[parser]") {
     auto p = parse("const x = 1 + 2 * 3 < 4 and not a or b ? -c.d : e;");
     REQUIRE(p.program);
@@ -191,7 +212,7 @@ TEST_CASE("spans are 1-based lines and columns in characters", "[parser]") {
 }
 
 TEST_CASE("syntax errors name the expected tokens in words", "[parser][errors]") {
-    CHECK(firstMessage(parse("param n: int = 3\nnode P;")) == "1:17: expected `;`, found `node`");
+    CHECK(firstMessage(parse("param n: int = 3\nnode P;")) == "1:17: expected `;` or `in`, found `node`");
     CHECK(firstMessage(parse("node P { a: int }")) == "1:17: expected `;` or `=`, found `}`");
     CHECK(firstMessage(parse("const x = ;")) == "1:11: expected an expression, found `;`");
     CHECK(firstMessage(parse("const s = \"abc;")) == "1:11: unterminated string (missing closing `\"`)");

@@ -30,6 +30,8 @@ syn match g2dDeclKeyword "\(^\s*canvas\>[^;:={}]*\)\@<=\<to\>"
 syn match g2dFuncName "\h\w*" contained
 " rules
 syn keyword g2dRuleKeyword match produce let where weight at for in insert between within split around with repeat
+" `param d: int = 6 in 1..10 step 2;`: `step` is a keyword only after a range
+syn match g2dRuleKeyword "\(\<in\>[^;{}]*\.\.[^;{}]*\)\@<=\<step\>"
 syn keyword g2dModifier ordered parallel directed undirected merge intersect dpo
 syn keyword g2dModifier pick nextgroup=g2dPickPolicy skipwhite
 syn match g2dPickPolicy "\h\w*" contained nextgroup=g2dPickMeasure skipwhite
@@ -75,7 +77,8 @@ syn region g2dTernary matchgroup=g2dOperator start="?" end=":" end="\ze[;{}]" co
 
 " ---- literals
 syn match g2dInteger "\<\d\+\>"
-syn match g2dFloat "\<\d\+\.\d*\([eE][+-]\=\d\+\)\="
+" `1..10` is a range: a `.` after digits is no fraction when a second `.` follows
+syn match g2dFloat "\<\d\+\.\.\@!\d*\([eE][+-]\=\d\+\)\="
 syn match g2dFloat "\(\w\|\.\)\@<!\.\d\+\([eE][+-]\=\d\+\)\="
 syn match g2dFloat "\<\d\+[eE][+-]\=\d\+\>"
 syn match g2dEscape "\\." contained

@@ -1,40 +1,40 @@
 // The grammar's editor: CodeMirror 6 with g2d's highlighting, the checker's
-// diagnostics at their lines (@codemirror/lint), and completion of the
-// language's words and the names the text declares.
-import { autocompletion, completeFromList } from "@codemirror/autocomplete";
+// diagnostics at their lines (@codemirror/lint), and the language server's
+// completion.
+import { autocompletion } from "@codemirror/autocomplete";
 import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
 import { bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from "@codemirror/language";
 import { forEachDiagnostic, lintGutter, setDiagnostics } from "@codemirror/lint";
 import { highlightSelectionMatches, searchKeymap } from "@codemirror/search";
 import { Annotation, EditorState } from "@codemirror/state";
 import { EditorView, drawSelection, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
-import { g2dLanguage, g2dWords } from "./g2d_language.js";
+import { g2dLanguage } from "./g2d_language.js";
 
 // Marks a change made from the file on disk: not an edit of the user's.
 const fromFile = Annotation.define();
 
-// The names a text declares (kinds, enums, params, consts, functions, rules), for completion.
-function declaredNames(text) {
-  const names = new Set();
-  for (const m of text.matchAll(/\b(?:node|edge|face|enum|param|const|fn|rule|compound|sequence)\s+([A-Za-z_][A-Za-z0-9_]*)/g))
-    names.add(m[1]);
-  return [...names];
-}
+// The LSP's CompletionItemKind as CodeMirror's icon names.
+const KINDS = { 3: "function", 6: "variable", 7: "class", 10: "property", 13: "enum", 14: "keyword", 20: "enum", 21: "constant", 22: "type" };
 
-function completions(context) {
-  const word = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*/);
-  if (!word || (word.from === word.to && !context.explicit)) return null;
-  const options = [
-    ...declaredNames(context.state.doc.toString()).map((label) => ({ label, type: "variable" })),
-    ...g2dWords.keywords.map((label) => ({ label, type: "keyword" })),
-    ...g2dWords.builtins.map((label) => ({ label, type: "function" })),
-    ...g2dWords.types.map((label) => ({ label, type: "type" })),
-  ];
-  return completeFromList(options)(context);
+// Completion from the language server's list (`complete(text, line, character)`, the studio's
+// /api/complete): names in scope, attributes after `x.`, built-ins and keywords.
+function serverCompletions(complete) {
+  return async (context) => {
+    const word = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*/), dot = context.matchBefore(/\.$/);
+    if (!context.explicit && !dot && (!word || word.from === word.to)) return null;
+    const line = context.state.doc.lineAt(context.pos);
+    const items = await complete(context.state.doc.toString(), line.number, context.pos - line.from);
+    if (context.aborted || !items) return null;
+    return {
+      from: word ? word.from : context.pos,
+      options: items.map((i) => ({ label: i.label, type: KINDS[i.kind] || "text", detail: i.detail })),
+      validFor: /^[A-Za-z_][A-Za-z0-9_]*$/,
+    };
+  };
 }
 
 // An editor in `parent`. `onEdit(text)` is called after every change of the text.
-export function createEditor(parent, { onEdit, onSave }) {
+export function createEditor(parent, { onEdit, onSave, complete }) {
   const view = new EditorView({
     parent,
     state: EditorState.create({
@@ -42,7 +42,7 @@ export function createEditor(parent, { onEdit, onSave }) {
       extensions: [
         lineNumbers(), history(), drawSelection(), highlightActiveLine(), indentOnInput(), bracketMatching(),
         highlightSelectionMatches(), lintGutter(), g2dLanguage, syntaxHighlighting(defaultHighlightStyle),
-        autocompletion({ override: [completions] }),
+        autocompletion({ override: [serverCompletions(complete)] }),
         keymap.of([{ key: "Mod-s", run: () => (onSave(), true), preventDefault: true },
                    indentWithTab, ...defaultKeymap, ...historyKeymap, ...searchKeymap]),
         EditorView.updateListener.of((u) => {

@@ -52,6 +52,3 @@ export const g2dLanguage = StreamLanguage.define({
   },
   languageData: { commentTokens: { line: "//", block: { open: "/*", close: "*/" } } },
 });
-
-// Words the editor offers to complete: keywords and built-ins.
-export const g2dWords = { keywords: [...words.keyword], builtins: [...words.builtin], types: [...words.type] };

@@ -3,7 +3,7 @@
 // from one redraw to the next. A drawing of more than LARGE elements is
 // shown as an image (rendered once by the browser, not as 10^5 DOM
 // elements), and the page says so.
-import { createViewer } from "../../view/src/viewer.js";
+import { createViewer, softwareGL } from "../../view/src/viewer.js";
 
 const LARGE = 100000;
 
@@ -30,11 +30,17 @@ export function createPicture({ flat, solid, panel, note }) {
 
   function showModel(model) {
     flat.hidden = true, solid.hidden = false, panel.hidden = false;
-    const first = !viewer;
-    if (first) viewer = createViewer({ panel, key: "studio", container: solid, keepInHash: false });
-    viewer.draw(model);
-    const { lo, hi } = viewer.bounds(model);
-    viewer.frame(lo, hi, model.home, !first);
+    const { lo, hi } = viewer ? viewer.bounds(model) : {};
+    if (!viewer) {
+      // Redrawn on every edit: without a GPU, smooth edges cost more than the picture is worth.
+      viewer = createViewer({ panel, key: "studio", container: solid, keepInHash: false, antialias: !softwareGL() });
+      viewer.draw(model);
+      const box = viewer.bounds(model);
+      viewer.frame(box.lo, box.hi, model.home);
+    } else {
+      viewer.frame(lo, hi, model.home, true);   // the camera where the user left it
+      viewer.draw(model);                        // one render
+    }
     note.textContent = "";
   }
 

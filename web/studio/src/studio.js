@@ -23,7 +23,11 @@ const studio = (window.g2dStudio = { runs: 0, draws: 0, last: null, errors: 0 })
 const say = (text) => (statusLine.textContent = text);
 const counted = (n, noun) => `${n} ${noun}${n === 1 ? "" : "s"}`;
 
-const editor = createEditor($("editor"), { onEdit: edited, onSave: save });
+const complete = async (text, line, character) => {
+  const { status: code, data } = await api("POST", "/api/complete", { text, line, character });
+  return code === 200 ? data.items : null;
+};
+const editor = createEditor($("editor"), { onEdit: edited, onSave: () => save(), complete });
 const params = createParamsPanel($("params"), () => run());
 const picture = createPicture({ flat: $("flat"), solid: $("solid"), panel: $("view-panel"), note: $("picture-note") });
 const player = createPlayer({ stage: $("stage"), solid: $("player-solid"), panel: $("player-panel"), info: $("info") });
@@ -71,7 +75,10 @@ async function run() {
     say([counted(data.steps, "step"), counted(e.nodes, "node"), counted(e.edges, "edge"), counted(e.faces, "face"),
          `${data.ms.toFixed(1)} ms`].join(", "));
     studio.draws++;
-    studio.last = { editedAt, drawnAt: performance.now(), serverMs: data.ms, space: data.space, elements: e, steps: data.steps };
+    const last = (studio.last = { editedAt, drawnAt: performance.now(), paintedAt: null, serverMs: data.ms, space: data.space,
+                                  elements: e, steps: data.steps });
+    // The frame that shows the picture has been painted once the task after its animation frame runs.
+    requestAnimationFrame(() => setTimeout(() => (last.paintedAt = performance.now())));
     editedAt = null;
     if (tabs.current() === "player") play();
     else if (tabs.current() === "seeds") sheet.fill();
@@ -113,30 +120,38 @@ async function load() {
   await run();
 }
 
-async function save() {
-  const { status: code, data } = await api("PUT", "/api/file", { text: editor.text(), version });
+// The file changed on disk under unsaved edits: the user reloads it or keeps the edits.
+let diskVersion = null;
+function conflict(onDisk) {
+  diskVersion = onDisk;
+  $("conflict").hidden = onDisk === null;
+}
+
+// `over`: written over the file as it is on disk now (the user chose to keep the edits).
+async function save(over = false) {
+  const { status: code, data } = await api("PUT", "/api/file", { text: editor.text(), version: over ? diskVersion : version });
   if (code === 200) {
     version = data.version;
     dirty = false;
+    conflict(null);
     say("Saved");
+  } else if (code === 409) {
+    conflict(data.version);
+    say("Not saved: " + data.message);
   } else {
     say(data.message);
   }
 }
 
-$("save").addEventListener("click", save);
+$("save").addEventListener("click", () => save());
+$("reload-file").addEventListener("click", () => (conflict(null), load()));
+$("overwrite-file").addEventListener("click", () => save(true));
 const events = new EventSource("/api/events");
 events.addEventListener("file", (e) => {
   const changed = JSON.parse(e.data).version;
   if (changed === version) return;   // our own save
-  if (dirty) say("The file changed on disk; saving will say so");
-  else Object.assign(studio, {
-  text: () => editor.text(),
-  marks: () => editor.marks(),
-  select: (text) => editor.select(text),
-  camera: () => picture.viewer() && picture.viewer().camera(),
-});
-load();
+  if (dirty) conflict(changed);
+  else load();
 });
 Object.assign(studio, {
   text: () => editor.text(),

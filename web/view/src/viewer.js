@@ -36,6 +36,7 @@ import {
   PerspectiveCamera,
   Quaternion,
   Scene,
+  IcosahedronGeometry,
   SphereGeometry,
   Sprite,
   SpriteMaterial,
@@ -105,9 +106,14 @@ function hairlines(palette, nodes, edges) {
   return new LineSegments(geometry, new LineBasicMaterial({ vertexColors: true }));
 }
 
+// Sides of a round shape drawn `count` times: many small ones need fewer (in
+// software GL a tree of 7,000 balls at full detail took seconds a frame).
+const roundness = (full, count) => (count > 2000 ? Math.ceil(full / 2) : count > 500 ? Math.ceil((full * 3) / 4) : full);
+
 // Thick edges as cylinders of their radius between their ends, one instanced mesh.
 function tubes(palette, nodes, edges) {
-  const mesh = new InstancedMesh(new CylinderGeometry(1, 1, 1, 12, 1, false), new MeshLambertMaterial(), edges.length);
+  const sides = roundness(12, edges.length);
+  const mesh = new InstancedMesh(new CylinderGeometry(1, 1, 1, sides, 1, false), new MeshLambertMaterial(), edges.length);
   const m = new Matrix4(), q = new Quaternion(), up = new Vector3(0, 1, 0);
   edges.forEach(([a, b, ci, r], i) => {
     const from = new Vector3(...nodes[a].slice(0, 3)), to = new Vector3(...nodes[b].slice(0, 3));
@@ -121,7 +127,10 @@ function tubes(palette, nodes, edges) {
 }
 
 function spheres(palette, shown) {
-  const mesh = new InstancedMesh(new SphereGeometry(1, 16, 12), new MeshLambertMaterial(), shown.length);
+  // Past 5,000 balls, each is a once-divided icosahedron (80 triangles, rounder than a sphere of as many).
+  const ball = shown.length > 5000 ? new IcosahedronGeometry(1, 1)
+    : new SphereGeometry(1, roundness(16, shown.length), roundness(12, shown.length));
+  const mesh = new InstancedMesh(ball, new MeshLambertMaterial(), shown.length);
   const m = new Matrix4();
   shown.forEach((n, i) => {
     m.makeScale(n[3], n[3], n[3]).setPosition(n[0], n[1], n[2]);
@@ -162,11 +171,27 @@ function axes(size) {
   return group;
 }
 
-function dispose(group) {
-  group.traverse((o) => {
+// True when WebGL runs in software (SwiftShader, llvmpipe: a machine or VM
+// without a GPU), where every pixel and vertex costs CPU time.
+export function softwareGL() {
+  const gl = document.createElement("canvas").getContext("webgl2") || document.createElement("canvas").getContext("webgl");
+  if (!gl) return false;
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  const lose = gl.getExtension("WEBGL_lose_context");
+  if (lose) lose.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+}
+
+function release(object) {
+  object.traverse((o) => {
     if (o.geometry) o.geometry.dispose();
     if (o.material) [].concat(o.material).forEach((m) => m.dispose());
   });
+}
+
+function dispose(group) {
+  release(group);
   group.clear();
 }
 
@@ -177,7 +202,9 @@ const KEYS = { f: "faces", e: "edges", n: "nodes", a: "axes" };
 // its controls added to `panel`. `key` names the saved view in localStorage
 // (the page's title). `keepInHash`: the camera and hidden parts are kept in the
 // URL's hash (the --view page), not on a page with its own state (the studio).
-export function createViewer({ panel, key, container = document.body, keepInHash = true }) {
+// `antialias`: smooth edges (costly in software GL, where a page that redraws
+// often may do without).
+export function createViewer({ panel, key, container = document.body, keepInHash = true, antialias = true }) {
   const scene = new Scene();
   scene.background = new Color(0xffffff);
   const groups = {};
@@ -192,7 +219,7 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   camera.add(headlight);
   scene.add(camera);
 
-  const renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  const renderer = new WebGLRenderer({ antialias, preserveDrawingBuffer: true });
   renderer.setPixelRatio(window.devicePixelRatio || 1);
   container.appendChild(renderer.domElement);
   const controls = new OrbitControls(camera, renderer.domElement);
@@ -325,8 +352,9 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   }
 
   // Keys act on the picture only when nothing that takes text has the focus (the studio's editor).
-  const typing = (t) => t instanceof HTMLInputElement || t instanceof HTMLTextAreaElement || t instanceof HTMLSelectElement ||
-    (t instanceof HTMLElement && t.isContentEditable);
+  // (A checkbox or button keeps the keys: the toggles are clicked, then keys pressed.)
+  const typing = (t) => t instanceof HTMLInputElement && !["checkbox", "radio", "button", "submit", "reset"].includes(t.type) ||
+    t instanceof HTMLTextAreaElement || t instanceof HTMLSelectElement || (t instanceof HTMLElement && t.isContentEditable);
   function onKey(e) {
     if (e.ctrlKey || e.metaKey || e.altKey || typing(e.target) || !renderer.domElement.isConnected ||
         renderer.domElement.offsetParent === null && container !== document.body) return;
@@ -343,21 +371,26 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   controls.addEventListener("change", render);
   controls.addEventListener("end", remember);
   const whole = container === document.body;
-  function resize() {
+  const onWindowResize = () => resize();
+  // Sizes the canvas to its place (reallocated only when that changed) and
+  // renders, unless `quiet` (the caller renders next).
+  let size = "";
+  function resize(quiet = false) {
     const width = whole ? window.innerWidth : container.clientWidth, height = whole ? window.innerHeight : container.clientHeight;
     if (width === 0 || height === 0) return;   // hidden: sized when shown
-    renderer.setSize(width, height);
+    if (size !== `${width}x${height}`) renderer.setSize(width, height), (size = `${width}x${height}`);
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
-    render();
+    if (!quiet) render();
   }
-  const resizes = whole ? null : new ResizeObserver(resize);
+  const resizes = whole ? null : new ResizeObserver(() => resize());
   if (resizes) resizes.observe(container);
-  else window.addEventListener("resize", resize);
+  else window.addEventListener("resize", onWindowResize);
 
   // What the camera frames: the box low..high ([x, y, z] each), first seen
   // from `from` (z up), or as the hash says. `keep`: the camera stays where
-  // the user put it (a redraw of an edited model); Home frames the new box.
+  // the user put it, and nothing is rendered: the caller draws the edited
+  // model next (each render costs much in software GL); Home frames the new box.
   function frame(low, high, from, keep = false) {
     const lo = new Vector3(...low), hi = new Vector3(...high);
     center.copy(lo).add(hi).multiplyScalar(0.5);
@@ -366,10 +399,10 @@ export function createViewer({ panel, key, container = document.body, keepInHash
     camera.near = radius / 100;
     camera.far = radius * 100;
     controls.maxDistance = radius * 40;
-    resize();
+    resize(true);
     dispose(groups.axes);
     groups.axes.add(axes(radius * 0.5));
-    if (keep) return render();
+    if (keep) return;
     const v = fromHash();
     if (v) setCamera(v);
     else views.home();
@@ -378,7 +411,8 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   // Draws `model` in place of what was drawn.
   function draw(model) {
     const palette = model.colors.map(cssColor);
-    for (const part of ["faces", "edges", "nodes"]) dispose(groups[part]);
+    const old = [];
+    for (const part of ["faces", "edges", "nodes"]) old.push(...groups[part].children), groups[part].clear();
     drawn.triangles = 0;
     for (const translucent of [false, true]) {
       const part = faceMeshes(model, palette, translucent);
@@ -395,6 +429,9 @@ export function createViewer({ panel, key, container = document.body, keepInHash
     if (shown.length) groups.nodes.add(spheres(palette, shown));
     drawn.nodes = shown.length;
     render();
+    // Freed once the new meshes are drawn: the shader programs they share stay compiled (a
+    // redraw in the studio compiled them all again, the most of its time in software GL).
+    old.forEach(release);
   }
 
   // The box of a model's nodes with their radii.
@@ -414,7 +451,7 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   function destroy() {
     window.removeEventListener("keydown", onKey);
     if (resizes) resizes.disconnect();
-    else window.removeEventListener("resize", resize);
+    else window.removeEventListener("resize", onWindowResize);
     controls.dispose();
     for (const part of PARTS) dispose(groups[part]);
     renderer.dispose();

@@ -33,7 +33,16 @@ struct ParamSpec {
     int enumId = -1;
     std::vector<std::string> enumValues;
     Value defaultValue;
+    // The declaration's `in MIN..MAX [step STEP]` (int and float only): the
+    // values a run accepts, inclusive; `step` only when written (sliders take
+    // 1 for an int without one).
+    std::optional<double> min, max, step;
 };
+
+// `text` as a value of `p` (parseParamValue's forms) within its range, or
+// nothing with `why` set in words that name the parameter: `-D`, the studio
+// and Grammar::set read values through it, so all refuse alike.
+std::optional<Value> parameterValue(const ParamSpec& p, const std::string& text, std::string& why);
 
 // Where a run-time error happened in the grammar's source.
 struct SourceLocation {

@@ -24,8 +24,9 @@ void Grammar::set(const std::string& name, const std::string& value) {
     const auto& specs = run_->params();
     for (std::size_t i = 0; i < specs.size(); ++i) {
         if (specs[i].name != name) continue;
-        auto v = rt::parseParamValue(specs[i].type, value, specs[i].enumId, specs[i].enumValues, specs[i].typeName);
-        if (!v) throw std::invalid_argument(name + "=" + value + ": not a valid " + specs[i].typeName);
+        std::string why;
+        auto v = rt::parameterValue(specs[i], value, why);
+        if (!v) throw std::invalid_argument(why);
         params_[i] = std::move(*v);
         return;
     }

@@ -46,7 +46,8 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
     for (const auto& p : specs) out.push_back(p.defaultValue);
     for (const auto& d : defines) {
         const auto eq = d.find('=');
-        if (eq == std::string::npos || trimmed(d.substr(0, eq)).empty()) return "-D " + d + ": expected NAME=VALUE";
+        if (eq == std::string::npos || trimmed(d.substr(0, eq)).empty())
+            return "parameter setting `" + d + "`: expected NAME=VALUE";
         // `-D "gens = 3"` reads as gens=3.
         const std::string name = trimmed(d.substr(0, eq)), text = trimmed(d.substr(eq + 1));
         std::size_t index = specs.size();
@@ -55,20 +56,12 @@ std::string parameterValues(const std::vector<ParamSpec>& specs, const std::vect
         if (index == specs.size()) {
             std::string known;
             for (const auto& p : specs) known += (known.empty() ? "" : ", ") + p.name;
-            return "-D " + name + ": the grammar has no parameter `" + name + "`" +
+            return "the grammar has no parameter `" + name + "`" +
                    (known.empty() ? " (it declares none)" : " (its parameters: " + known + ")");
         }
-        const auto& p = specs[index];
-        auto v = parseParamValue(p.type, text, p.enumId, p.enumValues, p.typeName);
-        if (!v) {
-            std::string hint = p.type == ParamType::Vec2 ? " (write x,y or (x, y))" : p.type == ParamType::Vec3 ? " (write x,y,z or (x, y, z))" : p.type == ParamType::Bool ? " (write true or false)" : "";
-            if (p.type == ParamType::Enum) {
-                hint = " (one of";
-                for (const auto& e : p.enumValues) hint += " " + e;
-                hint += ")";
-            }
-            return "-D " + name + "=" + text + ": not a valid " + p.typeName + hint;
-        }
+        std::string why;
+        auto v = parameterValue(specs[index], text, why);
+        if (!v) return why;
         out[index] = std::move(*v);
     }
     return "";

@@ -87,7 +87,10 @@ std::string parameterHelp(const std::vector<ParamSpec>& params) {
             left += ")";
         }
         if (left.size() < 30) left += std::string(30 - left.size(), ' ');
-        out += left + " default " + defaultText(p) + "\n";
+        std::string range;
+        if (p.min && p.max) range = ", from " + formatNumber(*p.min) + " to " + formatNumber(*p.max);
+        if (p.step) range += " in steps of " + formatNumber(*p.step);
+        out += left + " default " + defaultText(p) + range + "\n";
     }
     return out;
 }
