@@ -58,7 +58,7 @@ try {
     rules: document.querySelectorAll("#infer-rules li").length,
     ruleSvgs: document.querySelectorAll("#infer-rules li svg").length,
     exampleDots: document.querySelectorAll("#infer-example svg circle").length,
-    generated: document.querySelectorAll("#infer-generated svg line, #infer-generated svg polygon").length,
+    generated: document.querySelectorAll("#infer-generated svg :is(path, line, polygon)").length,
   }));
   const expect = async (what, s) => {
     const got = await shown();
