@@ -5,9 +5,9 @@ An example of the reference set (the author's JSON) and a drawn SVG each
 give the labels, primitives and rules `g2d infer` reports, the grammar
 `g2d infer -o` writes (byte for byte), which `g2d check` accepts, the
 example and each primitive and rule side drawn, and one generated output:
-the SVG `g2d run --svg-compact` writes for that grammar and seed (as /api/run sends it). Broken examples answer
-422 with the reader's message and its line; malformed requests 400; the
-server keeps running. A long inference is cancelled by a newer run and by a
+the SVG `g2d run --svg-compact` writes for that grammar and seed (as
+/api/run sends it). Broken examples answer 422 with the reader's message
+and its line; malformed requests 400; the server keeps running. A long inference is cancelled by a newer run and by a
 newer inference.
 Usage: studio_infer_test.py G2D SOURCE_DIR
 """
