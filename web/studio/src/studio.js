@@ -13,6 +13,7 @@ import { createPicture } from "./picture.js";
 import { createPlayer } from "./player.js";
 import { createSeedsSheet } from "./seeds_sheet.js";
 import { createTabs } from "./tabs.js";
+import { createInferMode } from "./infer_mode.js";
 
 const $ = (id) => document.getElementById(id);
 const statusLine = $("status"), list = $("diagnostics");
@@ -40,6 +41,7 @@ const tabs = createTabs({
   picture: () => {},
   player: () => play(),
   seeds: () => sheet.fill(),
+  infer: (first) => first && createInferMode($("infer-pane"), { api, openGrammar: (text) => (editor.setText(text), tabs.open("picture"), edited()) }),
 });
 
 // A diagnostic of this text is shown at its line; one of an imported file only in the list.
