@@ -5,7 +5,8 @@
 // end of the text (or taken away again): a real edit, so the grammar is
 // compiled, derived, sent and drawn again. The time is from the edit (the
 // editor's change, in the keystroke's own task) to the task after the frame
-// that shows the new picture. Jank: while typing a burst of --burst keys at
+// that shows the new picture and, for a 3D one, to the end of the GL work
+// behind that frame (read back from its canvas). Jank: while typing a burst of --burst keys at
 // --interval ms, the longest gap between animation frames and the frames it
 // cost (a gap of n frame times costs n - 1).
 // Prints one Markdown row per example, then the median and the worst.
@@ -53,6 +54,17 @@ try {
     try {
       await page.goto(url, { waitUntil: "load" });
       await page.waitForFunction(() => window.g2dStudio && window.g2dStudio.last && window.g2dStudio.last.paintedAt, { timeout: 60000 });
+      // A 3D picture is finished once its canvas can be read back: the GL work behind the frame is done.
+      await page.evaluate(() => {
+        const probe = document.createElement("canvas").getContext("2d");
+        const finish = (last) => {
+          const gl = document.querySelector("#solid canvas");
+          if (gl && !document.getElementById("solid").hidden) probe.drawImage(gl, 0, 0, 1, 1), probe.getImageData(0, 0, 1, 1);
+          last.finishedAt = performance.now();
+        };
+        finish(window.g2dStudio.last);   // the first picture's, before typing
+        window.g2dStudio.onPaint = finish;
+      });
       // The cursor at the end of the text.
       await page.evaluate(() => window.g2dStudio.select(window.g2dStudio.text().slice(0, 1)));
       await page.keyboard.down("Control"), await page.keyboard.press("End"), await page.keyboard.up("Control");
@@ -62,14 +74,15 @@ try {
         const before = await page.evaluate(() => window.g2dStudio.draws);
         if (k % 2 === 0) await page.keyboard.type(" ");
         else await page.keyboard.press("Backspace");
-        await page.waitForFunction((n) => window.g2dStudio.draws > n && window.g2dStudio.last.paintedAt, { timeout: 60000 }, before);
+        await page.waitForFunction((n) => window.g2dStudio.draws > n && window.g2dStudio.last.finishedAt, { timeout: 60000 }, before);
         const last = await page.evaluate(() => window.g2dStudio.last);
-        times.push(last.paintedAt - last.editedAt);
+        times.push(last.finishedAt - last.editedAt);
         server.push(last.serverMs);
         await new Promise((r) => setTimeout(r, 150));
       }
-      // A burst of typing: the gaps between animation frames.
+      // A burst of typing: the gaps between animation frames (no read back, which would wait on the GL).
       await page.evaluate(() => {
+        window.g2dStudio.onPaint = null;
         window.frameGaps = [];
         let prev = performance.now();
         const tick = (t) => {

@@ -6,7 +6,7 @@
 // last good picture; a parameter control and "Another seed" redraw; the
 // SVG export; the seeds sheet; the player steps; Save writes the file, and
 // a change on disk reloads the page's text; a 3D grammar is drawn in the
-// viewer, whose camera stays across redraws. Screenshots are kept in ARTIFACTS.
+// viewer, whose camera and shader programs stay across redraws. Screenshots are kept in ARTIFACTS.
 // Usage: node studio_browser_test.mjs G2D SOURCE_DIR ARTIFACTS
 import { spawn } from "node:child_process";
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
@@ -199,6 +199,7 @@ try {
   await page.click("#solid canvas");
   await page.keyboard.press("2");   // the viewer's side view
   const camera = await page.evaluate(() => window.g2dStudio.camera());
+  const programs = JSON.stringify(await page.evaluate(() => window.g2dStudio.programs()));
   n = await draws();
   const slider = await page.$eval("#param-height + input[type=range], .param input[type=range][aria-label=height]",
     (r) => ({ min: r.min, max: r.max, step: r.step, value: r.value }));
@@ -207,6 +208,9 @@ try {
   await waitFor("the 3D redraw", (k) => window.g2dStudio.draws > k, { timeout: 20000 }, n);
   check(JSON.stringify(await page.evaluate(() => window.g2dStudio.camera())) === JSON.stringify(camera),
         "the camera stays across redraws");
+  // Compiling shaders again stalled a redraw for most of a second in software GL.
+  const after = JSON.stringify(await page.evaluate(() => window.g2dStudio.programs()));
+  check(after === programs && JSON.parse(after).length >= 3, `the redraw's shader programs are the first picture's: ${programs} then ${after}`);
   check(await page.$eval("#param-height", (f) => f.value) === "2", "the slider moves the number field");
   await page.screenshot({ path: join(artifacts, "studio_g3_box.png") });
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);

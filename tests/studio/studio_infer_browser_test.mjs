@@ -108,7 +108,19 @@ try {
   check(drawn.exampleDots === 5 && drawn.primitives === 5 && drawn.rules > 0 && drawn.generated > 0, `the drawing: ${JSON.stringify(drawn)}`);
   await page.screenshot({ path: join(artifacts, "studio_infer_drawing.png"), fullPage: true });
 
-  // Open grammar in editor: the written grammar in the editor, and its picture in the Picture tab.
+  // Open grammar in editor over unsaved edits asks first; dismissed, the edits stay.
+  await page.evaluate(() => window.g2dStudio.select("// Sierpinski"));
+  await page.keyboard.type("// Sierpinski!");
+  const asked = [];
+  page.once("dialog", (d) => (asked.push(d.message()), d.dismiss()));
+  await page.click("#infer-open");
+  await new Promise((done) => setTimeout(done, 300));
+  check(asked[0] === "Replace your unsaved edits of sierpinski.g2d with the inferred grammar?", `the question: ${asked[0]}`);
+  check((await page.evaluate(() => window.g2dStudio.text())).startsWith("// Sierpinski!"), "dismissed, the edits stay");
+  await page.click("#mode-infer");
+
+  // Accepted: the written grammar in the editor, and its picture in the Picture tab.
+  page.once("dialog", (d) => d.accept());
   await page.click("#infer-open");
   await page.waitForFunction(() => window.g2dStudio.text().startsWith("// Inferred by `g2d infer` from drawing.svg"), { timeout: 20000 });
   check((await page.evaluate(() => window.g2dStudio.text())) === lastInfer.grammar, "the editor holds the grammar /api/infer wrote");

@@ -41,7 +41,7 @@ const tabs = createTabs({
   picture: () => {},
   player: () => play(),
   seeds: () => sheet.fill(),
-  infer: (first) => first && createInferMode($("infer-pane"), { api, openGrammar: (text) => (editor.setText(text), tabs.open("picture"), edited()) }),
+  infer: (first) => first && createInferMode($("infer-pane"), { api, openGrammar }),
 });
 
 // A diagnostic of this text is shown at its line; one of an imported file only in the list.
@@ -79,8 +79,9 @@ async function run() {
     studio.draws++;
     const last = (studio.last = { editedAt, drawnAt: performance.now(), paintedAt: null, serverMs: data.ms, space: data.space,
                                   elements: e, steps: data.steps });
-    // The frame that shows the picture has been painted once the task after its animation frame runs.
-    requestAnimationFrame(() => setTimeout(() => (last.paintedAt = performance.now())));
+    // The frame that shows the picture has been painted once the task after its animation frame runs
+    // (`onPaint`, the benchmark's, then waits for the GL work behind it).
+    requestAnimationFrame(() => setTimeout(() => ((last.paintedAt = performance.now()), studio.onPaint && studio.onPaint(last))));
     editedAt = null;
     if (tabs.current() === "player") play();
     else if (tabs.current() === "seeds") sheet.fill();
@@ -102,6 +103,15 @@ async function play() {
   if (data.status !== "ok") return say("The grammar has errors: the player shows the last good run");
   player.play(data);
   say(`${counted(data.steps, "step")}: step through with the buttons or the arrow keys`);
+}
+
+// The inferred grammar replaces the text (unsaved: Save would write it over the file, so unsaved
+// edits are not thrown away without asking).
+function openGrammar(text) {
+  if (dirty && !confirm(`Replace your unsaved edits of ${$("file").textContent} with the inferred grammar?`)) return;
+  editor.setText(text);
+  tabs.open("picture");
+  edited();
 }
 
 function edited() {
@@ -160,5 +170,6 @@ Object.assign(studio, {
   marks: () => editor.marks(),
   select: (text) => editor.select(text),
   camera: () => picture.viewer() && picture.viewer().camera(),
+  programs: () => picture.viewer() && picture.viewer().programs(),
 });
 load();

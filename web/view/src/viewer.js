@@ -44,6 +44,7 @@ import {
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
+import { mergeVertices } from "three/addons/utils/BufferGeometryUtils.js";
 
 // CSS colours as g2d styles write them (#hex, names, rgb(), hsl()); anything
 // three cannot read (a gradient's url(#id)) shows grey, as an SVG fill would not.
@@ -126,9 +127,17 @@ function tubes(palette, nodes, edges) {
   return mesh;
 }
 
+// Three's polyhedra repeat each corner per triangle; without their texture coordinates the
+// repeats are equal and merge.
+function indexed(geometry) {
+  geometry.deleteAttribute("uv");
+  return mergeVertices(geometry);
+}
+
 function spheres(palette, shown) {
-  // Past 5,000 balls, each is a once-divided icosahedron (80 triangles, rounder than a sphere of as many).
-  const ball = shown.length > 5000 ? new IcosahedronGeometry(1, 1)
+  // Past 5,000 balls, each is a once-divided icosahedron (80 triangles, rounder than a sphere of as
+  // many), indexed: its 42 corners are shaded once each instead of 240 times.
+  const ball = shown.length > 5000 ? indexed(new IcosahedronGeometry(1, 1))
     : new SphereGeometry(1, roundness(16, shown.length), roundness(12, shown.length));
   const mesh = new InstancedMesh(ball, new MeshLambertMaterial(), shown.length);
   const m = new Matrix4();
@@ -209,6 +218,9 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   scene.background = new Color(0xffffff);
   const groups = {};
   for (const part of PARTS) scene.add((groups[part] = new Group()));
+  // Made once and scaled to each model: new axes would free their shader programs, and compiling
+  // them again stalled the next redraw (most of a second in software GL).
+  groups.axes.add(axes(1));
   const camera = new PerspectiveCamera(35, 1, 0.01, 100);
   camera.up.set(0, 0, 1);   // z up, as in the SVG of a 3D grammar; a 2D drawing lies in z = 0
   // A soft fill plus a light over the viewer's shoulder, so that slopes read
@@ -400,8 +412,7 @@ export function createViewer({ panel, key, container = document.body, keepInHash
     camera.far = radius * 100;
     controls.maxDistance = radius * 40;
     resize(true);
-    dispose(groups.axes);
-    groups.axes.add(axes(radius * 0.5));
+    groups.axes.scale.setScalar(radius * 0.5);
     if (keep) return;
     const v = fromHash();
     if (v) setCamera(v);
@@ -460,5 +471,7 @@ export function createViewer({ panel, key, container = document.body, keepInHash
   }
 
   return { draw, frame, bounds, render, views, show, visible, save, restore, drawn, camera: cameraState, destroy,
-           canvas: renderer.domElement };
+           canvas: renderer.domElement,
+           // The shader programs made so far, as [id, name] (a redraw of the same kinds of parts makes none).
+           programs: () => renderer.info.programs.map((p) => [p.id, p.name]) };
 }
