@@ -43,7 +43,8 @@ try {
   const errors = [];
   page.on("pageerror", (e) => errors.push(e.message));
   // A refused example answers 422, which the console reports; nothing else may fail.
-  page.on("console", (m) => m.type() === "error" && !m.text().includes("status of 422") && errors.push(m.text()));
+  // A refused example answers 422 and a run cancelled by a newer one 409, which the console reports.
+  page.on("console", (m) => m.type() === "error" && !/status of (422|409)/.test(m.text()) && errors.push(m.text()));
   page.on("requestfailed", (r) => errors.push("request failed: " + r.url()));
   let lastInfer = null;   // the last answer of /api/infer the page got
   page.on("response", async (r) => r.url().endsWith("/api/infer") && r.status() === 200 && (lastInfer = await r.json()));

@@ -56,6 +56,9 @@ function showDiagnostics(diagnostics, extra) {
   if (extra) item("error", extra);
 }
 
+// The newest good answer not drawn yet, and the id of the newest answer of any kind.
+let waiting = null, answered = 0;
+
 async function run() {
   const mine = ++asked;
   studio.runs++;
@@ -64,27 +67,13 @@ async function run() {
   // Cancelled by an older request that reached the server later (requests travel on parallel
   // connections): this is still the run the page wants, so it asks again.
   if (code === 409) return run();
+  answered = mine;
   if (data.params) params.draw(data.params);
   if (data.status === "ok") {
-    try {
-      picture.show(data);
-    } catch (e) {
-      showDiagnostics(data.diagnostics, "The picture could not be drawn: " + e.message);
-      return;
-    }
-    showDiagnostics(data.diagnostics, data.warning);
-    const e = data.elements;
-    say([counted(data.steps, "step"), counted(e.nodes, "node"), counted(e.edges, "edge"), counted(e.faces, "face"),
-         `${data.ms.toFixed(1)} ms`].join(", "));
-    studio.draws++;
-    const last = (studio.last = { editedAt, drawnAt: performance.now(), paintedAt: null, serverMs: data.ms, space: data.space,
-                                  elements: e, steps: data.steps });
-    // The frame that shows the picture has been painted once the task after its animation frame runs
-    // (`onPaint`, the benchmark's, then waits for the GL work behind it).
-    requestAnimationFrame(() => setTimeout(() => ((last.paintedAt = performance.now()), studio.onPaint && studio.onPaint(last))));
-    editedAt = null;
-    if (tabs.current() === "player") play();
-    else if (tabs.current() === "seeds") sheet.fill();
+    // Drawn in the next animation frame, the newest answer only: answers that come faster than
+    // frames (a slow GL behind them) are not all drawn, each after the other.
+    if (waiting === null) requestAnimationFrame(() => draw(waiting));
+    waiting = { data, mine };
   } else {
     // The last good picture stays.
     studio.errors++;
@@ -92,6 +81,32 @@ async function run() {
     showDiagnostics(data.diagnostics, data.message ? where + data.message : "");
     say(data.status === "invalid" ? "The grammar has errors: the picture is the last good one" : "The run failed: the picture is the last good one");
   }
+}
+
+function draw({ data, mine }) {
+  waiting = null;
+  // An answer of a broken text that came after this one keeps its diagnostics and status.
+  const newest = mine === answered;
+  try {
+    picture.show(data);
+  } catch (e) {
+    if (newest) showDiagnostics(data.diagnostics, "The picture could not be drawn: " + e.message);
+    return;
+  }
+  studio.draws++;
+  const e = data.elements;
+  const last = (studio.last = { editedAt, drawnAt: performance.now(), paintedAt: null, serverMs: data.ms, space: data.space,
+                                elements: e, steps: data.steps });
+  // This animation frame shows the picture: it has been painted once the next task runs
+  // (`onPaint`, the benchmark's, then waits for the GL work behind it).
+  setTimeout(() => ((last.paintedAt = performance.now()), studio.onPaint && studio.onPaint(last)));
+  editedAt = null;
+  if (!newest) return;
+  showDiagnostics(data.diagnostics, data.warning);
+  say([counted(data.steps, "step"), counted(e.nodes, "node"), counted(e.edges, "edge"), counted(e.faces, "face"),
+       `${data.ms.toFixed(1)} ms`].join(", "));
+  if (tabs.current() === "player") play();
+  else if (tabs.current() === "seeds") sheet.fill();
 }
 
 async function play() {
