@@ -9,6 +9,7 @@
 #include "g2d/png_writer.hpp"
 #include "g2d/run_outputs.hpp"
 #include "g2d/view_page.hpp"
+#include "studio/image_shelf.hpp"
 #include "studio/param_specs.hpp"
 #include "studio/studio_derivation.hpp"
 
@@ -29,11 +30,14 @@ rt::RunOutputs outputsOf(const StudioDerivation& run, const RunInput& input) {
 }
 
 // `compact`: alike lines joined into paths (the same picture, fewer elements for the page).
-std::string svgOf(StudioDerivation& run, const RunInput& input, bool compact = false) {
+// `images`: the page's addresses for the image files the drawing links.
+std::string svgOf(StudioDerivation& run, const RunInput& input, bool compact = false,
+                  const std::function<std::string(const std::string&)>& images = {}) {
     rt::StringOut svg;
     rt::RunOutputs outputs = outputsOf(run, input);
     outputs.svg = &svg;
     outputs.svgOptions.compact = compact;
+    outputs.svgOptions.imageHref = images;
     rt::writeRunOutputs(*run.grammar, outputs);
     return std::move(svg.text());
 }
@@ -48,7 +52,8 @@ ApiReply outputError(const StudioDerivation& run, const std::exception& e) {
 
 }  // namespace
 
-ApiReply deriveText(const std::string& path, const RunInput& input, const std::function<bool()>& cancelled) {
+ApiReply deriveText(const std::string& path, const RunInput& input, const std::function<bool()>& cancelled,
+                    ImageShelf* images) {
     const auto started = Clock::now();
     auto run = deriveForPage(path, input, cancelled);
     if (run->failure) {
@@ -67,7 +72,9 @@ ApiReply deriveText(const std::string& path, const RunInput& input, const std::f
             view.home = outputsOf(*run, input).view.toward;
             model = rt::viewModelJson(view);
         } else {
-            svg = svgOf(*run, input, true);
+            std::function<std::string(const std::string&)> address;
+            if (images) address = [images, &path](const std::string& href) { return images->hrefFor(path, href); };
+            svg = svgOf(*run, input, true, address);
         }
         if (run->trace) trace = run->trace->json(run->name, input.seed, run->stopped);
     } catch (const std::exception& e) {

@@ -12,13 +12,17 @@
 
 namespace g2d::studio {
 
+class ImageShelf;
+
 // 200 {"status": "ok", "space", "svg" (2D) | "model" (3D), "trace"?,
 // "params", "steps", "stopped", "elements": {nodes, edges, faces}, "ms",
 // "diagnostics", "warning"?}; 422 {"status": "invalid", "diagnostics"} for
 // a grammar with errors; 422 {"status": "error", "message", "location"?,
 // "stopped"?, "params"?} for a run that failed; 409 {"status": "cancelled"}.
-// `cancelled` is asked after every step.
-ApiReply deriveText(const std::string& path, const RunInput& input, const std::function<bool()>& cancelled);
+// `cancelled` is asked after every step. With `images`, the SVG links the
+// image files it draws by their addresses on that shelf.
+ApiReply deriveText(const std::string& path, const RunInput& input, const std::function<bool()>& cancelled,
+                    ImageShelf* images = nullptr);
 
 // The bytes `g2d run` would write for `format` (the SVG, the PNG, …), or a
 // 422 JSON answer saying why there are none.

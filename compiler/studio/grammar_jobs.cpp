@@ -43,7 +43,7 @@ ApiReply GrammarJobs::newestRun(std::function<ApiReply(const std::function<bool(
 }
 
 ApiReply GrammarJobs::run(const RunInput& input) {
-    return newestRun([this, input](const auto& cancelled) { return deriveText(path_, input, cancelled); });
+    return newestRun([this, input](const auto& cancelled) { return deriveText(path_, input, cancelled, &images_); });
 }
 
 ApiReply GrammarJobs::exportFile(const RunInput& input, ExportFormat format) {

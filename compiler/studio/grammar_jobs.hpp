@@ -9,6 +9,7 @@
 #include "studio/api_reply.hpp"
 #include "studio/example_inference.hpp"
 #include "studio/grammar_derive.hpp"
+#include "studio/image_shelf.hpp"
 #include "studio/job_thread.hpp"
 
 namespace g2d::studio {
@@ -30,12 +31,16 @@ public:
 
     void cancelRuns();
 
+    // The image files the runs' SVGs link, served at their addresses.
+    const ImageShelf& images() const { return images_; }
+
 private:
     // Runs `job` as the newest run: a newer one cancels it.
     ApiReply newestRun(std::function<ApiReply(const std::function<bool()>& cancelled)> job);
     ApiReply onWorker(std::function<ApiReply()> job);
 
     std::string path_;
+    ImageShelf images_;
     std::atomic<std::uint64_t> latestRun_{0};
     JobThread worker_;   // last: joined first, while the rest still exists
 };

@@ -2,6 +2,9 @@
 
 #include <httplib.h>
 
+#include <fstream>
+#include <sstream>
+
 #include "studio/api_reply.hpp"
 #include "studio/edited_file.hpp"
 #include "studio/file_watch.hpp"
@@ -136,6 +139,16 @@ void addStudioRoutes(httplib::Server& server, StudioParts parts) {
         auto input = inferInputOf(*body, why);
         if (!input) return send(res, errorReply(400, why));
         send(res, parts.jobs.infer(*input));
+    });
+    // An image file the page's SVG links (image_shelf.hpp): only those the runs gave an address.
+    server.Get(R"(/api/image/(\d{1,9}))", [parts](const httplib::Request& req, httplib::Response& res) {
+        const auto image = parts.jobs.images().image(std::stoul(req.matches[1].str()));
+        std::ifstream in(image ? image->path : std::string(), std::ios::binary);
+        if (!image || !in) return send(res, errorReply(404, "no such image"));
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        res.set_header("Cache-Control", "no-cache");
+        res.set_content(bytes.str(), image->mediaType);
     });
     server.Get("/api/events", [parts](const httplib::Request&, httplib::Response& res) {
         res.set_header("Cache-Control", "no-store");

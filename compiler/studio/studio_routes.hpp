@@ -8,6 +8,7 @@
 //   GET  /api/imports  the files the grammar imports: {"files": [{"name", "text"}]}
 //   POST /api/check    {"text"} → the diagnostics of `g2d check`
 //   POST /api/run      {"text", "params", "seed", "steps", "timeout"} → the picture
+//   GET  /api/image/N  an image file the page's SVG links (image_shelf.hpp)
 //   GET  /api/events   Server-Sent Events: `file` when the file changes on disk
 namespace httplib {
 class Server;

@@ -5,7 +5,8 @@
 // shows the error at its line (in the editor and the list) and keeps the
 // last good picture; a parameter control and "Another seed" redraw; the
 // SVG export; the seeds sheet; the player steps; Save writes the file, and
-// a change on disk reloads the page's text; a 3D grammar is drawn in the
+// a change on disk reloads the page's text; an image file a drawing links is
+// loaded from the address the server gives it; a 3D grammar is drawn in the
 // viewer, whose camera and shader programs stay across redraws. Screenshots are kept in ARTIFACTS.
 // Usage: node studio_browser_test.mjs G2D SOURCE_DIR ARTIFACTS
 import { spawn } from "node:child_process";
@@ -187,6 +188,16 @@ try {
   await page.click("#reload-file");
   await waitStatus("1 step,");
   check((await page.evaluate(() => window.g2dStudio.text())).includes("int = 1;"), "Reload it takes the file from disk");
+
+  // A drawing of an image file (beside the grammar): the page loads the image the server gives an address.
+  mkdirSync(join(work, "pics"));
+  copyFileSync(join(src, "examples/assets/brush.png"), join(work, "pics/dot.png"));
+  writeFileSync(join(work, "sierpinski.g2d"),
+    'node A { style { tag = "image"; href = "pics/dot.png"; width = 1; height = 1; } }\naxiom { a: A at (0, 0); }\n');
+  await waitStatus("0 steps, 1 node,");
+  await waitFor("the image", () => document.querySelector("#flat image") !== null &&
+    performance.getEntriesByType("resource").some((e) => e.name.endsWith("/api/image/0") && e.responseStatus === 200), { timeout: 20000 });
+  check(await page.$eval("#flat image", (i) => i.getAttribute("href")) === "/api/image/0", "the image's address");
 
   // A 3D grammar on disk: the viewer draws it; a parameter redraws it with the camera where it was.
   // (Its height given a range, so that the panel shows a slider.)

@@ -16,6 +16,7 @@ Usage: studio_test.py G2D SOURCE_DIR
 import http.client
 import json
 import os
+import re
 import shutil
 import signal
 import socket
@@ -113,7 +114,7 @@ def superseded(port, slow_text):
 
 
 def snapshot(folder):
-    return {n: open(os.path.join(folder, n), "rb").read() for n in sorted(os.listdir(folder))}
+    return {n: open(os.path.join(folder, n), "rb").read() for n in sorted(os.listdir(folder)) if os.path.isfile(os.path.join(folder, n))}
 
 
 def g2d_check_json(folder, name):
@@ -136,6 +137,10 @@ EXPO = ("node P { n: int = 0; }\nfn f0(x: int) -> int = x;\n"
         + "".join(f"fn f{i}(x: int) -> int = f{i - 1}(x) + f{i - 1}(x) - x;\n" for i in range(1, 60))
         + "axiom { a: P at (0, 0); }\nlimit 20;\n"
         + "rule R { match { p: P; } produce { p at (p.n > 2 ? f59(1) : 0, 0) { n = p.n + 1 }; } }\n")
+IMAGES = ('node A { style { tag = "image"; href = "pics/dot.png"; width = 1; height = 1; } }\n'
+          'node B { style { tag = "image"; href = "secret.txt"; width = 1; height = 1; } }\n'
+          'node D { style { tag = "image"; href = "data:image/png;base64,AAAA"; width = 1; height = 1; } }\n'
+          "axiom { a: A at (0, 0); b: B at (1, 0); a2: A at (2, 0); d: D at (3, 0); }\n")
 BROKEN = original.replace("limit generations + 1;", "limit generations +;")
 assert BROKEN != original
 
@@ -317,6 +322,24 @@ try:
     status, imports = request(port, "GET", "/api/imports")
     check(status == 200 and imports["files"] == [], f"imports of a grammar without: {imports}")
 
+    # Images the drawing links: each image file gets an address the page can load, and only those
+    # are served; a file that is not an image, or a URL, keeps its href.
+    os.makedirs(os.path.join(work, "pics"))
+    shutil.copy(os.path.join(SRC, "examples", "assets", "brush.png"), os.path.join(work, "pics", "dot.png"))
+    status, pictured = request(port, "POST", "/api/run", {"text": IMAGES})
+    hrefs = re.findall(r'href="([^"]*)"', pictured.get("svg", ""))
+    check(status == 200 and hrefs == ["/api/image/0", "secret.txt", "/api/image/0", "data:image/png;base64,AAAA"],
+          f"the images' hrefs: {status} {hrefs}")
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+    conn.request("GET", "/api/image/0")
+    res = conn.getresponse()
+    check(res.status == 200 and res.getheader("Content-Type") == "image/png"
+          and res.read() == open(os.path.join(work, "pics", "dot.png"), "rb").read(), f"GET /api/image/0: {res.status}")
+    conn.close()
+    for path in ["/api/image/1", "/api/image/-1", "/api/image/99999999999", "/api/image/0/../../secret.txt", "/api/image/x"]:
+        line = raw(port, f"GET {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n".encode()).split("\r\n")[0]
+        check(" 404 " in line, f"GET {path}: {line}")
+
     # Security: the Host (DNS rebinding).
     for host in ["evil.example", f"evil.example:{port}", f"127.0.0.1:{port + 1}", "127.0.0.1", f"localhost.evil:{port}"]:
         status, _ = request(port, "GET", "/api/file", host=host)
@@ -403,7 +426,7 @@ try:
     conn.close()
     status, stale = request(port, "PUT", "/api/file", {"text": "lost", "version": version})
     check(status == 409 and "changed on disk" in stale["message"], f"save after a change on disk: {status} {stale}")
-    leftovers = [n for n in os.listdir(work) if n not in (NAME, "secret.txt")]
+    leftovers = [n for n in os.listdir(work) if n not in (NAME, "secret.txt", "pics")]
     check(not leftovers, f"files left beside the grammar: {leftovers}")
 
     # A clean exit on SIGINT, even with a run in flight.

@@ -24,6 +24,13 @@ private:
     std::map<std::string, std::string> done_;   // an image drawn many times is read once
 };
 
+// Whether an image's href is a URL (data:, http:, …) or a fragment, not a file.
+bool isUrlHref(const std::string& href);
+
+// The media type of an image file by its extension (image/png, …), or
+// application/octet-stream for another file.
+std::string imageMediaType(const std::string& file);
+
 // RFC 4648 base64 of bytes.
 std::string base64(const std::string& bytes);
 

@@ -8,17 +8,15 @@
 
 namespace g2d::rt {
 namespace fs = std::filesystem;
-namespace {
-
-bool isUrl(const std::string& href) {
+bool isUrlHref(const std::string& href) {
     if (href.empty() || href[0] == '#') return true;
     const auto colon = href.find(':');
     const auto slash = href.find('/');
     return colon != std::string::npos && colon > 1 && (slash == std::string::npos || colon < slash);
 }
 
-std::string mimeOf(const fs::path& file) {
-    std::string ext = file.extension().string();
+std::string imageMediaType(const std::string& file) {
+    std::string ext = fs::path(file).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".png") return "image/png";
     if (ext == ".jpg" || ext == ".jpeg") return "image/jpeg";
@@ -27,8 +25,6 @@ std::string mimeOf(const fs::path& file) {
     if (ext == ".webp") return "image/webp";
     return "application/octet-stream";
 }
-
-}  // namespace
 
 std::string base64(const std::string& bytes) {
     static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -60,7 +56,7 @@ ImageLinks::ImageLinks(const std::string& grammarFile, const std::string& output
       embed_(embed) {}
 
 std::string ImageLinks::href(const std::string& grammarHref) {
-    if (isUrl(grammarHref)) return grammarHref;
+    if (isUrlHref(grammarHref)) return grammarHref;
     if (auto it = done_.find(grammarHref); it != done_.end()) return it->second;
     const fs::path file = (fs::path(grammarDir_) / grammarHref).lexically_normal();
     std::string out;
@@ -69,7 +65,7 @@ std::string ImageLinks::href(const std::string& grammarHref) {
         if (!in) throw OutputError("cannot embed the image `" + grammarHref + "`: " + file.string() + " cannot be read");
         std::stringstream bytes;
         bytes << in.rdbuf();
-        out = "data:" + mimeOf(file) + ";base64," + base64(bytes.str());
+        out = "data:" + imageMediaType(file.string()) + ";base64," + base64(bytes.str());
     } else {
         out = file.lexically_relative(outputDir_).generic_string();
         if (out.empty()) out = file.generic_string();
