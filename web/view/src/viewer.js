@@ -23,28 +23,22 @@ import {
   BufferGeometry,
   CanvasTexture,
   Color,
-  CylinderGeometry,
   DirectionalLight,
   FrontSide,
   Group,
-  InstancedMesh,
   LineBasicMaterial,
   LineSegments,
-  Matrix4,
   Mesh,
   MeshLambertMaterial,
   PerspectiveCamera,
-  Quaternion,
   Scene,
-  IcosahedronGeometry,
-  SphereGeometry,
   Sprite,
   SpriteMaterial,
   Vector3,
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
-import { mergeVertices } from "three/addons/utils/BufferGeometryUtils.js";
+import { impostors } from "./impostors.js";
 
 // CSS colours as g2d styles write them (#hex, names, rgb(), hsl()); anything
 // three cannot read (a gradient's url(#id)) shows grey, as an SVG fill would not.
@@ -107,47 +101,11 @@ function hairlines(palette, nodes, edges) {
   return new LineSegments(geometry, new LineBasicMaterial({ vertexColors: true }));
 }
 
-// Sides of a round shape drawn `count` times: many small ones need fewer (in
-// software GL a tree of 7,000 balls at full detail took seconds a frame).
-const roundness = (full, count) => (count > 2000 ? Math.ceil(full / 2) : count > 500 ? Math.ceil((full * 3) / 4) : full);
-
-// Thick edges as cylinders of their radius between their ends, one instanced mesh.
-function tubes(palette, nodes, edges) {
-  const sides = roundness(12, edges.length);
-  const mesh = new InstancedMesh(new CylinderGeometry(1, 1, 1, sides, 1, false), new MeshLambertMaterial(), edges.length);
-  const m = new Matrix4(), q = new Quaternion(), up = new Vector3(0, 1, 0);
-  edges.forEach(([a, b, ci, r], i) => {
-    const from = new Vector3(...nodes[a].slice(0, 3)), to = new Vector3(...nodes[b].slice(0, 3));
-    const along = to.clone().sub(from), length = along.length();
-    q.setFromUnitVectors(up, length > 0 ? along.divideScalar(length) : up);
-    m.compose(from.add(to).multiplyScalar(0.5), q, new Vector3(r, length, r));
-    mesh.setMatrixAt(i, m);
-    mesh.setColorAt(i, palette[ci] || new Color(0));
-  });
-  return mesh;
-}
-
-// Three's polyhedra repeat each corner per triangle; without their texture coordinates the
-// repeats are equal and merge.
-function indexed(geometry) {
-  geometry.deleteAttribute("uv");
-  return mergeVertices(geometry);
-}
-
-function spheres(palette, shown) {
-  // Past 5,000 balls, each is a once-divided icosahedron (80 triangles, rounder than a sphere of as
-  // many), indexed: its 42 corners are shaded once each instead of 240 times.
-  const ball = shown.length > 5000 ? indexed(new IcosahedronGeometry(1, 1))
-    : new SphereGeometry(1, roundness(16, shown.length), roundness(12, shown.length));
-  const mesh = new InstancedMesh(ball, new MeshLambertMaterial(), shown.length);
-  const m = new Matrix4();
-  shown.forEach((n, i) => {
-    m.makeScale(n[3], n[3], n[3]).setPosition(n[0], n[1], n[2]);
-    mesh.setMatrixAt(i, m);
-    mesh.setColorAt(i, palette[n[4]] || new Color(0));
-  });
-  return mesh;
-}
+// Thick edges as capped cylinders of their radius between their ends; nodes with a radius as balls.
+const tubes = (palette, nodes, edges) =>
+  impostors("tube", edges.map(([a, b, ci, r]) => ({ a: nodes[a].slice(0, 3), b: nodes[b].slice(0, 3), r, color: palette[ci] || new Color(0) })));
+const spheres = (palette, shown) =>
+  impostors("ball", shown.map((n) => ({ a: n.slice(0, 3), b: n.slice(0, 3), r: n[3], color: palette[n[4]] || new Color(0) })));
 
 function label(text, color) {
   const canvas = document.createElement("canvas");
