@@ -108,30 +108,34 @@ function impostorMaterial(kind) {
   return material;
 }
 
-// One mesh of `shapes`, each {a: [x, y, z], b (a tube's other end; a ball's is a), r, color (a
-// three Color)}: a quad of four corners that carry the shape, not an instance (software GL
-// drew instances one by one).
-export function impostors(kind, shapes) {
-  const n = shapes.length;
+// One mesh of n shapes given as flat arrays: `a` and `b` (x, y, z each; a tube's two ends, or a
+// ball's centre twice), `r` and `color` (r, g, b each, linear). Each shape is a quad of four
+// corners that carry it, not an instance (software GL drew instances one by one).
+export function impostors(kind, { a, b, r, color }) {
+  const n = r.length;
   const corner = new Float32Array(n * 12), endA = new Float32Array(n * 12), endB = new Float32Array(n * 12);
-  const radius = new Float32Array(n * 4), color = new Float32Array(n * 12), index = new Uint32Array(n * 6);
-  shapes.forEach(({ a, b, r, color: c }, i) => {
-    [[-1, -1], [1, -1], [1, 1], [-1, 1]].forEach(([x, y], k) => {
-      const v = i * 4 + k;
-      corner.set([x, y, 0], v * 3);
-      endA.set(a, v * 3);
-      endB.set(b, v * 3);
-      radius[v] = r;
-      color.set([c.r, c.g, c.b], v * 3);
-    });
-    index.set([0, 1, 2, 0, 2, 3].map((k) => i * 4 + k), i * 6);
-  });
+  const radius = new Float32Array(n * 4), colors = new Float32Array(n * 12), index = new Uint32Array(n * 6);
+  const corners = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0];
+  for (let i = 0; i < n; i++) {
+    for (let k = 0; k < 4; k++) {
+      const v = (i * 4 + k) * 3;
+      for (let c = 0; c < 3; c++) {
+        corner[v + c] = corners[k * 3 + c];
+        endA[v + c] = a[i * 3 + c];
+        endB[v + c] = b[i * 3 + c];
+        colors[v + c] = color[i * 3 + c];
+      }
+      radius[i * 4 + k] = r[i];
+    }
+    const q = i * 4, t = i * 6;
+    index[t] = q, index[t + 1] = q + 1, index[t + 2] = q + 2, index[t + 3] = q, index[t + 4] = q + 2, index[t + 5] = q + 3;
+  }
   const geometry = new BufferGeometry();
   geometry.setAttribute("position", new BufferAttribute(corner, 3));
   geometry.setAttribute("endA", new BufferAttribute(endA, 3));
   geometry.setAttribute("endB", new BufferAttribute(endB, 3));
   geometry.setAttribute("endRadius", new BufferAttribute(radius, 1));
-  geometry.setAttribute("color", new BufferAttribute(color, 3));
+  geometry.setAttribute("color", new BufferAttribute(colors, 3));
   geometry.setIndex(new BufferAttribute(index, 1));
   const mesh = new Mesh(geometry, impostorMaterial(kind));
   mesh.frustumCulled = false;   // the quads' corners are not where the shapes are

@@ -87,6 +87,8 @@ function faceMeshes(model, palette, translucent) {
   return { meshes, triangles };
 }
 
+const BLACK = new Color(0);
+
 function hairlines(palette, nodes, edges) {
   const pos = new Float32Array(edges.length * 6), col = new Float32Array(edges.length * 6);
   edges.forEach(([a, b, ci], i) => {
@@ -102,10 +104,28 @@ function hairlines(palette, nodes, edges) {
 }
 
 // Thick edges as capped cylinders of their radius between their ends; nodes with a radius as balls.
-const tubes = (palette, nodes, edges) =>
-  impostors("tube", edges.map(([a, b, ci, r]) => ({ a: nodes[a].slice(0, 3), b: nodes[b].slice(0, 3), r, color: palette[ci] || new Color(0) })));
-const spheres = (palette, shown) =>
-  impostors("ball", shown.map((n) => ({ a: n.slice(0, 3), b: n.slice(0, 3), r: n[3], color: palette[n[4]] || new Color(0) })));
+function tubes(palette, nodes, edges) {
+  const n = edges.length, a = new Float32Array(n * 3), b = new Float32Array(n * 3), r = new Float32Array(n);
+  const color = new Float32Array(n * 3);
+  edges.forEach(([from, to, ci, radius], i) => {
+    for (let c = 0; c < 3; c++) (a[i * 3 + c] = nodes[from][c]), (b[i * 3 + c] = nodes[to][c]);
+    r[i] = radius;
+    const rgb = palette[ci] || BLACK;
+    color[i * 3] = rgb.r, color[i * 3 + 1] = rgb.g, color[i * 3 + 2] = rgb.b;
+  });
+  return impostors("tube", { a, b, r, color });
+}
+
+function spheres(palette, shown) {
+  const n = shown.length, at = new Float32Array(n * 3), r = new Float32Array(n), color = new Float32Array(n * 3);
+  shown.forEach((node, i) => {
+    for (let c = 0; c < 3; c++) at[i * 3 + c] = node[c];
+    r[i] = node[3];
+    const rgb = palette[node[4]] || BLACK;
+    color[i * 3] = rgb.r, color[i * 3 + 1] = rgb.g, color[i * 3 + 2] = rgb.b;
+  });
+  return impostors("ball", { a: at, b: at, r, color });
+}
 
 function label(text, color) {
   const canvas = document.createElement("canvas");
