@@ -54,12 +54,14 @@ try {
     try {
       await page.goto(url, { waitUntil: "load" });
       await page.waitForFunction(() => window.g2dStudio && window.g2dStudio.last && window.g2dStudio.last.paintedAt, { timeout: 60000 });
-      // A 3D picture is finished once its canvas can be read back: the GL work behind the frame is done.
+      // A 3D picture is finished once a pixel of its canvas can be read back: the GL work behind the
+      // frame is done (the viewer's context, which keeps its drawing buffer).
       await page.evaluate(() => {
-        const probe = document.createElement("canvas").getContext("2d");
+        const pixel = new Uint8Array(4);
         const finish = (last) => {
-          const gl = document.querySelector("#solid canvas");
-          if (gl && !document.getElementById("solid").hidden) probe.drawImage(gl, 0, 0, 1, 1), probe.getImageData(0, 0, 1, 1);
+          const canvas = document.querySelector("#solid canvas");
+          const gl = canvas && !document.getElementById("solid").hidden && canvas.getContext("webgl2");
+          if (gl) gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
           last.finishedAt = performance.now();
         };
         finish(window.g2dStudio.last);   // the first picture's, before typing

@@ -9,6 +9,7 @@
 
 #include "g2d/face_triangles.hpp"
 #include "g2d/json_writer.hpp"
+#include "g2d/text_out.hpp"
 #include "g2d/view_script.hpp"
 
 namespace g2d::rt {
@@ -37,16 +38,14 @@ double modelDiagonal(const Graph& g) {
     return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
-std::string num(double x) {
-    if (!std::isfinite(x)) throw std::runtime_error("the model has a non-finite number (" + formatNumber(x) + ")");
-    return formatNumber(x);
-}
-
 // Inside <script>, "<" could end the element; JSON strings may spell it \u003c.
 std::string scriptSafe(std::string json) {
     std::string out;
     out.reserve(json.size());
-    for (char c : json) out += c == '<' ? std::string("\\u003c") : std::string(1, c);
+    for (char c : json) {
+        if (c == '<') out.append("\\u003c");
+        else out.push_back(c);
+    }
     return out;
 }
 
@@ -73,33 +72,70 @@ private:
 }  // namespace
 
 std::string viewModelJson(const ViewModel& m) {
+    // Written straight into one buffer: a model of 20,000 elements took 7 ms as strings joined.
     Palette colors;
-    std::string nodes, edges, faces;
-    for (const auto& n : m.nodes)
-        nodes += std::string(nodes.empty() ? "\n" : ",\n") + "[" + num(n.pos[0]) + "," + num(n.pos[1]) + "," +
-                 num(n.pos[2]) + "," + num(n.radius) + "," + std::to_string(colors.index(n.color)) + "]";
-    for (const auto& e : m.edges)
-        edges += std::string(edges.empty() ? "\n" : ",\n") + "[" + std::to_string(e.a) + "," + std::to_string(e.b) + "," +
-                 std::to_string(colors.index(e.color)) + "," + num(e.radius) + "]";
-    std::string alphas;
-    for (const auto& f : m.faces) {
-        faces += std::string(faces.empty() ? "\n" : ",\n") + "[" + std::to_string(f.id) + "," +
-                 std::to_string(colors.index(f.color)) + ",[";
-        for (std::size_t i = 0; i < f.points.size(); ++i)
-            faces += std::string(i ? "," : "") + num(f.points[i][0]) + "," + num(f.points[i][1]) + "," + num(f.points[i][2]);
-        faces += "],[";
-        for (std::size_t i = 0; i < f.triangles.size(); ++i)
-            faces += std::string(i ? "," : "") + std::to_string(f.triangles[i][0]) + "," + std::to_string(f.triangles[i][1]) +
-                     "," + std::to_string(f.triangles[i][2]);
-        faces += "]]";
-        alphas += (alphas.empty() ? "" : ",") + num(f.opacity);
+    StringOut out;
+    auto number = [&out](double x) {
+        if (!std::isfinite(x)) throw std::runtime_error("the model has a non-finite number (" + formatNumber(x) + ")");
+        out.number(x);
+    };
+    auto list = [&out](const auto& items, const auto& write) {
+        bool first = true;
+        for (const auto& item : items) {
+            out.write(first ? "\n[" : ",\n[");
+            first = false;
+            write(item);
+            out.write(']');
+        }
+    };
+    out.write("{\"title\":");
+    out.write(jsonString(m.title));
+    if (m.home) {
+        out.write(",\n\"home\":[");
+        number(m.home->x), out.write(','), number(m.home->y), out.write(','), number(m.home->z);
+        out.write(']');
     }
-    std::string home;
-    if (m.home) home = ",\n\"home\":[" + num(m.home->x) + "," + num(m.home->y) + "," + num(m.home->z) + "]";
-    const std::string counts = ",\n\"counts\":{\"nodes\":" + std::to_string(m.graphNodes) + ",\"edges\":" +
-                               std::to_string(m.graphEdges) + ",\"faces\":" + std::to_string(m.graphFaces) + "}";
-    return "{\"title\":" + jsonString(m.title) + home + counts + ",\n\"colors\":" + colors.json() + ",\n\"nodes\":[" + nodes +
-           "],\n\"edges\":[" + edges + "],\n\"faces\":[" + faces + "],\n\"faceAlphas\":[" + alphas + "]}";
+    out.write(",\n\"counts\":{\"nodes\":"), out.integer(static_cast<long long>(m.graphNodes));
+    out.write(",\"edges\":"), out.integer(static_cast<long long>(m.graphEdges));
+    out.write(",\"faces\":"), out.integer(static_cast<long long>(m.graphFaces)), out.write('}');
+    // The palette is written last in the text's order of fields, so it is collected first.
+    for (const auto& n : m.nodes) colors.index(n.color);
+    for (const auto& e : m.edges) colors.index(e.color);
+    for (const auto& f : m.faces) colors.index(f.color);
+    out.write(",\n\"colors\":"), out.write(colors.json());
+    out.write(",\n\"nodes\":[");
+    list(m.nodes, [&](const auto& n) {
+        number(n.pos[0]), out.write(','), number(n.pos[1]), out.write(','), number(n.pos[2]), out.write(',');
+        number(n.radius), out.write(','), out.integer(colors.index(n.color));
+    });
+    out.write("],\n\"edges\":[");
+    list(m.edges, [&](const auto& e) {
+        out.integer(static_cast<long long>(e.a)), out.write(','), out.integer(static_cast<long long>(e.b)), out.write(',');
+        out.integer(colors.index(e.color)), out.write(','), number(e.radius);
+    });
+    out.write("],\n\"faces\":[");
+    list(m.faces, [&](const auto& f) {
+        out.integer(static_cast<long long>(f.id)), out.write(','), out.integer(colors.index(f.color)), out.write(",[");
+        for (std::size_t i = 0; i < f.points.size(); ++i) {
+            if (i) out.write(',');
+            number(f.points[i][0]), out.write(','), number(f.points[i][1]), out.write(','), number(f.points[i][2]);
+        }
+        out.write("],[");
+        for (std::size_t i = 0; i < f.triangles.size(); ++i) {
+            if (i) out.write(',');
+            out.integer(static_cast<long long>(f.triangles[i][0])), out.write(',');
+            out.integer(static_cast<long long>(f.triangles[i][1])), out.write(',');
+            out.integer(static_cast<long long>(f.triangles[i][2]));
+        }
+        out.write(']');
+    });
+    out.write("],\n\"faceAlphas\":[");
+    for (std::size_t i = 0; i < m.faces.size(); ++i) {
+        if (i) out.write(',');
+        number(m.faces[i].opacity);
+    }
+    out.write("]}");
+    return std::move(out.text());
 }
 
 namespace {
