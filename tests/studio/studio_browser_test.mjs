@@ -9,42 +9,24 @@
 // loaded from the address the server gives it; a 3D grammar is drawn in the
 // viewer, whose camera and shader programs stay across redraws. Screenshots are kept in ARTIFACTS.
 // Usage: node studio_browser_test.mjs G2D SOURCE_DIR ARTIFACTS
-import { spawn } from "node:child_process";
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
-import { createRequire } from "node:module";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
-import { createInterface } from "node:readline";
+import { check, finish, launchChromium, pageErrors, startStudio, stop } from "./studio_page.mjs";
 
 const [g2d, src, artifacts] = process.argv.slice(2).map((p) => resolve(p));
-const require = createRequire(join(src, "web/view/package.json"));
-const puppeteer = require("puppeteer-core");
 const work = mkdtempSync(join(tmpdir(), "g2d-studio-page-"));
 mkdirSync(artifacts, { recursive: true });
 copyFileSync(join(src, "examples/sierpinski.g2d"), join(work, "sierpinski.g2d"));
-let failures = 0;
-const check = (ok, what) => {
-  if (!ok) failures++, console.log("FAIL:", what);
-};
 
-const studio = spawn(g2d, ["studio", "sierpinski.g2d", "--port", "0"], { cwd: work, stdio: ["ignore", "pipe", "inherit"] });
-const url = await new Promise((done) => createInterface({ input: studio.stdout }).once("line", done));
+const { studio, url } = await startStudio(g2d, "sierpinski.g2d", work);
 check(/^http:\/\/127\.0\.0\.1:\d+\/$/.test(url), `the URL: ${url}`);
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
-  headless: true,
-  args: ["--no-sandbox", "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1", "--hide-scrollbars", "--use-gl=angle",
-         "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
-  defaultViewport: { width: 1100, height: 700 },
-});
+const browser = await launchChromium(src, ["--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+                                     { width: 1100, height: 700 });
 try {
   const page = await browser.newPage();
-  const errors = [];
-  page.on("pageerror", (e) => errors.push(e.message));
-  // A broken grammar's run answers 422 and a cancelled one 409, which the console reports; nothing else may fail.
-  page.on("console", (m) => m.type() === "error" && !/status of (422|409)/.test(m.text()) && errors.push(m.text()));
-  page.on("requestfailed", (r) => errors.push("request failed: " + r.url()));
+  const errors = pageErrors(page);
   await page.goto(url, { waitUntil: "load" });
   const status = () => page.$eval("#status", (s) => s.textContent);
   const draws = () => page.evaluate(() => window.g2dStudio.draws);
@@ -226,13 +208,6 @@ try {
   await page.screenshot({ path: join(artifacts, "studio_g3_box.png") });
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);
 } finally {
-  await browser.close();
-  studio.kill("SIGINT");
+  await stop(browser, studio);
 }
-const code = await new Promise((done) => studio.once("exit", (c) => done(c)));
-check(code === 0, `the studio's exit code: ${code}`);
-if (failures) {
-  console.log(`${failures} failures`);
-  process.exit(1);
-}
-console.log("studio page: all checks passed");
+await finish(studio, "studio page");

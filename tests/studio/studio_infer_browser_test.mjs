@@ -8,44 +8,26 @@
 // draws it. No
 // script error, no CSP violation. Screenshots are kept in ARTIFACTS.
 // Usage: node studio_infer_browser_test.mjs G2D SOURCE_DIR ARTIFACTS
-import { execFileSync, spawn } from "node:child_process";
+import { execFileSync } from "node:child_process";
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync } from "node:fs";
-import { createRequire } from "node:module";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
-import { createInterface } from "node:readline";
+import { check, finish, launchChromium, pageErrors, startStudio, stop } from "./studio_page.mjs";
 
 const [g2d, src, artifacts] = process.argv.slice(2).map((p) => resolve(p));
-const require = createRequire(join(src, "web/view/package.json"));
-const puppeteer = require("puppeteer-core");
 const work = mkdtempSync(join(tmpdir(), "g2d-studio-infer-page-"));
 mkdirSync(artifacts, { recursive: true });
 copyFileSync(join(src, "examples/sierpinski.g2d"), join(work, "sierpinski.g2d"));
 const T_JSON = join(src, "examples/infer/merrell/2D Branches/T.json");
 const HOUSE = readFileSync(join(src, "examples/infer/house.svg"), "utf8");
 const stats = (file) => JSON.parse(execFileSync(g2d, ["infer", "--stats", file], { encoding: "utf8" }));
-let failures = 0;
-const check = (ok, what) => {
-  if (!ok) failures++, console.log("FAIL:", what);
-};
 
-const studio = spawn(g2d, ["studio", "sierpinski.g2d", "--port", "0"], { cwd: work, stdio: ["ignore", "pipe", "inherit"] });
-const url = await new Promise((done) => createInterface({ input: studio.stdout }).once("line", done));
+const { studio, url } = await startStudio(g2d, "sierpinski.g2d", work);
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
-  headless: true,
-  args: ["--no-sandbox", "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1", "--hide-scrollbars"],
-  defaultViewport: { width: 1200, height: 900 },
-});
+const browser = await launchChromium(src, [], { width: 1200, height: 900 });
 try {
   const page = await browser.newPage();
-  const errors = [];
-  page.on("pageerror", (e) => errors.push(e.message));
-  // A refused example answers 422, which the console reports; nothing else may fail.
-  // A refused example answers 422 and a run cancelled by a newer one 409, which the console reports.
-  page.on("console", (m) => m.type() === "error" && !/status of (422|409)/.test(m.text()) && errors.push(m.text()));
-  page.on("requestfailed", (r) => errors.push("request failed: " + r.url()));
+  const errors = pageErrors(page);
   let lastInfer = null;   // the last answer of /api/infer the page got
   page.on("response", async (r) => r.url().endsWith("/api/infer") && r.status() === 200 && (lastInfer = await r.json()));
   await page.goto(url, { waitUntil: "load" });
@@ -131,13 +113,6 @@ try {
   await page.screenshot({ path: join(artifacts, "studio_infer_opened.png") });
   check(errors.length === 0, `page errors: ${errors.join("; ")}`);
 } finally {
-  await browser.close();
-  studio.kill("SIGINT");
+  await stop(browser, studio);
 }
-const code = await new Promise((done) => studio.once("exit", (c) => done(c)));
-check(code === 0, `the studio's exit code: ${code}`);
-if (failures) {
-  console.log(`${failures} failures`);
-  process.exit(1);
-}
-console.log("studio infer mode: all checks passed");
+await finish(studio, "studio infer mode");

@@ -22,16 +22,11 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+from checks import check, finish  # noqa: E402
 from studio_client import post, start, stop  # noqa: E402
 
 G2D, SRC = (os.path.abspath(p) for p in sys.argv[1:3])
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
 
 
 def cli(*args, cwd):
@@ -174,7 +169,4 @@ finally:
     code = stop(proc)
 check(code == 0, f"the studio exits with 0 on SIGINT: {code}")
 
-if failures:
-    print(f"{len(failures)} failures")
-    sys.exit(1)
-print("ok: /api/infer")
+finish()

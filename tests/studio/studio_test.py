@@ -26,23 +26,16 @@ import tempfile
 import threading
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+import studio_client  # noqa: E402
+from checks import check, finish  # noqa: E402
+
 G2D, SRC = (os.path.abspath(p) for p in sys.argv[1:3])
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
 
 
 def start(args, cwd):
-    proc = subprocess.Popen([G2D, "studio", *args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    url = proc.stdout.readline().strip()
-    if not url.startswith("http://127.0.0.1:") or not url.endswith("/"):
-        proc.kill()
-        sys.exit(f"FAIL: the first line is not the URL: {url!r} {proc.stderr.read()}")
-    return proc, int(url.rsplit(":", 1)[1].rstrip("/"))
+    return studio_client.start(G2D, args, cwd)
 
 
 def request(port, method, path, body=None, headers=None, host=None):
@@ -474,8 +467,5 @@ busy.close()
 out = subprocess.run([G2D, "studio", ".", "--port", "0"], cwd=work, capture_output=True, text=True, timeout=10)
 check(out.returncode == 1 and "is not a file" in out.stderr and out.stdout == "", f"a folder: {out.returncode} {out.stderr}")
 
-if failures:
-    print(f"{len(failures)} failures")
-    sys.exit(1)
 shutil.rmtree(work)
-print("studio: all checks passed")
+finish()
