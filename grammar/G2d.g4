@@ -203,9 +203,9 @@ signedNumber: '-'? (INT | FLOAT) ;
 // ---- lexer -----------------------------------------------------------------
 SPACE_DIM   : [23] [d] ;
 ID          : [a-zA-Z_] [a-zA-Z_0-9]* ;
-// `1..10` is a range, not the float `1.` and the float `.10`: a `.` after
-// digits starts a fraction only when no second `.` follows.
-FLOAT       : DIGITS '.' {_input->LA(1) != '.'}? DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
+// `1..10` is a range, not the float `1.` and the float `.10`: the parser's
+// lexer (compiler/parse/range_lexer.cpp) reads `1.` before a `.` as the int 1.
+FLOAT       : DIGITS '.' DIGITS? EXPONENT? | '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
 INT         : DIGITS ;
 fragment DIGITS   : [0-9]+ ;
 fragment EXPONENT : [eE] [+-]? DIGITS ;

@@ -2,10 +2,10 @@
 
 #include <antlr4-runtime.h>
 
-#include "G2dLexer.h"
 #include "G2dParser.h"
 #include "parse/ast_builder.hpp"
 #include "parse/input_guard.hpp"
+#include "parse/range_lexer.hpp"
 #include "parse/syntax_errors.hpp"
 
 namespace g2d {
@@ -16,7 +16,7 @@ std::optional<ast::Program> parseFile(const SourceManager& sm, FileId file, Diag
     if (!checkEncoding(src, file, diags)) return std::nullopt;
 
     antlr4::ANTLRInputStream input(src.text);
-    G2dLexer lexer(&input);
+    RangeLexer lexer(&input);
     lexer.removeErrorListeners();  // every lexical problem becomes a token the parser reports
     antlr4::CommonTokenStream tokens(&lexer);
     tokens.fill();
