@@ -49,9 +49,18 @@ try {
           && got.exampleDots === s.vertices && got.generated > 0, `${what}: ${JSON.stringify(got)} vs ${JSON.stringify(s)}`);
   };
 
+  // A wait for the status to start with `prefix`, which says the status when it times out.
+  const waitStatus = (prefix) =>
+    page.waitForFunction((p) => document.getElementById("infer-status").textContent.startsWith(p), { timeout: 30000 }, prefix)
+      .catch(async (e) => {
+        throw new Error(`waiting for the status "${prefix}…": ${e.message} (the status: ${await status()})`);
+      });
+  // Outputs of 60 vertices: the sanitizer build's runs stay inside the studio's 5 s budget.
+  await page.type("#infer-size", "60");
+
   // The file picker: the author's JSON.
   await (await page.$("#infer-file")).uploadFile(T_JSON);
-  await page.waitForFunction(() => document.getElementById("infer-status").textContent.startsWith("T: "), { timeout: 30000 });
+  await waitStatus("T: ");
   await expect("T.json picked", stats(T_JSON));
   check(/^T: 2 edge labels, 4 primitives, 5 rules and 1 starter rule in \d+ ms; seed 1$/.test(await status()), `status: ${await status()}`);
 
@@ -62,19 +71,19 @@ try {
     zone.dispatchEvent(new DragEvent("drop", { dataTransfer: data, bubbles: true, cancelable: true }));
   }, name, text);
   await drop("house.svg", HOUSE);
-  await page.waitForFunction(() => document.getElementById("infer-status").textContent.startsWith("House: "), { timeout: 30000 });
+  await waitStatus("House: ");
   await expect("house.svg dropped", stats(join(src, "examples/infer/house.svg")));
   await page.screenshot({ path: join(artifacts, "studio_infer_house.png"), fullPage: true });
 
   // Generate: another seed, another picture.
   const before = await page.$eval("#infer-generated", (g) => g.innerHTML);
   await page.click("#infer-generate");
-  await page.waitForFunction(() => document.getElementById("infer-status").textContent.startsWith("Generated with seed 2"), { timeout: 30000 });
+  await waitStatus("Generated with seed 2");
   check((await page.$eval("#infer-generated", (g) => g.innerHTML)) !== before, "Generate draws another output");
 
   // A broken example: the reader's message with its line; the results stay.
   await drop("bad.svg", '<svg xmlns="http://www.w3.org/2000/svg">\n<g stroke="black">\n<circle r="3"/>\n</g>\n</svg>\n');
-  await page.waitForFunction(() => document.getElementById("infer-status").textContent.startsWith("The example was refused"), { timeout: 30000 });
+  await waitStatus("The example was refused");
   check((await status()) === "The example was refused: bad.svg:3: <circle> is not supported: edges must be straight (draw a polygon)",
         `the refusal: ${await status()}`);
   check((await shown()).rules > 0, "the last results stay");
@@ -86,7 +95,7 @@ try {
   for (const [x, y] of [[80, 80], [160, 80], [160, 160], [80, 160], [80, 80]]) await at(x, y);
   for (const [x, y] of [[160, 160], [240, 240], [240, 240]]) await at(x, y);
   await page.click("#infer-use-drawing");
-  await page.waitForFunction(() => document.getElementById("infer-status").textContent.startsWith("Drawing: "), { timeout: 30000 });
+  await waitStatus("Drawing: ");
   const drawn = await shown();
   check(drawn.exampleDots === 5 && drawn.primitives === 5 && drawn.rules > 0 && drawn.generated > 0, `the drawing: ${JSON.stringify(drawn)}`);
   await page.screenshot({ path: join(artifacts, "studio_infer_drawing.png"), fullPage: true });
